@@ -1,0 +1,591 @@
+#include "vtkFXScenes.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkCompositePolyDataMapper2.h"
+#include "vtkConeSource.h"
+#include "vtkCubeSource.h"
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkElevationFilter.h"
+#include "vtkFloatArray.h"
+#include "vtkGenericDataObjectReader.h"
+#include "vtkGlyph3DMapper.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkLightKit.h"
+#include "vtkLookupTable.h"
+#include "vtkMath.h"
+#include "vtkMolecule.h"
+#include "vtkMoleculeMapper.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkPDBReader.h"
+#include "vtkPLYReader.h"
+#include "vtkPNGReader.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPointGaussianMapper.h"
+#include "vtkCellArray.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSTLReader.h"
+#include "vtkScalarBarActor.h"
+#include "vtkSphereSource.h"
+#include "vtkTextActor.h"
+#include "vtkTextProperty.h"
+#include "vtkTexture.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkXMLPolyDataReader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+
+#ifndef VTKFX_SOURCE_DATA_DIR
+#define VTKFX_SOURCE_DATA_DIR "Data"
+#endif
+
+namespace
+{
+std::string Lower(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+std::string Extension(const std::string& path)
+{
+  const size_t dot = path.find_last_of('.');
+  return dot == std::string::npos ? std::string() : Lower(path.substr(dot + 1));
+}
+
+bool FileReadable(const std::string& path)
+{
+  std::ifstream f(path.c_str());
+  return f.good();
+}
+
+vtkSmartPointer<vtkActor> MakeActor(vtkPolyData* data, double r, double g, double b)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(data);
+  mapper->ScalarVisibilityOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(r, g, b);
+  return actor;
+}
+
+vtkSmartPointer<vtkPolyData> WithNormals(vtkPolyData* in)
+{
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(in);
+  normals->SplittingOff();
+  normals->ConsistencyOn();
+  normals->AutoOrientNormalsOff();
+  normals->Update();
+  return normals->GetOutput();
+}
+
+vtkSmartPointer<vtkPolyData> Sphere(double cx, double cy, double cz, double radius, int res = 48)
+{
+  vtkNew<vtkSphereSource> s;
+  s->SetCenter(cx, cy, cz);
+  s->SetRadius(radius);
+  s->SetThetaResolution(res);
+  s->SetPhiResolution(res / 2 + 1);
+  s->Update();
+  return s->GetOutput();
+}
+
+vtkSmartPointer<vtkPolyData> ReadPolyData(const std::string& path, std::string& error)
+{
+  const std::string ext = Extension(path);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (ext == "obj")
+  {
+    auto r = vtkSmartPointer<vtkOBJReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == "ply")
+  {
+    auto r = vtkSmartPointer<vtkPLYReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == "stl")
+  {
+    auto r = vtkSmartPointer<vtkSTLReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == "vtp")
+  {
+    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == "vtk")
+  {
+    auto r = vtkSmartPointer<vtkGenericDataObjectReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else
+  {
+    error = "unsupported file type '." + ext + "' (use .obj, .ply, .stl, .vtp, .vtk or .pdb)";
+    return nullptr;
+  }
+  reader->Update();
+  vtkDataObject* out = reader->GetOutputDataObject(0);
+  vtkSmartPointer<vtkPolyData> poly = vtkPolyData::SafeDownCast(out);
+  if (!poly && vtkDataSet::SafeDownCast(out))
+  {
+    vtkNew<vtkDataSetSurfaceFilter> surface;
+    surface->SetInputData(out);
+    surface->Update();
+    poly = surface->GetOutput();
+  }
+  if (!poly)
+  {
+    error = "could not read '" + path + "' as a dataset";
+    return nullptr;
+  }
+  if (poly->GetNumberOfCells() == 0 || poly->GetNumberOfPoints() == 0)
+  {
+    error = "'" + path + "' holds no geometry (empty dataset or unreadable file)";
+    return nullptr;
+  }
+  return poly;
+}
+
+// A ground plane just under the bounds, in the plane perpendicular to +y.
+void AddGround(vtkRenderer* renderer, const double b[6])
+{
+  const double dx = b[1] - b[0], dy = b[3] - b[2], dz = b[5] - b[4];
+  const double size = 0.9 * std::max(std::max(dx, dz), 0.5 * dy) + 1e-30;
+  const double cx = 0.5 * (b[0] + b[1]), cz = 0.5 * (b[4] + b[5]);
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(cx - size, b[2], cz - size);
+  plane->SetPoint1(cx + size, b[2], cz - size);
+  plane->SetPoint2(cx - size, b[2], cz + size);
+  plane->SetResolution(1, 1);
+  plane->Update();
+  auto actor = MakeActor(plane->GetOutput(), 0.8, 0.8, 0.78);
+  renderer->AddActor(actor);
+}
+
+// Frames `bounds` (the data, not the ground) from above and to the side.
+void FrameCamera(vtkRenderer* renderer, const double bounds[6])
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0, 0, 1);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  renderer->ResetCamera(bounds);
+  camera->Azimuth(30);
+  camera->Elevation(25);
+  camera->OrthogonalizeViewUp();
+  renderer->ResetCamera(bounds);
+  camera->Zoom(1.2);
+  renderer->ResetCameraClippingRange();
+}
+
+void SceneSpheres(vtkRenderer* renderer)
+{
+  const double colors[5][3] = { { 0.9, 0.3, 0.2 }, { 0.2, 0.6, 0.9 }, { 0.3, 0.8, 0.3 },
+    { 0.95, 0.8, 0.2 }, { 0.7, 0.4, 0.8 } };
+  for (int i = 0; i < 5; ++i)
+  {
+    const double angle = 2.0 * vtkMath::Pi() * i / 5.0;
+    const double r = 0.35 + 0.1 * i;
+    auto actor = MakeActor(Sphere(1.3 * std::cos(angle), r, 1.3 * std::sin(angle), r),
+      colors[i][0], colors[i][1], colors[i][2]);
+    if (i % 2 == 0)
+    {
+      actor->GetProperty()->SetSpecular(0.4);
+      actor->GetProperty()->SetSpecularPower(30.0);
+    }
+    renderer->AddActor(actor);
+  }
+}
+
+void SceneCorner(vtkRenderer* renderer)
+{
+  // A wall meeting the ground at a right angle, a box in the corner.
+  vtkNew<vtkPlaneSource> wall;
+  wall->SetOrigin(-2, 0, -1);
+  wall->SetPoint1(2, 0, -1);
+  wall->SetPoint2(-2, 2.5, -1);
+  wall->Update();
+  renderer->AddActor(MakeActor(wall->GetOutput(), 0.85, 0.85, 0.85));
+  vtkNew<vtkCubeSource> box;
+  box->SetBounds(-0.5, 0.3, 0.0, 0.8, -1.0, -0.2);
+  box->Update();
+  renderer->AddActor(MakeActor(box->GetOutput(), 0.9, 0.6, 0.3));
+  renderer->AddActor(MakeActor(Sphere(1.0, 0.5, 0.0, 0.5), 0.3, 0.5, 0.9));
+}
+
+void SceneScalars(vtkRenderer* renderer)
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(96);
+  source->SetPhiResolution(64);
+  source->Update();
+  vtkNew<vtkElevationFilter> elevation;
+  elevation->SetInputData(source->GetOutput());
+  elevation->SetLowPoint(0, -0.5, 0);
+  elevation->SetHighPoint(0, 0.5, 0);
+  elevation->Update();
+  vtkNew<vtkLookupTable> lut;
+  lut->SetHueRange(0.667, 0.0);
+  lut->Build();
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(vtkPolyData::SafeDownCast(elevation->GetOutput()));
+  mapper->SetLookupTable(lut);
+  mapper->SetScalarRange(0, 1);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  renderer->AddActor(actor);
+
+  // The same data with scalars interpolated before mapping (colour texture).
+  vtkNew<vtkPolyDataMapper> textured;
+  textured->SetInputData(vtkPolyData::SafeDownCast(elevation->GetOutput()));
+  textured->SetLookupTable(lut);
+  textured->SetScalarRange(0, 1);
+  textured->InterpolateScalarsBeforeMappingOn();
+  vtkNew<vtkActor> actor2;
+  actor2->SetMapper(textured);
+  actor2->SetPosition(1.2, 0, 0);
+  renderer->AddActor(actor2);
+}
+
+bool SceneTextured(vtkRenderer* renderer, std::string& error)
+{
+  const std::string dir = vtkFXScenes::DataDirectory();
+  auto poly = ReadPolyData(dir + "/spot.obj", error);
+  vtkNew<vtkPNGReader> png;
+  png->SetFileName((dir + "/spot_texture.png").c_str());
+  if (!poly || !FileReadable(dir + "/spot_texture.png"))
+  {
+    error = "scene:textured needs spot.obj and spot_texture.png in " + dir;
+    return false;
+  }
+  vtkNew<vtkTexture> texture;
+  texture->SetInputConnection(png->GetOutputPort());
+  texture->InterpolateOn();
+  auto actor = MakeActor(poly, 1, 1, 1);
+  actor->SetTexture(texture);
+  renderer->AddActor(actor);
+  return true;
+}
+
+// n points spread evenly on a sphere around (0, height, 0) (Fibonacci
+// spiral), deterministic so that baselines do not depend on a random seed.
+vtkSmartPointer<vtkPolyData> SpherePoints(int n, double radius, double height)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> verts;
+  const double golden = vtkMath::Pi() * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < n; ++i)
+  {
+    const double y = 1.0 - 2.0 * (i + 0.5) / n;
+    const double r = std::sqrt(1.0 - y * y);
+    const double phi = golden * i;
+    const vtkIdType id = points->InsertNextPoint(
+      radius * r * std::cos(phi), height + radius * y, radius * r * std::sin(phi));
+    verts->InsertNextCell(1, &id);
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetVerts(verts);
+  return poly;
+}
+
+void SceneGlyphs(vtkRenderer* renderer)
+{
+  auto points = SpherePoints(60, 1.0, 1.0);
+  vtkNew<vtkConeSource> cone;
+  cone->SetResolution(16);
+  vtkNew<vtkGlyph3DMapper> mapper;
+  mapper->SetInputData(points);
+  mapper->SetSourceConnection(cone->GetOutputPort());
+  mapper->SetScaleFactor(0.25);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.9, 0.5, 0.2);
+  renderer->AddActor(actor);
+}
+
+void SceneComposite(vtkRenderer* renderer)
+{
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  for (int i = 0; i < 4; ++i)
+  {
+    blocks->SetBlock(i, Sphere(i * 0.9, 0.4, 0, 0.4, 32));
+  }
+  vtkNew<vtkCompositePolyDataMapper2> mapper;
+  mapper->SetInputDataObject(blocks);
+  mapper->SetBlockColor(1, 0.9, 0.2, 0.2);
+  mapper->SetBlockColor(3, 0.2, 0.3, 0.9);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.8, 0.8, 0.3);
+  renderer->AddActor(actor);
+  // A per-actor transform.
+  auto moved = MakeActor(Sphere(0, 0.3, 0, 0.3), 0.4, 0.8, 0.5);
+  moved->SetPosition(1.3, 0.0, 1.0);
+  moved->SetScale(1.0, 2.0, 1.0);
+  moved->RotateZ(20);
+  renderer->AddActor(moved);
+}
+
+void SceneSplats(vtkRenderer* renderer)
+{
+  auto points = SpherePoints(400, 1.0, 1.0);
+  vtkNew<vtkPointGaussianMapper> mapper;
+  mapper->SetInputData(points);
+  mapper->EmissiveOff();
+  mapper->SetScaleFactor(0.06);
+  // Opaque round splats: discard outside the unit disc.
+  mapper->SetSplatShaderCode("//VTK::Color::Impl\n"
+                             "  float dist = dot(offsetVCVSOutput.xy, offsetVCVSOutput.xy);\n"
+                             "  if (dist > 1.0) { discard; }\n");
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.2, 0.7, 0.9);
+  renderer->AddActor(actor);
+}
+
+void SceneLights(vtkRenderer* renderer)
+{
+  SceneSpheres(renderer);
+  // Scene lights: a positional spot with cone and attenuation, a directional
+  // light, and a camera light.
+  vtkNew<vtkLight> spot;
+  spot->SetLightTypeToSceneLight();
+  spot->SetPositional(true);
+  spot->SetPosition(0, 4, 2);
+  spot->SetFocalPoint(0, 0, 0);
+  spot->SetConeAngle(35);
+  spot->SetExponent(2);
+  spot->SetAttenuationValues(1, 0.1, 0.02);
+  spot->SetColor(1.0, 0.9, 0.8);
+  spot->SetIntensity(0.9);
+  renderer->AddLight(spot);
+  vtkNew<vtkLight> sun;
+  sun->SetLightTypeToSceneLight();
+  sun->SetPosition(-3, 2, 1);
+  sun->SetFocalPoint(0, 0, 0);
+  sun->SetColor(0.6, 0.7, 1.0);
+  sun->SetIntensity(0.4);
+  renderer->AddLight(sun);
+  vtkNew<vtkLight> cameraLight;
+  cameraLight->SetLightTypeToCameraLight();
+  cameraLight->SetPosition(1, 1, 1);
+  cameraLight->SetFocalPoint(0, 0, 0);
+  cameraLight->SetIntensity(0.3);
+  renderer->AddLight(cameraLight);
+}
+
+void SceneMixed(vtkRenderer* renderer)
+{
+  // Opaque, translucent and 2D overlay props together, two-sided lighting
+  // seen on an open surface, an unlit prop and ambient/specular terms.
+  SceneScalars(renderer);
+  auto glass = MakeActor(Sphere(0.6, 0.2, 0.9, 0.45), 0.3, 0.9, 0.6);
+  glass->GetProperty()->SetOpacity(0.4);
+  renderer->AddActor(glass);
+  vtkNew<vtkSphereSource> half;
+  half->SetCenter(-1.2, 0.5, 0);
+  half->SetRadius(0.5);
+  half->SetThetaResolution(48);
+  half->SetEndPhi(110); // open: the inside shows back faces
+  half->Update();
+  auto bowl = MakeActor(half->GetOutput(), 0.9, 0.7, 0.4);
+  bowl->GetProperty()->SetAmbient(0.2);
+  bowl->GetProperty()->SetSpecular(0.5);
+  bowl->GetProperty()->SetSpecularPower(60);
+  renderer->AddActor(bowl);
+  auto unlit = MakeActor(Sphere(0.0, 0.2, 1.2, 0.2), 1.0, 0.9, 0.2);
+  unlit->GetProperty()->LightingOff();
+  renderer->AddActor(unlit);
+  vtkNew<vtkTextActor> text;
+  text->SetInput("vtkFX");
+  text->GetTextProperty()->SetFontSize(24);
+  text->GetTextProperty()->SetColor(1, 1, 1);
+  text->SetPosition(10, 10);
+  renderer->AddViewProp(text);
+  vtkNew<vtkScalarBarActor> bar;
+  vtkNew<vtkLookupTable> lut;
+  lut->SetHueRange(0.667, 0.0);
+  lut->Build();
+  bar->SetLookupTable(lut);
+  bar->SetWidth(0.08);
+  bar->SetHeight(0.5);
+  bar->SetPosition(0.9, 0.3);
+  renderer->AddViewProp(bar);
+}
+
+bool PopulateMolecule(vtkRenderer* renderer, const std::string& path, std::string& error)
+{
+  vtkNew<vtkPDBReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkMolecule* molecule = vtkMolecule::SafeDownCast(reader->GetOutputDataObject(1));
+  if (!molecule || molecule->GetNumberOfAtoms() == 0)
+  {
+    error = "'" + path + "' holds no atoms";
+    return false;
+  }
+  vtkNew<vtkMoleculeMapper> mapper;
+  mapper->SetInputData(molecule);
+  mapper->UseBallAndStickSettings();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  renderer->AddActor(actor);
+  return true;
+}
+
+bool PopulateBuiltIn(vtkRenderer* renderer, const std::string& name, std::string& error)
+{
+  if (name == "scene:spheres")
+    SceneSpheres(renderer);
+  else if (name == "scene:corner")
+    SceneCorner(renderer);
+  else if (name == "scene:scalars")
+    SceneScalars(renderer);
+  else if (name == "scene:textured")
+    return SceneTextured(renderer, error);
+  else if (name == "scene:glyphs")
+    SceneGlyphs(renderer);
+  else if (name == "scene:composite")
+    SceneComposite(renderer);
+  else if (name == "scene:splats")
+    SceneSplats(renderer);
+  else if (name == "scene:lights")
+    SceneLights(renderer);
+  else if (name == "scene:mixed")
+    SceneMixed(renderer);
+  else if (name == "scene:molecule")
+    return PopulateMolecule(renderer, vtkFXScenes::DataDirectory() + "/1crn.pdb", error);
+  else
+  {
+    error = "unknown scene '" + name + "'; built-in scenes:";
+    for (const auto& n : vtkFXScenes::BuiltInSceneNames())
+    {
+      error += " " + n;
+    }
+    return false;
+  }
+  return true;
+}
+}
+
+std::string vtkFXScenes::DataDirectory()
+{
+  const char* env = std::getenv("VTKFX_DATA");
+  return (env && *env) ? std::string(env) : std::string(VTKFX_SOURCE_DATA_DIR);
+}
+
+std::vector<std::string> vtkFXScenes::BuiltInSceneNames()
+{
+  return { "scene:spheres", "scene:corner", "scene:scalars", "scene:textured", "scene:glyphs",
+    "scene:composite", "scene:splats", "scene:lights", "scene:mixed", "scene:molecule" };
+}
+
+bool vtkFXScenes::Populate(
+  vtkRenderer* renderer, const std::string& input, const Options& options, std::string& error)
+{
+  bool ok = false;
+  const bool lightKitScene = input != "scene:lights";
+  if (input.rfind("scene:", 0) == 0)
+  {
+    ok = PopulateBuiltIn(renderer, input, error);
+  }
+  else if (!FileReadable(input))
+  {
+    error = "cannot open '" + input + "'";
+  }
+  else if (Extension(input) == "pdb")
+  {
+    ok = PopulateMolecule(renderer, input, error);
+  }
+  else
+  {
+    auto poly = ReadPolyData(input, error);
+    if (poly)
+    {
+      const bool hasNormals = poly->GetPointData()->GetNormals() != nullptr;
+      renderer->AddActor(MakeActor(hasNormals ? poly.GetPointer() : WithNormals(poly).GetPointer(),
+        0.85, 0.82, 0.75));
+      ok = true;
+    }
+  }
+  if (!ok)
+  {
+    renderer->RemoveAllViewProps();
+    return false;
+  }
+  double bounds[6];
+  renderer->ComputeVisiblePropBounds(bounds);
+  if (!vtkMath::AreBoundsInitialized(bounds))
+  {
+    error = "'" + input + "' has nothing visible";
+    renderer->RemoveAllViewProps();
+    return false;
+  }
+  if (options.Ground)
+  {
+    AddGround(renderer, bounds);
+  }
+  if (options.LightKit && lightKitScene)
+  {
+    renderer->RemoveAllLights();
+    vtkNew<vtkLightKit> kit;
+    kit->AddLightsToRenderer(renderer);
+  }
+  renderer->SetBackground(0.32, 0.34, 0.43);
+  FrameCamera(renderer, bounds);
+  return true;
+}
+
+std::vector<unsigned char> vtkFXScenes::Capture(vtkRenderWindow* window)
+{
+  const int* size = window->GetSize();
+  std::vector<unsigned char> pixels(static_cast<size_t>(size[0]) * size[1] * 3);
+  unsigned char* data = window->GetPixelData(0, 0, size[0] - 1, size[1] - 1, 0);
+  std::copy(data, data + pixels.size(), pixels.begin());
+  delete[] data;
+  return pixels;
+}
+
+double vtkFXScenes::PSNR(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
+{
+  if (a.size() != b.size() || a.empty())
+  {
+    return -1.0;
+  }
+  double sum = 0.0;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    const double d = static_cast<double>(a[i]) - static_cast<double>(b[i]);
+    sum += d * d;
+  }
+  const double mse = sum / static_cast<double>(a.size());
+  if (mse == 0.0)
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  return 10.0 * std::log10(255.0 * 255.0 / mse);
+}

@@ -1,0 +1,54 @@
+// vtkFXScenes: scenes shared by vtkfx-render, the benchmarks and the tests.
+//
+// A scene is a set of props put into a renderer with a good default camera,
+// VTK's default light kit and (optionally) a ground plane under the data.
+#ifndef vtkFXScenes_h
+#define vtkFXScenes_h
+
+#include <string>
+#include <vector>
+
+class vtkRenderer;
+class vtkRenderWindow;
+
+namespace vtkFXScenes
+{
+/**
+ * Directory of the project's Data/ folder (VTKFX_DATA environment variable,
+ * else the source tree's Data/ compiled in).
+ */
+std::string DataDirectory();
+
+/**
+ * Names of the built-in scenes ("scene:spheres", ...).
+ */
+std::vector<std::string> BuiltInSceneNames();
+
+struct Options
+{
+  bool Ground = true;   // a ground plane under the data
+  bool LightKit = true; // VTK's default vtkLightKit instead of the headlight
+};
+
+/**
+ * Fill `renderer` with INPUT: a built-in scene name or a file VTK can read
+ * (.obj, .ply, .stl, .vtp, .vtk, .pdb). Frames the camera. On failure returns
+ * false and puts a message in `error`; the renderer is then left empty.
+ */
+bool Populate(vtkRenderer* renderer, const std::string& input, const Options& options,
+  std::string& error);
+
+/**
+ * Peak signal-to-noise ratio in dB between two RGB(A) 8-bit images of the
+ * same size read from the window's front buffer, over the RGB channels.
+ * Returns +inf for identical images, -1 if the sizes differ.
+ */
+double PSNR(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b);
+
+/**
+ * The window's current image as RGB bytes (bottom row first).
+ */
+std::vector<unsigned char> Capture(vtkRenderWindow* window);
+}
+
+#endif

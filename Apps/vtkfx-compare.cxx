@@ -1,0 +1,87 @@
+// vtkfx-compare: PSNR (dB) and largest channel difference between two
+// images of the same size, e.g. a vtkFX render and a plain VTK render.
+//
+//   vtkfx-compare A.png B.png [--min-psnr DB]
+// Exits 1 when the images differ in size or the PSNR is below --min-psnr.
+#include "vtkFXScenes.h"
+
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPNGReader.h"
+#include "vtkPointData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+namespace
+{
+bool LoadRGB(const std::string& path, std::vector<unsigned char>& rgb, int size[2])
+{
+  vtkNew<vtkPNGReader> reader;
+  if (!reader->CanReadFile(path.c_str()))
+  {
+    return false;
+  }
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  vtkUnsignedCharArray* scalars =
+    vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
+  if (!scalars)
+  {
+    return false;
+  }
+  const int comps = scalars->GetNumberOfComponents();
+  size[0] = image->GetDimensions()[0];
+  size[1] = image->GetDimensions()[1];
+  rgb.clear();
+  for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      rgb.push_back(scalars->GetValue(i * comps + std::min(c, comps - 1)));
+    }
+  }
+  return true;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  if (argc != 3 && !(argc == 5 && std::string(argv[3]) == "--min-psnr"))
+  {
+    std::cerr << "usage: vtkfx-compare A.png B.png [--min-psnr DB]\n";
+    return 2;
+  }
+  std::vector<unsigned char> a, b;
+  int sa[2], sb[2];
+  for (int i = 1; i <= 2; ++i)
+  {
+    if (!LoadRGB(argv[i], i == 1 ? a : b, i == 1 ? sa : sb))
+    {
+      std::cerr << "vtkfx-compare: cannot read '" << argv[i] << "' as a PNG image\n";
+      return 2;
+    }
+  }
+  if (sa[0] != sb[0] || sa[1] != sb[1])
+  {
+    std::cerr << "vtkfx-compare: sizes differ (" << sa[0] << "x" << sa[1] << " vs " << sb[0] << "x"
+              << sb[1] << ")\n";
+    return 1;
+  }
+  int maxDiff = 0;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    maxDiff = std::max(maxDiff, std::abs(static_cast<int>(a[i]) - static_cast<int>(b[i])));
+  }
+  const double psnr = vtkFXScenes::PSNR(a, b);
+  std::cout << "PSNR " << psnr << " dB, largest difference " << maxDiff << "/255\n";
+  if (argc == 5 && psnr < std::atof(argv[4]))
+  {
+    std::cerr << "vtkfx-compare: PSNR below " << argv[4] << " dB\n";
+    return 1;
+  }
+  return 0;
+}

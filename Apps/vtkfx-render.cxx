@@ -1,0 +1,347 @@
+// vtkfx-render: render a dataset or a built-in scene through vtkFX (or plain
+// VTK) offscreen, write a PNG and optional per-pass statistics.
+//
+//   vtkfx-render INPUT [--size WxH] [--effects none|LIST] [--plain-vtk]
+//                [--frames N] [--out FILE.png] [--stats FILE.json]
+//                [--debug-channel NAME] [--no-ground]
+#include "vtkFXScenes.h"
+
+#include "vtkFXGBufferPass.h"
+#include "vtkFXPipelinePass.h"
+
+#include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkTimerLog.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct Arguments
+{
+  std::string Input;
+  int Width = 1280;
+  int Height = 720;
+  std::vector<std::string> Effects;
+  bool PlainVTK = false;
+  int Frames = 1;
+  std::string Out = "vtkfx.png";
+  std::string Stats;
+  std::string DebugChannel;
+  bool Ground = true;
+};
+
+// Effects the pipeline knows. The effects of later issues register here.
+const std::vector<std::string> KnownEffects = {};
+
+void Usage(std::ostream& os)
+{
+  os << "usage: vtkfx-render INPUT [--size WxH] [--effects none|LIST] [--plain-vtk]\n"
+        "                    [--frames N] [--out FILE.png] [--stats FILE.json]\n"
+        "                    [--debug-channel normal|depth|albedo|specular|ambient|emission]\n"
+        "                    [--no-ground]\n"
+        "INPUT: a .obj, .ply, .stl, .vtp, .vtk or .pdb file, or one of:";
+  for (const auto& name : vtkFXScenes::BuiltInSceneNames())
+  {
+    os << " " << name;
+  }
+  os << "\n";
+}
+
+bool ParseSize(const std::string& text, int& w, int& h)
+{
+  char x = 0;
+  std::istringstream in(text);
+  long lw = 0, lh = 0;
+  if (!(in >> lw >> x >> lh) || (x != 'x' && x != 'X') || !in.eof())
+  {
+    return false;
+  }
+  if (lw < 1 || lh < 1 || lw > 16384 || lh > 16384)
+  {
+    return false;
+  }
+  w = static_cast<int>(lw);
+  h = static_cast<int>(lh);
+  return true;
+}
+
+bool ParseInt(const std::string& text, int lo, int hi, int& value)
+{
+  char* end = nullptr;
+  const long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || v < lo || v > hi)
+  {
+    return false;
+  }
+  value = static_cast<int>(v);
+  return true;
+}
+
+bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto value = [&](std::string& out) {
+      if (i + 1 >= argc)
+      {
+        error = a + " needs a value";
+        return false;
+      }
+      out = argv[++i];
+      return true;
+    };
+    std::string v;
+    if (a == "--help" || a == "-h")
+    {
+      Usage(std::cout);
+      std::exit(0);
+    }
+    else if (a == "--size")
+    {
+      if (!value(v) || !ParseSize(v, args.Width, args.Height))
+      {
+        error = "bad --size '" + v + "' (expected WxH, each 1..16384)";
+        return false;
+      }
+    }
+    else if (a == "--effects")
+    {
+      if (!value(v))
+        return false;
+      args.Effects.clear();
+      std::istringstream list(v);
+      std::string name;
+      while (std::getline(list, name, ','))
+      {
+        if (name.empty() || name == "none")
+          continue;
+        if (std::find(KnownEffects.begin(), KnownEffects.end(), name) == KnownEffects.end())
+        {
+          error = "unknown effect '" + name + "' (known: none";
+          for (const auto& e : KnownEffects)
+            error += ", " + e;
+          error += ")";
+          return false;
+        }
+        args.Effects.push_back(name);
+      }
+    }
+    else if (a == "--plain-vtk")
+      args.PlainVTK = true;
+    else if (a == "--no-ground")
+      args.Ground = false;
+    else if (a == "--frames")
+    {
+      if (!value(v) || !ParseInt(v, 1, 100000, args.Frames))
+      {
+        error = "bad --frames '" + v + "' (expected 1..100000)";
+        return false;
+      }
+    }
+    else if (a == "--out")
+    {
+      if (!value(args.Out))
+        return false;
+    }
+    else if (a == "--stats")
+    {
+      if (!value(args.Stats))
+        return false;
+    }
+    else if (a == "--debug-channel")
+    {
+      if (!value(args.DebugChannel))
+        return false;
+      if (vtkFXGBufferPass::GetChannelFromName(args.DebugChannel.c_str()) < 0)
+      {
+        error = "unknown G-buffer channel '" + args.DebugChannel + "'";
+        return false;
+      }
+    }
+    else if (!a.empty() && a[0] == '-')
+    {
+      error = "unknown option '" + a + "'";
+      return false;
+    }
+    else if (args.Input.empty())
+      args.Input = a;
+    else
+    {
+      error = "more than one INPUT given ('" + args.Input + "', '" + a + "')";
+      return false;
+    }
+  }
+  if (args.Input.empty())
+  {
+    error = "no INPUT given";
+    return false;
+  }
+  return true;
+}
+
+double Median(std::vector<double> v)
+{
+  if (v.empty())
+    return -1.0;
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::string JsonString(const std::string& s)
+{
+  std::string out = "\"";
+  for (char c : s)
+  {
+    if (c == '"' || c == '\\')
+      out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Arguments args;
+  std::string error;
+  if (!Parse(argc, argv, args, error))
+  {
+    std::cerr << "vtkfx-render: " << error << "\n";
+    Usage(std::cerr);
+    return 2;
+  }
+
+  vtkNew<vtkRenderer> renderer;
+  vtkFXScenes::Options options;
+  options.Ground = args.Ground;
+  if (!vtkFXScenes::Populate(renderer, args.Input, options, error))
+  {
+    std::cerr << "vtkfx-render: " << error << "\n";
+    return 1;
+  }
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  // The G-buffer has one sample per pixel: compare like with like.
+  window->SetMultiSamples(0);
+  window->SetSize(args.Width, args.Height);
+  window->AddRenderer(renderer);
+
+  vtkNew<vtkFXPipelinePass> pipeline;
+  if (!args.PlainVTK)
+  {
+    renderer->SetPass(pipeline);
+    if (!args.DebugChannel.empty())
+    {
+      pipeline->SetDebugChannel(vtkFXGBufferPass::GetChannelFromName(args.DebugChannel.c_str()));
+    }
+  }
+
+  // Frame times: wall clock with a finish per frame; pass times: GPU timers,
+  // whose results arrive a frame or more late (harvested each frame).
+  std::vector<double> frameMs;
+  std::map<std::string, std::vector<double>> passMs;
+  std::vector<std::string> passesThatRan;
+  vtkNew<vtkTimerLog> timer;
+  const int warmup = args.Frames > 1 ? 1 : 0;
+  for (int f = 0; f < args.Frames + warmup; ++f)
+  {
+    timer->StartTimer();
+    window->Render();
+    window->WaitForCompletion();
+    timer->StopTimer();
+    if (f >= warmup)
+    {
+      frameMs.push_back(1000.0 * timer->GetElapsedTime());
+    }
+    if (!args.PlainVTK)
+    {
+      passesThatRan.clear();
+      for (int i = 0; i < pipeline->GetNumberOfPassesThatRan(); ++i)
+      {
+        const std::string name = pipeline->GetPassThatRan(i);
+        passesThatRan.push_back(name);
+        const double ms = pipeline->GetPassMilliseconds(name.c_str());
+        if (ms >= 0.0 && f >= warmup)
+        {
+          passMs[name].push_back(ms);
+        }
+      }
+    }
+  }
+
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(args.Out.c_str());
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->Write();
+  if (writer->GetErrorCode() != 0)
+  {
+    std::cerr << "vtkfx-render: could not write '" << args.Out << "'\n";
+    return 1;
+  }
+
+  const double frameMedian = Median(frameMs);
+  std::cout << "vtkfx-render: " << args.Input << " -> " << args.Out << " (" << args.Width << "x"
+            << args.Height << ", " << (args.PlainVTK ? "plain VTK" : "vtkFX")
+            << "), median frame " << frameMedian << " ms over " << frameMs.size() << " frames";
+  if (!args.PlainVTK)
+  {
+    std::cout << ", G-buffer " << pipeline->GetGBufferBytesPerPixel() << " bytes/pixel";
+  }
+  std::cout << "\n";
+
+  if (!args.Stats.empty())
+  {
+    std::ofstream json(args.Stats.c_str());
+    if (!json)
+    {
+      std::cerr << "vtkfx-render: could not write '" << args.Stats << "'\n";
+      return 1;
+    }
+    json << "{\n  \"input\": " << JsonString(args.Input) << ",\n  \"width\": " << args.Width
+         << ",\n  \"height\": " << args.Height << ",\n  \"mode\": "
+         << (args.PlainVTK ? "\"plain-vtk\"" : "\"vtkfx\"") << ",\n  \"frames\": " << frameMs.size()
+         << ",\n  \"frame_ms_median\": " << frameMedian << ",\n  \"passes_ran\": [";
+    for (size_t i = 0; i < passesThatRan.size(); ++i)
+    {
+      json << (i ? ", " : "") << JsonString(passesThatRan[i]);
+    }
+    json << "],\n  \"pass_ms_median\": {";
+    bool first = true;
+    for (const auto& name : passesThatRan)
+    {
+      json << (first ? "" : ",") << "\n    " << JsonString(name) << ": " << Median(passMs[name]);
+      first = false;
+    }
+    json << (first ? "" : "\n  ") << "},\n  \"gbuffer_bytes_per_pixel\": "
+         << (args.PlainVTK ? 0 : pipeline->GetGBufferBytesPerPixel()) << ",\n  \"gbuffer_channels\": [";
+    first = true;
+    for (int c = 0; !args.PlainVTK && c < vtkFXGBufferPass::NumberOfChannels; ++c)
+    {
+      if (pipeline->GetGBufferChannels() & vtkFXGBufferPass::ChannelBit(c))
+      {
+        json << (first ? "" : ", ") << JsonString(vtkFXGBufferPass::GetChannelName(c));
+        first = false;
+      }
+    }
+    json << "]\n}\n";
+  }
+  return 0;
+}

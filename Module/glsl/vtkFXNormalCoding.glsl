@@ -1,0 +1,37 @@
+// Octahedral unit-vector encoding: Cigolle, Donow, Evangelakos, Mara,
+// McGuire, Meyer, "A Survey of Efficient Representations for Independent Unit
+// Vectors", JCGT 3(2), 2014. Two 16-bit floats keep the angular error below
+// 1e-3 rad, well under what lighting a 8-bit image can show.
+vec2 fxSignNotZero(vec2 v)
+{
+  return vec2(v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0);
+}
+
+vec2 fxEncodeNormal(vec3 n)
+{
+  // Degenerate normals (zero length or NaN) encode as +z, facing the viewer.
+  float l1 = abs(n.x) + abs(n.y) + abs(n.z);
+  if (!(l1 > 1e-20))
+  {
+    return vec2(0.0);
+  }
+  vec2 p = n.xy / l1;
+  return (n.z <= 0.0) ? (1.0 - abs(p.yx)) * fxSignNotZero(p) : p;
+}
+
+vec3 fxDecodeNormal(vec2 e)
+{
+  vec3 v = vec3(e.xy, 1.0 - abs(e.x) - abs(e.y));
+  if (v.z < 0.0)
+  {
+    v.xy = (1.0 - abs(v.yx)) * fxSignNotZero(v.xy);
+  }
+  return normalize(v);
+}
+
+// Fragments that VTK does not light carry this value instead of a normal.
+const vec2 fxUnlitNormal = vec2(4.0, 4.0);
+bool fxIsUnlit(vec2 e)
+{
+  return e.x > 2.0;
+}

@@ -1,0 +1,103 @@
+/**
+ * @class   vtkFXCompositePass
+ * @brief   Deferred lighting of a vtkFXGBufferPass with VTK's own light model.
+ *
+ * Reads: the G-buffer's hardware depth, linear depth, normal, albedo and,
+ * when allocated, specular, ambient and emission channels; the renderer's
+ * lights through vtkOpenGLRenderer::UpdateLightingUniforms, so headlights,
+ * camera and scene lights, positional lights with cone and attenuation,
+ * vtkLightKit and two-sided lighting give the same numbers as VTK's forward
+ * shaders (same formulas, same uniforms).
+ *
+ * Writes: the lit colour of every covered pixel into the current framebuffer
+ * (blended like VTK's opaque pass), and the G-buffer depth into its depth
+ * buffer, so VTK's translucent, volume and overlay steps that follow are
+ * depth-tested as usual. Background pixels are left untouched.
+ *
+ * Cost: one full-screen pass, one texture read per allocated channel and a
+ * loop over the lights per pixel.
+ *
+ * Later effects plug in as optional inputs: an occlusion texture scales the
+ * ambient term (and, by OcclusionDiffuseStrength, the diffuse term).
+ *
+ * DebugChannel shows one G-buffer channel instead of the lit image.
+ */
+#ifndef vtkFXCompositePass_h
+#define vtkFXCompositePass_h
+
+#include "vtkFXModule.h"
+#include "vtkOpenGLRenderPass.h"
+
+#include <memory>
+#include <string>
+
+class vtkFXGBufferPass;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderer;
+
+class VTKFX_EXPORT vtkFXCompositePass : public vtkOpenGLRenderPass
+{
+public:
+  static vtkFXCompositePass* New();
+  vtkTypeMacro(vtkFXCompositePass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The G-buffer whose channels are lit. It must render before this pass.
+   */
+  virtual void SetGBuffer(vtkFXGBufferPass* gbuffer);
+  vtkGetObjectMacro(GBuffer, vtkFXGBufferPass);
+
+  /**
+   * Channel to show instead of the lit image (a vtkFXGBufferPass::Channel),
+   * or -1 (default) for the lit image. Normals show as 0.5 + 0.5 n, linear
+   * depth as a grey ramp from the nearest to the farthest covered pixel.
+   */
+  vtkSetClampMacro(DebugChannel, int, -1, 5);
+  vtkGetMacro(DebugChannel, int);
+
+  ///@{
+  /**
+   * Material channels the scene needs, decided by whoever knows the scene
+   * (vtkFXPipelinePass does it per frame). Off means every fragment has zero
+   * of that term, so the channel need not exist. All on by default.
+   */
+  vtkSetMacro(UseSpecular, bool);
+  vtkGetMacro(UseSpecular, bool);
+  vtkSetMacro(UseAmbient, bool);
+  vtkGetMacro(UseAmbient, bool);
+  vtkSetMacro(UseEmission, bool);
+  vtkGetMacro(UseEmission, bool);
+  ///@}
+
+  /**
+   * Channels this pass reads when the renderer's lighting complexity is
+   * `lightingComplexity` (0 = no light on, see vtkOpenGLRenderer), as a mask
+   * of vtkFXGBufferPass::ChannelBit().
+   */
+  unsigned int GetRequiredChannels(int lightingComplexity) const;
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+protected:
+  vtkFXCompositePass();
+  ~vtkFXCompositePass() override;
+
+  std::string BuildFragmentShader(vtkOpenGLRenderer* ren) const;
+
+  vtkFXGBufferPass* GBuffer = nullptr;
+  int DebugChannel = -1;
+  bool UseSpecular = true;
+  bool UseAmbient = true;
+  bool UseEmission = true;
+
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  std::string QuadSource;
+
+private:
+  vtkFXCompositePass(const vtkFXCompositePass&) = delete;
+  void operator=(const vtkFXCompositePass&) = delete;
+};
+
+#endif

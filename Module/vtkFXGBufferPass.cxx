@@ -1,0 +1,399 @@
+#include "vtkFXGBufferPass.h"
+
+#include "vtkFXGBufferDec.h"
+#include "vtkFXNormalCoding.h"
+#include "vtkFXRenderUtilities.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLState.h"
+#include "vtkProperty.h"
+#include "vtkRenderState.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <sstream>
+
+vtkStandardNewMacro(vtkFXGBufferPass);
+
+namespace
+{
+const char* const ChannelNames[vtkFXGBufferPass::NumberOfChannels] = { "normal", "depth", "albedo",
+  "specular", "ambient", "emission" };
+
+const int ChannelFormats[vtkFXGBufferPass::NumberOfChannels] = { vtkFXRenderUtilities::RG16F,
+  vtkFXRenderUtilities::R32F, vtkFXRenderUtilities::RGBA8, vtkFXRenderUtilities::RGBA8,
+  vtkFXRenderUtilities::RGBA8, vtkFXRenderUtilities::RGBA8 };
+
+// Tags planted in the mapper's fragment shader before its own substitutions.
+const char* const TexBeginTag = "//VTK::FXGBuffer::TexBegin";
+const char* const TexEndTag = "//VTK::FXGBuffer::TexEnd";
+const char* const ImplTag = "//VTK::FXGBuffer::Impl";
+
+bool Contains(const std::string& s, const char* what)
+{
+  return s.find(what) != std::string::npos;
+}
+
+// The code the mapper substituted for its texture tag, between our markers.
+std::string ExtractTextureCode(const std::string& fs)
+{
+  const size_t begin = fs.find(TexBeginTag);
+  const size_t end = fs.find(TexEndTag);
+  if (begin == std::string::npos || end == std::string::npos || end < begin)
+  {
+    return std::string();
+  }
+  const size_t start = begin + std::string(TexBeginTag).size();
+  return fs.substr(start, end - start);
+}
+
+bool IsBlank(const std::string& s)
+{
+  return s.find_first_not_of(" \t\r\n") == std::string::npos;
+}
+}
+
+vtkFXGBufferPass::vtkFXGBufferPass()
+  : RequiredChannels((1u << NumberOfChannels) - 1)
+{
+}
+
+vtkFXGBufferPass::~vtkFXGBufferPass()
+{
+  this->SetDelegatePass(nullptr);
+}
+
+vtkCxxSetObjectMacro(vtkFXGBufferPass, DelegatePass, vtkRenderPass);
+
+const char* vtkFXGBufferPass::GetChannelName(int channel)
+{
+  return (channel >= 0 && channel < NumberOfChannels) ? ChannelNames[channel] : "unknown";
+}
+
+int vtkFXGBufferPass::GetChannelFromName(const char* name)
+{
+  for (int c = 0; name && c < NumberOfChannels; ++c)
+  {
+    if (std::string(name) == ChannelNames[c])
+    {
+      return c;
+    }
+  }
+  return -1;
+}
+
+int vtkFXGBufferPass::GetChannelFormat(int channel)
+{
+  return (channel >= 0 && channel < NumberOfChannels) ? ChannelFormats[channel] : -1;
+}
+
+vtkTextureObject* vtkFXGBufferPass::GetChannelTexture(int channel)
+{
+  if (channel < 0 || channel >= NumberOfChannels || !(this->AllocatedChannels & ChannelBit(channel)))
+  {
+    return nullptr;
+  }
+  return this->Textures[channel];
+}
+
+vtkTextureObject* vtkFXGBufferPass::GetDepthTexture()
+{
+  return this->DepthTexture;
+}
+
+int vtkFXGBufferPass::GetBytesPerPixel() const
+{
+  int bytes = this->DepthTexture ? vtkFXRenderUtilities::GetBytesPerTexel(vtkFXRenderUtilities::Depth32F) : 0;
+  for (int c = 0; c < NumberOfChannels; ++c)
+  {
+    if (this->AllocatedChannels & ChannelBit(c))
+    {
+      bytes += vtkFXRenderUtilities::GetBytesPerTexel(ChannelFormats[c]);
+    }
+  }
+  return bytes;
+}
+
+bool vtkFXGBufferPass::UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height)
+{
+  const unsigned int wanted = this->RequiredChannels & ((1u << NumberOfChannels) - 1);
+  if (wanted != this->AllocatedChannels)
+  {
+    // A different set of channels changes the code the mappers must run.
+    this->ShaderStageTime.Modified();
+  }
+  if (!this->FrameBuffer)
+  {
+    this->FrameBuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    this->FrameBuffer->SetContext(window);
+  }
+  for (int c = 0; c < NumberOfChannels; ++c)
+  {
+    if (wanted & ChannelBit(c))
+    {
+      vtkFXRenderUtilities::EnsureTexture(this->Textures[c], window, width, height, ChannelFormats[c]);
+    }
+    else if (this->Textures[c])
+    {
+      // Rule: a channel nobody reads is never kept.
+      this->Textures[c]->ReleaseGraphicsResources(window);
+      this->Textures[c] = nullptr;
+    }
+  }
+  vtkFXRenderUtilities::EnsureTexture(
+    this->DepthTexture, window, width, height, vtkFXRenderUtilities::Depth32F);
+  this->AllocatedChannels = wanted;
+
+  // Attach the allocated channels in channel order, packed from attachment 0.
+  this->FrameBuffer->Bind();
+  this->FrameBuffer->RemoveColorAttachments(NumberOfChannels);
+  unsigned int attachment = 0;
+  for (int c = 0; c < NumberOfChannels; ++c)
+  {
+    if (wanted & ChannelBit(c))
+    {
+      this->FrameBuffer->AddColorAttachment(attachment++, this->Textures[c]);
+    }
+  }
+  this->FrameBuffer->AddDepthAttachment(this->DepthTexture);
+  this->FrameBuffer->ActivateDrawBuffers(attachment);
+  return true;
+}
+
+void vtkFXGBufferPass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  if (!ren)
+  {
+    vtkErrorMacro("vtkFXGBufferPass needs a vtkOpenGLRenderer.");
+    return;
+  }
+  if (!this->DelegatePass)
+  {
+    vtkWarningMacro("No delegate pass: the G-buffer stays empty.");
+  }
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkOpenGLState* state = window->GetState();
+
+  int width, height;
+  vtkFXRenderUtilities::GetViewportSize(ren, width, height);
+
+  state->PushFramebufferBindings();
+  this->UpdateTargets(window, width, height);
+
+  {
+    vtkOpenGLState::ScopedglViewport viewportSaver(state);
+    vtkOpenGLState::ScopedglScissor scissorSaver(state);
+    vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
+    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+
+    state->vtkglViewport(0, 0, width, height);
+    state->vtkglScissor(0, 0, width, height);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    // Channels are data, not colours: blending would corrupt them.
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    state->vtkglClearDepth(1.0);
+    state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+    // Third and fourth rows of the projection, for unlit primitives' depth.
+    vtkMatrix4x4* projection = ren->GetActiveCamera()->GetProjectionTransformMatrix(
+      ren->GetTiledAspectRatio(), -1, 1);
+    this->ProjectionZ[0] = static_cast<float>(projection->GetElement(2, 2));
+    this->ProjectionZ[1] = static_cast<float>(projection->GetElement(2, 3));
+    this->ProjectionZ[2] = static_cast<float>(projection->GetElement(3, 2));
+    this->ProjectionZ[3] = static_cast<float>(projection->GetElement(3, 3));
+
+    if (this->DelegatePass)
+    {
+      vtkRenderState delegateState(ren);
+      delegateState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+      delegateState.SetFrameBuffer(this->FrameBuffer);
+      this->PreRender(&delegateState);
+      this->DelegatePass->Render(&delegateState);
+      this->PostRender(&delegateState);
+      this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    }
+  }
+  this->FrameBuffer->UnBind();
+  state->PopFramebufferBindings();
+}
+
+bool vtkFXGBufferPass::PreReplaceShaderValues(std::string&, std::string&,
+  std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+{
+  // Volumes and other non-polydata shaders have no texture tag: leave them.
+  if (!Contains(fragmentShader, "//VTK::TCoord::Impl"))
+  {
+    return true;
+  }
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::TCoord::Impl",
+    std::string(TexBeginTag) + "\n  //VTK::TCoord::Impl\n  " + TexEndTag + "\n  " + ImplTag, false);
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::Output::Dec",
+    std::string("//VTK::Output::Dec\n") + vtkFXGBufferDec, false);
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
+  return true;
+}
+
+std::string vtkFXGBufferPass::ChannelWritesGLSL(bool lit, bool hasVertexVC) const
+{
+  std::ostringstream code;
+  int target = 0;
+  for (int c = 0; c < NumberOfChannels; ++c)
+  {
+    if (!(this->AllocatedChannels & ChannelBit(c)))
+    {
+      continue;
+    }
+    code << "  gl_FragData[" << target++ << "] = ";
+    switch (c)
+    {
+      case Normal:
+        code << (lit ? "vec4(fxEncodeNormal(normalVCVSOutput), 0.0, 1.0);\n"
+                     : "vec4(fxUnlitNormal, 0.0, 1.0);\n");
+        break;
+      case LinearDepth:
+        // Unlit primitives have no view-space position: invert the
+        // projection of the window depth instead.
+        code << (hasVertexVC ? "vec4(-vertexVC.z, 0.0, 0.0, 1.0);\n"
+                             : "vec4(fxLinearDepthFromWindow(gl_FragCoord.z), 0.0, 0.0, 1.0);\n");
+        break;
+      case Albedo:
+        code << (lit ? "vec4(fxDiffuse, fxColor.a);\n" : "fxColor;\n");
+        break;
+      case Specular:
+        code << (lit ? "vec4(fxSpecular, fxSpecularPower / 128.0);\n" : "vec4(0.0);\n");
+        break;
+      case Ambient:
+        code << (lit ? "vec4(fxAmbient, 1.0);\n" : "vec4(0.0, 0.0, 0.0, 1.0);\n");
+        break;
+      case Emission:
+        code << (lit ? "vec4(0.0, 0.0, 0.0, 1.0);\n" : "fxColor;\n");
+        break;
+    }
+  }
+  return code.str();
+}
+
+bool vtkFXGBufferPass::PostReplaceShaderValues(std::string&, std::string&,
+  std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  if (!Contains(fragmentShader, ImplTag))
+  {
+    return true;
+  }
+  // VTK 9.1 lights a primitive (light complexity > 0) only when its shader
+  // computes "vec3 diffuse" from a normal; the light uniforms alone are
+  // declared for unlit primitives too. PBR materials keep their forward
+  // colour: the composite reproduces VTK's Phong model only.
+  const bool pbr = actor && actor->GetProperty()->GetInterpolation() == VTK_PBR;
+  const bool lit = !pbr && Contains(fragmentShader, "vec3 diffuse = ") &&
+    Contains(fragmentShader, "normalVCVSOutput");
+  const bool hasVertexVC = Contains(fragmentShader, "vec4 vertexVC");
+  const bool hasSpecular = Contains(fragmentShader, "specularColor") && Contains(fragmentShader, "specularPower");
+  const bool hasAmbient = Contains(fragmentShader, "ambientColor");
+
+  // VTK 9.1 applies actor textures after lighting: lit RGBA * texel, with no
+  // clamp, so texel x (ambient + diffuse + specular) distributes exactly over
+  // the terms. Replay the mapper's own texture code on white to learn the
+  // per-fragment texel, and store the textured terms.
+  const std::string textureCode = ExtractTextureCode(fragmentShader);
+  std::ostringstream impl;
+  impl << "vec4 fxColor = gl_FragData[0];\n";
+  impl << "  vec4 fxTexture = vec4(1.0);\n";
+  if (!IsBlank(textureCode))
+  {
+    impl << "  {\n    gl_FragData[0] = vec4(1.0);\n" << textureCode
+         << "\n    fxTexture = gl_FragData[0];\n    gl_FragData[0] = fxColor;\n  }\n";
+  }
+  if (lit)
+  {
+    impl << "  vec3 fxDiffuse = diffuseColor * fxTexture.rgb;\n";
+    impl << "  vec3 fxAmbient = " << (hasAmbient ? "ambientColor * fxTexture.rgb" : "vec3(0.0)") << ";\n";
+    impl << "  vec3 fxSpecular = " << (hasSpecular ? "specularColor * fxTexture.rgb" : "vec3(0.0)") << ";\n";
+    impl << "  float fxSpecularPower = " << (hasSpecular ? "clamp(specularPower, 0.0, 128.0)" : "1.0") << ";\n";
+  }
+  // The mapper discards fully transparent fragments after this point; do it
+  // here too, before our writes replace gl_FragData[0].
+  impl << "  if (fxColor.a <= 0.0) { discard; }\n";
+  impl << this->ChannelWritesGLSL(lit, hasVertexVC);
+  // Remove the markers; keep the mapper's code where it was.
+  vtkShaderProgram::Substitute(fragmentShader, TexBeginTag, "", false);
+  vtkShaderProgram::Substitute(fragmentShader, TexEndTag, "", false);
+  vtkShaderProgram::Substitute(fragmentShader, ImplTag, impl.str(), false);
+  return true;
+}
+
+bool vtkFXGBufferPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+{
+  if (program->IsUniformUsed("fxProjectionZ"))
+  {
+    program->SetUniform4f("fxProjectionZ", this->ProjectionZ);
+  }
+  unsigned int targets = 0;
+  for (int c = 0; c < NumberOfChannels; ++c)
+  {
+    targets += (this->AllocatedChannels & ChannelBit(c)) ? 1 : 0;
+  }
+  if (this->FrameBuffer)
+  {
+    this->FrameBuffer->ActivateDrawBuffers(targets);
+  }
+  return true;
+}
+
+vtkMTimeType vtkFXGBufferPass::GetShaderStageMTime()
+{
+  return this->ShaderStageTime.GetMTime();
+}
+
+void vtkFXGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(w);
+  }
+  for (auto& texture : this->Textures)
+  {
+    if (texture)
+    {
+      texture->ReleaseGraphicsResources(w);
+    }
+    texture = nullptr;
+  }
+  if (this->DepthTexture)
+  {
+    this->DepthTexture->ReleaseGraphicsResources(w);
+    this->DepthTexture = nullptr;
+  }
+  if (this->FrameBuffer)
+  {
+    this->FrameBuffer->ReleaseGraphicsResources(w);
+    this->FrameBuffer = nullptr;
+  }
+  this->AllocatedChannels = 0;
+}
+
+void vtkFXGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "RequiredChannels: " << this->RequiredChannels << "\n";
+  os << indent << "AllocatedChannels: " << this->AllocatedChannels << "\n";
+  os << indent << "BytesPerPixel: " << this->GetBytesPerPixel() << "\n";
+  os << indent << "DelegatePass: " << this->DelegatePass << "\n";
+}

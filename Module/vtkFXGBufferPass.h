@@ -1,0 +1,153 @@
+/**
+ * @class   vtkFXGBufferPass
+ * @brief   Renders the opaque props of its delegate into a G-buffer.
+ *
+ * Reads: the props its delegate renders (usually a vtkOpaquePass), through
+ * VTK's shader-replacement hooks, so every vtkOpenGLPolyDataMapper subclass
+ * (composite, glyph, point-gaussian, sphere/stick imposters) keeps its own
+ * colouring, texturing, normals and depth.
+ *
+ * Writes, each as its own texture at the renderer's viewport size, and only
+ * for the channels some consumer requested (SetRequiredChannels):
+ * - Normal       RG16F   view-space normal, octahedral encoding (Cigolle et
+ *                        al. 2014, "A Survey of Efficient Representations for
+ *                        Independent Unit Vectors"); unlit fragments carry a
+ *                        sentinel outside [-1,1].
+ * - LinearDepth  R32F    -z in view coordinates (world units), 0 = no surface.
+ * - Albedo       RGBA8   VTK's diffuse colour after scalar colouring and
+ *                        texturing; alpha = opacity. Unlit fragments store
+ *                        their final colour here.
+ * - Specular     RGBA8   specular colour x intensity; alpha = power / 128.
+ * - Ambient      RGBA8   VTK's ambient term (ambient intensity x colour).
+ * - Emission     RGBA8   light-independent colour: the colour of unlit
+ *                        fragments, 0 for lit ones.
+ * plus a 32-bit float hardware depth texture that is always allocated.
+ *
+ * Cost: one geometry pass with up to 6 render targets; memory is
+ * GetBytesPerPixel() x viewport pixels. The mappers rebuild their shaders
+ * only when the set of channels changes.
+ *
+ * Used alone (as the delegate of a vtkCameraPass) it only fills its
+ * textures; vtkFXPipelinePass pairs it with vtkFXCompositePass.
+ */
+#ifndef vtkFXGBufferPass_h
+#define vtkFXGBufferPass_h
+
+#include "vtkFXModule.h"
+#include "vtkOpenGLRenderPass.h"
+#include "vtkSmartPointer.h"
+
+#include <string>
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+
+class VTKFX_EXPORT vtkFXGBufferPass : public vtkOpenGLRenderPass
+{
+public:
+  static vtkFXGBufferPass* New();
+  vtkTypeMacro(vtkFXGBufferPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Channel
+  {
+    Normal = 0,
+    LinearDepth,
+    Albedo,
+    Specular,
+    Ambient,
+    Emission,
+    NumberOfChannels
+  };
+
+  /**
+   * Bit of a channel in a channel mask.
+   */
+  static unsigned int ChannelBit(int channel) { return 1u << channel; }
+
+  /**
+   * Name of a channel ("normal", "depth", "albedo", "specular", "ambient",
+   * "emission"), and the channel of a name (-1 if unknown).
+   */
+  static const char* GetChannelName(int channel);
+  static int GetChannelFromName(const char* name);
+
+  /**
+   * Channels to render, as a mask of ChannelBit(). Channels not in the mask
+   * are not allocated and their textures are released. Default: all.
+   */
+  vtkSetMacro(RequiredChannels, unsigned int);
+  vtkGetMacro(RequiredChannels, unsigned int);
+
+  /**
+   * Channels allocated by the last Render() (a subset of RequiredChannels).
+   */
+  vtkGetMacro(AllocatedChannels, unsigned int);
+
+  /**
+   * Texture of a channel after Render(), or nullptr if it is not allocated.
+   */
+  vtkTextureObject* GetChannelTexture(int channel);
+
+  /**
+   * The hardware depth texture (DEPTH_COMPONENT32F, 1.0 = no surface).
+   */
+  vtkTextureObject* GetDepthTexture();
+
+  /**
+   * Bytes per pixel of the textures allocated by the last Render(),
+   * including the hardware depth.
+   */
+  int GetBytesPerPixel() const;
+
+  /**
+   * Texture format of a channel (a vtkFXRenderUtilities::TextureFormat).
+   */
+  static int GetChannelFormat(int channel);
+
+  /**
+   * The pass that renders the props (usually a vtkOpaquePass).
+   */
+  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+  virtual void SetDelegatePass(vtkRenderPass* delegatePass);
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /**
+   * vtkOpenGLRenderPass shader hooks: tag the mapper's fragment shader, then
+   * write the channels; set the draw buffers per draw.
+   */
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+  vtkMTimeType GetShaderStageMTime() override;
+  ///@}
+
+protected:
+  vtkFXGBufferPass();
+  ~vtkFXGBufferPass() override;
+
+  bool UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height);
+  std::string ChannelWritesGLSL(bool lit, bool hasVertexVC) const;
+
+  vtkRenderPass* DelegatePass = nullptr;
+  unsigned int RequiredChannels;
+  unsigned int AllocatedChannels = 0;
+  vtkSmartPointer<vtkTextureObject> Textures[NumberOfChannels];
+  vtkSmartPointer<vtkTextureObject> DepthTexture;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;
+  vtkTimeStamp ShaderStageTime;
+  float ProjectionZ[4] = { 0.f, 0.f, 0.f, 1.f };
+
+private:
+  vtkFXGBufferPass(const vtkFXGBufferPass&) = delete;
+  void operator=(const vtkFXGBufferPass&) = delete;
+};
+
+#endif

@@ -1,0 +1,143 @@
+/**
+ * @class   vtkFXPipelinePass
+ * @brief   The one pass a VTK application installs: renderer->SetPass(pipeline).
+ *
+ * Each frame it
+ * 1. analyses the scene on the CPU (opaque, translucent, volume and overlay
+ *    props; whether any lit prop has ambient or specular terms; how many
+ *    lights are on),
+ * 2. sets up the camera (an internal vtkCameraPass) and VTK's lights,
+ * 3. renders the opaque props into a vtkFXGBufferPass that allocates only
+ *    the channels the active passes read,
+ * 4. lights them with vtkFXCompositePass (VTK's light model, deferred),
+ * 5. lets VTK draw translucent props (its own depth peeling / OIT choice),
+ *    volumes and 2D overlays, depth-tested against the G-buffer depth.
+ * Passes with no work in the current scene are left out (no opaque props:
+ * no G-buffer at all). While a vtkHardwareSelector renders (picking), it
+ * renders VTK's forward steps instead, so picking keeps working.
+ *
+ * Reads the renderer's props and lights; writes the renderer's framebuffer.
+ * Per-pass GPU times (vtkOpenGLRenderTimer, results a frame or more late)
+ * and the list of passes that ran are exposed for benchmarks and tests.
+ *
+ * Effects of later issues plug in here as slots; with none enabled the image
+ * matches VTK's own forward render (PSNR >= 40 dB on the test scenes, apart
+ * from multisample anti-aliasing, which the G-buffer does not do: render
+ * windows should use SetMultiSamples(0)).
+ */
+#ifndef vtkFXPipelinePass_h
+#define vtkFXPipelinePass_h
+
+#include "vtkFXModule.h"
+#include "vtkRenderPass.h"
+#include "vtkSmartPointer.h"
+
+#include <string>
+#include <vector>
+
+class vtkCameraPass;
+class vtkFXCompositePass;
+class vtkFXGBufferPass;
+class vtkFXTimedSequencePass;
+class vtkLightsPass;
+class vtkOpaquePass;
+class vtkOverlayPass;
+class vtkVolumetricPass;
+
+class VTKFX_EXPORT vtkFXPipelinePass : public vtkRenderPass
+{
+public:
+  static vtkFXPipelinePass* New();
+  vtkTypeMacro(vtkFXPipelinePass, vtkRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * What the scene analysis found in the last frame.
+   */
+  struct SceneInfo
+  {
+    int OpaqueProps = 0;
+    int TranslucentProps = 0;
+    int VolumeProps = 0;
+    int OverlayProps = 0;
+    bool AnyAmbient = false;  // a lit opaque prop with a non-zero ambient term
+    bool AnySpecular = false; // a lit opaque prop with a non-zero specular term
+    bool AnyUnlit = false;    // an opaque prop with lighting off
+    int LightsOn = 0;
+    int LightingComplexity = 0; // as vtkOpenGLRenderer will compute it
+  };
+  const SceneInfo& GetLastSceneInfo() const { return this->LastScene; }
+
+  /**
+   * G-buffer channel to show on screen instead of the lit image (a
+   * vtkFXGBufferPass::Channel), or -1 (default) for the lit image.
+   */
+  vtkSetClampMacro(DebugChannel, int, -1, 5);
+  vtkGetMacro(DebugChannel, int);
+
+  ///@{
+  /**
+   * Names of the passes that ran in the last frame, in order: "lights",
+   * "gbuffer", "composite", "translucent", "volumes", "overlay"; or
+   * "forward-..." names while a hardware selector renders.
+   */
+  int GetNumberOfPassesThatRan() const;
+  const char* GetPassThatRan(int i) const;
+  ///@}
+
+  /**
+   * Most recent completed GPU time of a pass by name, in milliseconds, or -1
+   * when no measurement has completed yet.
+   */
+  double GetPassMilliseconds(const char* name);
+
+  /**
+   * Bytes per pixel of the G-buffer textures allocated in the last frame
+   * (0 when the G-buffer did not run).
+   */
+  int GetGBufferBytesPerPixel() const;
+
+  /**
+   * Channels the G-buffer allocated in the last frame (a mask of
+   * vtkFXGBufferPass::ChannelBit()).
+   */
+  unsigned int GetGBufferChannels() const;
+
+  /**
+   * The passes it composes, for applications that tune them.
+   */
+  vtkFXGBufferPass* GetGBufferPass();
+  vtkFXCompositePass* GetCompositePass();
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+protected:
+  vtkFXPipelinePass();
+  ~vtkFXPipelinePass() override;
+
+  SceneInfo AnalyzeScene(const vtkRenderState* s) const;
+  void ScheduleDeferredFrame(const SceneInfo& scene);
+  void ScheduleForwardFrame();
+
+  int DebugChannel = -1;
+  SceneInfo LastScene;
+  std::vector<std::string> LastPasses;
+  bool GBufferRan = false;
+
+  vtkSmartPointer<vtkCameraPass> CameraPass;
+  vtkSmartPointer<vtkFXTimedSequencePass> Sequence;
+  vtkSmartPointer<vtkLightsPass> LightsPass;
+  vtkSmartPointer<vtkOpaquePass> OpaquePass;
+  vtkSmartPointer<vtkFXGBufferPass> GBufferPass;
+  vtkSmartPointer<vtkFXCompositePass> CompositePass;
+  vtkSmartPointer<vtkRenderPass> TranslucentPass;
+  vtkSmartPointer<vtkVolumetricPass> VolumetricPass;
+  vtkSmartPointer<vtkOverlayPass> OverlayPass;
+
+private:
+  vtkFXPipelinePass(const vtkFXPipelinePass&) = delete;
+  void operator=(const vtkFXPipelinePass&) = delete;
+};
+
+#endif

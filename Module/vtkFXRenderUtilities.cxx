@@ -1,0 +1,173 @@
+#include "vtkFXRenderUtilities.h"
+
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+vtkStandardNewMacro(vtkFXRenderUtilities);
+
+namespace
+{
+struct FormatInfo
+{
+  int InternalFormat;
+  int Format;
+  int Components;
+  int VTKType;
+  int Bytes;
+};
+
+const FormatInfo& Info(int format)
+{
+  static const FormatInfo table[vtkFXRenderUtilities::NumberOfTextureFormats] = {
+    { GL_R32F, GL_RED, 1, VTK_FLOAT, 4 },
+    { GL_RG16F, GL_RG, 2, VTK_FLOAT, 4 },
+    { GL_RGBA8, GL_RGBA, 4, VTK_UNSIGNED_CHAR, 4 },
+    { GL_RGBA16F, GL_RGBA, 4, VTK_FLOAT, 8 },
+    { GL_R8, GL_RED, 1, VTK_UNSIGNED_CHAR, 1 },
+    { GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, 1, VTK_FLOAT, 4 },
+  };
+  return table[format];
+}
+}
+
+int vtkFXRenderUtilities::GetBytesPerTexel(int format)
+{
+  if (format < 0 || format >= NumberOfTextureFormats)
+  {
+    return 0;
+  }
+  return Info(format).Bytes;
+}
+
+bool vtkFXRenderUtilities::EnsureTexture(vtkSmartPointer<vtkTextureObject>& texture,
+  vtkOpenGLRenderWindow* window, int width, int height, int format)
+{
+  const FormatInfo& info = Info(format);
+  width = std::max(width, 1);
+  height = std::max(height, 1);
+  if (texture && texture->GetHandle() && texture->GetContext() == window &&
+    static_cast<int>(texture->GetWidth()) == width &&
+    static_cast<int>(texture->GetHeight()) == height &&
+    static_cast<int>(texture->GetInternalFormat(info.VTKType, info.Components, false)) ==
+      info.InternalFormat)
+  {
+    return false;
+  }
+  if (!texture)
+  {
+    texture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  texture->SetContext(window);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  if (format == Depth32F)
+  {
+    texture->AllocateDepth(width, height, vtkTextureObject::Float32);
+    return true;
+  }
+  texture->SetInternalFormat(info.InternalFormat);
+  texture->SetFormat(info.Format);
+  texture->SetDataType(info.VTKType == VTK_FLOAT ? GL_FLOAT : GL_UNSIGNED_BYTE);
+  texture->Allocate2D(width, height, info.Components, info.VTKType);
+  return true;
+}
+
+vtkShaderProgram* vtkFXRenderUtilities::ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad,
+  std::string& builtSource, vtkOpenGLRenderWindow* window, const std::string& fragmentSource)
+{
+  if (!quad || builtSource != fragmentSource)
+  {
+    quad.reset(new vtkOpenGLQuadHelper(window,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fragmentSource.c_str(),
+      ""));
+    builtSource = fragmentSource;
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  }
+  if (!quad->Program || !quad->Program->GetCompiled())
+  {
+    vtkGenericWarningMacro("vtkFX: a full-screen shader failed to compile.");
+    return nullptr;
+  }
+  return quad->Program;
+}
+
+void vtkFXRenderUtilities::GetViewportSize(vtkRenderer* renderer, int& width, int& height)
+{
+  int x, y;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  width = std::max(width, 1);
+  height = std::max(height, 1);
+}
+
+void vtkFXRenderUtilities::ComputeFrustumRay(
+  vtkRenderer* renderer, double origin[3][3], double direction[3][3])
+{
+  // VTK's projection matrix P maps view coordinates to clip coordinates
+  // (row-major, acting on column vectors). Both of VTK's projections have
+  // P[3] = (0,0,-1,0) (perspective) or (0,0,0,1) (parallel) and no x/y
+  // coupling into z, so x and y of a point at depth d = -z solve
+  //   ndc.x * w = P00 x + P01 y + P02 z + P03,  w = P32 z + P33.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double aspect = renderer->GetTiledAspectRatio();
+  vtkMatrix4x4* p = camera->GetProjectionTransformMatrix(aspect, -1, 1);
+  const double (*m)[4] = p->Element;
+  // With z = -d and w = -P32 d + P33, for each axis i (0 = x, 1 = y):
+  //   P_ii * c_i = ndc_i * (P33 - P32 d) - P_i2 * (-d) - P_i3
+  //   c_i = [ndc_i*P33 - P_i3] / P_ii  +  d * [P_i2 - ndc_i*P32] / P_ii
+  for (int k = 0; k < 3; ++k)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      origin[k][i] = 0.0;
+      direction[k][i] = 0.0;
+    }
+  }
+  for (int i = 0; i < 2; ++i)
+  {
+    const double pii = m[i][i];
+    // constant terms
+    origin[0][i] = -m[i][3] / pii;
+    direction[0][i] = m[i][2] / pii;
+    // ndc_i coefficient (row k = 1 + i)
+    origin[1 + i][i] = m[3][3] / pii;
+    direction[1 + i][i] = -m[3][2] / pii;
+  }
+  direction[0][2] = -1.0;
+}
+
+void vtkFXRenderUtilities::SetFrustumRayUniforms(vtkShaderProgram* program, vtkRenderer* renderer)
+{
+  double origin[3][3], direction[3][3];
+  ComputeFrustumRay(renderer, origin, direction);
+  float o[9], d[9];
+  for (int k = 0; k < 3; ++k)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      o[3 * k + i] = static_cast<float>(origin[k][i]);
+      d[3 * k + i] = static_cast<float>(direction[k][i]);
+    }
+  }
+  if (program->IsUniformUsed("fxRayOrigin"))
+  {
+    program->SetUniform3fv("fxRayOrigin", 3, reinterpret_cast<float(*)[3]>(o));
+  }
+  if (program->IsUniformUsed("fxRayDirection"))
+  {
+    program->SetUniform3fv("fxRayDirection", 3, reinterpret_cast<float(*)[3]>(d));
+  }
+}

@@ -1,0 +1,105 @@
+/**
+ * @class   vtkFXRenderUtilities
+ * @brief   Small GL helpers shared by the vtkFX passes.
+ *
+ * Texture allocation in a named format (allocating only when the size or the
+ * format changes), full-screen quad programs rebuilt only when their source
+ * changes, the size of the renderer's viewport, and the affine per-pixel
+ * frustum ray used by every pass that reconstructs view-space positions from
+ * linear depth.
+ */
+#ifndef vtkFXRenderUtilities_h
+#define vtkFXRenderUtilities_h
+
+#include "vtkFXModule.h"
+#include "vtkObject.h"
+#include "vtkSmartPointer.h"
+
+#include <memory>
+#include <string>
+
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkRenderer;
+class vtkRenderState;
+class vtkShaderProgram;
+class vtkTextureObject;
+
+class VTKFX_EXPORT vtkFXRenderUtilities : public vtkObject
+{
+public:
+  static vtkFXRenderUtilities* New();
+  vtkTypeMacro(vtkFXRenderUtilities, vtkObject);
+
+  /**
+   * Texel formats used by vtkFX render targets.
+   */
+  enum TextureFormat
+  {
+    R32F = 0,  // 4 bytes: linear depth
+    RG16F,     // 4 bytes: octahedral normals
+    RGBA8,     // 4 bytes: colours in [0,1]
+    RGBA16F,   // 8 bytes: HDR colours
+    R8,        // 1 byte:  occlusion in [0,1]
+    Depth32F,  // 4 bytes: hardware depth
+    NumberOfTextureFormats
+  };
+
+  /**
+   * Bytes one texel of the format occupies.
+   */
+  static int GetBytesPerTexel(int format);
+
+  /**
+   * Make `texture` a width x height 2D texture of the given format, with
+   * nearest filtering and clamped edges. Allocates only when it is missing or
+   * its size or format differ; returns true when it (re)allocated.
+   */
+  static bool EnsureTexture(vtkSmartPointer<vtkTextureObject>& texture,
+    vtkOpenGLRenderWindow* window, int width, int height, int format);
+
+  /**
+   * Make `quad` a full-screen quad whose fragment shader is `fragmentSource`,
+   * rebuilding it only when the source differs from `builtSource`, and bind
+   * its program. Returns the bound program, or nullptr (with an error) when
+   * the shader does not compile.
+   */
+  static vtkShaderProgram* ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad,
+    std::string& builtSource, vtkOpenGLRenderWindow* window, const std::string& fragmentSource);
+
+  /**
+   * Size of the renderer's viewport in pixels (its tiled size).
+   */
+  static void GetViewportSize(vtkRenderer* renderer, int& width, int& height);
+
+  /**
+   * The view-space position of the surface seen at a pixel is
+   *   P = origin(ndc) + depth * direction(ndc),
+   * with depth the linear view depth (-z_view) and origin, direction affine
+   * in the pixel's normalized device coordinates:
+   *   origin(ndc) = O0 + ndc.x * Ox + ndc.y * Oy, likewise for direction.
+   * Under perspective the origin is 0 and the direction is the frustum ray
+   * scaled to z = -1; under parallel projection the direction is (0,0,-1)
+   * and the origin spans the view rectangle. Computed in double precision
+   * from the camera's projection matrix, so off-axis and parallel cameras
+   * are exact. Sets uniforms `fxRayOrigin[3]` and `fxRayDirection[3]`
+   * (vec3: constant, x, y) on `program` if it has them.
+   */
+  static void SetFrustumRayUniforms(vtkShaderProgram* program, vtkRenderer* renderer);
+
+  /**
+   * Ray terms as described above: origin[3][3] and direction[3][3] are the
+   * constant, ndc.x and ndc.y coefficients. Exposed for tests and CPU code.
+   */
+  static void ComputeFrustumRay(vtkRenderer* renderer, double origin[3][3], double direction[3][3]);
+
+protected:
+  vtkFXRenderUtilities() = default;
+  ~vtkFXRenderUtilities() override = default;
+
+private:
+  vtkFXRenderUtilities(const vtkFXRenderUtilities&) = delete;
+  void operator=(const vtkFXRenderUtilities&) = delete;
+};
+
+#endif

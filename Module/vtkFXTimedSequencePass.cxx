@@ -1,0 +1,159 @@
+#include "vtkFXTimedSequencePass.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderTimer.h"
+#include "vtkRenderState.h"
+#include "vtkSmartPointer.h"
+
+#include <map>
+
+vtkStandardNewMacro(vtkFXTimedSequencePass);
+
+struct vtkFXTimedSequencePass::Internals
+{
+  struct Entry
+  {
+    std::string Name;
+    vtkSmartPointer<vtkRenderPass> Pass;
+  };
+  struct Timing
+  {
+    // Two timers per pass, used alternately, so that one frame's query can
+    // still be in flight while the next frame starts its own.
+    vtkOpenGLRenderTimer Timers[2];
+    int Next = 0;
+    double LastMilliseconds = -1.0;
+  };
+  std::vector<Entry> Passes;
+  std::vector<std::string> Ran;
+  std::map<std::string, std::unique_ptr<Timing>> Timings;
+
+  Timing& TimingFor(const std::string& name)
+  {
+    auto& slot = this->Timings[name];
+    if (!slot)
+    {
+      slot.reset(new Timing);
+    }
+    return *slot;
+  }
+
+  // Collects any finished measurement, then starts the next one.
+  static void Begin(Timing& t)
+  {
+    for (auto& timer : t.Timers)
+    {
+      if (timer.Started() && timer.Stopped() && timer.Ready())
+      {
+        t.LastMilliseconds = timer.GetElapsedMilliseconds();
+        timer.Reset();
+      }
+    }
+    vtkOpenGLRenderTimer& timer = t.Timers[t.Next];
+    if (timer.Started())
+    {
+      // Still pending after a full cycle: drop it rather than block.
+      timer.Reset();
+    }
+    timer.Start();
+  }
+
+  static void End(Timing& t)
+  {
+    t.Timers[t.Next].Stop();
+    t.Next = 1 - t.Next;
+  }
+};
+
+vtkFXTimedSequencePass::vtkFXTimedSequencePass()
+  : Impl(new Internals)
+{
+}
+
+vtkFXTimedSequencePass::~vtkFXTimedSequencePass() = default;
+
+void vtkFXTimedSequencePass::ClearPasses()
+{
+  this->Impl->Passes.clear();
+}
+
+void vtkFXTimedSequencePass::AddPass(const char* name, vtkRenderPass* pass)
+{
+  if (!name || !pass)
+  {
+    vtkErrorMacro("AddPass needs a name and a pass.");
+    return;
+  }
+  this->Impl->Passes.push_back({ name, pass });
+}
+
+void vtkFXTimedSequencePass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  this->Impl->Ran.clear();
+  for (auto& entry : this->Impl->Passes)
+  {
+    Internals::Timing* timing = this->Timing ? &this->Impl->TimingFor(entry.Name) : nullptr;
+    if (timing)
+    {
+      Internals::Begin(*timing);
+    }
+    entry.Pass->Render(s);
+    if (timing)
+    {
+      Internals::End(*timing);
+    }
+    this->NumberOfRenderedProps += entry.Pass->GetNumberOfRenderedProps();
+    this->Impl->Ran.push_back(entry.Name);
+  }
+}
+
+double vtkFXTimedSequencePass::GetPassMilliseconds(const char* name)
+{
+  auto it = name ? this->Impl->Timings.find(name) : this->Impl->Timings.end();
+  if (it == this->Impl->Timings.end())
+  {
+    return -1.0;
+  }
+  // Harvest results that completed since the last frame.
+  for (auto& timer : it->second->Timers)
+  {
+    if (timer.Started() && timer.Stopped() && timer.Ready())
+    {
+      it->second->LastMilliseconds = timer.GetElapsedMilliseconds();
+      timer.Reset();
+    }
+  }
+  return it->second->LastMilliseconds;
+}
+
+std::vector<std::string> vtkFXTimedSequencePass::GetPassesThatRan() const
+{
+  return this->Impl->Ran;
+}
+
+void vtkFXTimedSequencePass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  for (auto& entry : this->Impl->Passes)
+  {
+    entry.Pass->ReleaseGraphicsResources(w);
+  }
+  for (auto& timing : this->Impl->Timings)
+  {
+    for (auto& timer : timing.second->Timers)
+    {
+      timer.ReleaseGraphicsResources();
+    }
+  }
+  this->Impl->Timings.clear();
+}
+
+void vtkFXTimedSequencePass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Timing: " << this->Timing << "\n";
+  for (const auto& entry : this->Impl->Passes)
+  {
+    os << indent << "Pass: " << entry.Name << " (" << entry.Pass->GetClassName() << ")\n";
+  }
+}
