@@ -2,6 +2,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkConeSource.h"
@@ -335,6 +336,8 @@ void SceneComposite(vtkRenderer* renderer)
     blocks->SetBlock(i, Sphere(i * 0.9, 0.4, 0, 0.4, 32));
   }
   vtkNew<vtkCompositePolyDataMapper2> mapper;
+  vtkNew<vtkCompositeDataDisplayAttributes> attributes;
+  mapper->SetCompositeDataDisplayAttributes(attributes);
   mapper->SetInputDataObject(blocks);
   mapper->SetBlockColor(1, 0.9, 0.2, 0.2);
   mapper->SetBlockColor(3, 0.2, 0.3, 0.9);

@@ -1,0 +1,130 @@
+// Helpers shared by the vtkFX C++ tests (header only).
+#ifndef vtkFXTestUtilities_h
+#define vtkFXTestUtilities_h
+
+#include "vtkNew.h"
+#include "vtkPixelBufferObject.h"
+#include "vtkRenderWindow.h"
+#include "vtkSmartPointer.h"
+#include "vtkTesting.h"
+#include "vtkTextureObject.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <vector>
+
+// Prints the failed condition with its location and makes the test fail.
+#define FX_CHECK(cond, message)                                                                    \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(cond))                                                                                   \
+    {                                                                                              \
+      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #cond << ": " << message      \
+                << std::endl;                                                                      \
+      return EXIT_FAILURE;                                                                         \
+    }                                                                                              \
+  } while (false)
+
+namespace vtkFXTest
+{
+// An offscreen window with one sample per pixel (the G-buffer has one).
+inline vtkSmartPointer<vtkRenderWindow> MakeWindow(int width, int height)
+{
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(width, height);
+  return window;
+}
+
+// The value of "-X value" in argv, or "" when absent.
+inline std::string Argument(int argc, char* argv[], const char* flag)
+{
+  for (int i = 0; i + 1 < argc; ++i)
+  {
+    if (std::strcmp(argv[i], flag) == 0)
+    {
+      return argv[i + 1];
+    }
+  }
+  return std::string();
+}
+
+// Compares the window with the baseline given by -V (VTK's image difference,
+// threshold as in vtkRegressionTestImageThreshold). Unlike VTK's macro, a
+// missing -V is a failure: an image test that compares nothing must not pass.
+// On failure VTK writes the test image and the difference into -T.
+inline bool MatchesBaseline(vtkRenderWindow* window, int argc, char* argv[], double threshold)
+{
+  if (Argument(argc, argv, "-V").empty())
+  {
+    std::cerr << "image test run without a baseline (-V): nothing compared" << std::endl;
+    return false;
+  }
+  vtkNew<vtkTesting> testing;
+  for (int i = 0; i < argc; ++i)
+  {
+    testing->AddArgument(argv[i]);
+  }
+  testing->SetRenderWindow(window);
+  return testing->RegressionTestAndCaptureOutput(threshold, std::cout) == vtkTesting::PASSED;
+}
+
+// Reads a texture back as floats, `components` per texel, rows bottom-up.
+inline std::vector<float> Download(vtkTextureObject* texture, int components)
+{
+  std::vector<float> values;
+  if (!texture)
+  {
+    return values;
+  }
+  vtkPixelBufferObject* pbo = texture->Download();
+  if (!pbo)
+  {
+    return values;
+  }
+  const size_t n = static_cast<size_t>(texture->GetWidth()) * texture->GetHeight() * components;
+  const int type = pbo->GetType();
+  void* data = pbo->MapPackedBuffer();
+  values.resize(n);
+  if (type == VTK_FLOAT)
+  {
+    std::memcpy(values.data(), data, n * sizeof(float));
+  }
+  else if (type == VTK_UNSIGNED_CHAR)
+  {
+    const unsigned char* bytes = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < n; ++i)
+    {
+      values[i] = bytes[i] / 255.0f;
+    }
+  }
+  pbo->UnmapPackedBuffer();
+  pbo->Delete();
+  return values;
+}
+
+// Octahedral decoding, the CPU twin of fxDecodeNormal in vtkFXNormalCoding.glsl.
+inline void DecodeNormal(float ex, float ey, double n[3])
+{
+  n[0] = ex;
+  n[1] = ey;
+  n[2] = 1.0 - std::fabs(ex) - std::fabs(ey);
+  if (n[2] < 0.0)
+  {
+    const double x = n[0], y = n[1];
+    n[0] = (1.0 - std::fabs(y)) * (x >= 0.0 ? 1.0 : -1.0);
+    n[1] = (1.0 - std::fabs(x)) * (y >= 0.0 ? 1.0 : -1.0);
+  }
+  const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  for (int i = 0; i < 3; ++i)
+  {
+    n[i] /= l;
+  }
+}
+}
+
+#endif
