@@ -2,6 +2,7 @@
 
 #include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
+#include "vtkFXSelectionPass.h"
 #include "vtkFXTimedSequencePass.h"
 #include "vtkFXTranslucentPass.h"
 
@@ -18,6 +19,7 @@
 #include "vtkProp.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumetricPass.h"
@@ -118,6 +120,7 @@ vtkFXPipelinePass::vtkFXPipelinePass()
   this->TranslucentPass = vtkSmartPointer<vtkFXTranslucentPass>::New();
   this->VolumetricPass = vtkSmartPointer<vtkVolumetricPass>::New();
   this->OverlayPass = vtkSmartPointer<vtkOverlayPass>::New();
+  this->SelectionPass = vtkSmartPointer<vtkFXSelectionPass>::New();
 
   this->GBufferPass->SetDelegatePass(this->OpaquePass);
   this->CompositePass->SetGBuffer(this->GBufferPass);
@@ -168,11 +171,17 @@ vtkFXPipelinePass::SceneInfo vtkFXPipelinePass::AnalyzeScene(const vtkRenderStat
   return scene;
 }
 
-void vtkFXPipelinePass::ScheduleDeferredFrame(const SceneInfo& scene)
+void vtkFXPipelinePass::ScheduleDeferredFrame(const SceneInfo& scene, vtkWindow* window)
 {
   this->Sequence->ClearPasses();
   this->Sequence->AddPass("lights", this->LightsPass);
-  this->GBufferRan = scene.OpaqueProps > 0;
+  const bool deferred = scene.OpaqueProps > 0;
+  if (this->GBufferRan && !deferred)
+  {
+    // Nothing opaque any more: keep no G-buffer memory around.
+    this->GBufferPass->ReleaseGraphicsResources(window);
+  }
+  this->GBufferRan = deferred;
   if (this->GBufferRan)
   {
     vtkFXCompositePass* composite = this->CompositePass;
@@ -199,27 +208,25 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const SceneInfo& scene)
   }
 }
 
-void vtkFXPipelinePass::ScheduleForwardFrame()
+void vtkFXPipelinePass::ScheduleSelectionFrame()
 {
-  // VTK's own forward steps: what a hardware selector expects to render.
+  // What VTK's forward renderer does while a hardware selector renders:
+  // lights, then the props drawn by the selector itself.
   this->Sequence->ClearPasses();
-  this->Sequence->AddPass("forward-lights", this->LightsPass);
-  this->Sequence->AddPass("forward-opaque", this->OpaquePass);
-  this->Sequence->AddPass("forward-translucent", this->TranslucentPass);
-  this->Sequence->AddPass("forward-volumes", this->VolumetricPass);
-  this->Sequence->AddPass("forward-overlay", this->OverlayPass);
+  this->Sequence->AddPass("selection-lights", this->LightsPass);
+  this->Sequence->AddPass("selection", this->SelectionPass);
 }
 
 void vtkFXPipelinePass::Render(const vtkRenderState* s)
 {
   if (s->GetRenderer()->GetSelector())
   {
-    this->ScheduleForwardFrame();
+    this->ScheduleSelectionFrame();
   }
   else
   {
     this->LastScene = this->AnalyzeScene(s);
-    this->ScheduleDeferredFrame(this->LastScene);
+    this->ScheduleDeferredFrame(this->LastScene, s->GetRenderer()->GetRenderWindow());
   }
   this->CameraPass->Render(s);
   this->NumberOfRenderedProps = this->CameraPass->GetNumberOfRenderedProps();

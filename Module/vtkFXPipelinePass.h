@@ -14,7 +14,8 @@
  *    volumes and 2D overlays, depth-tested against the G-buffer depth.
  * Passes with no work in the current scene are left out (no opaque props:
  * no G-buffer at all). While a vtkHardwareSelector renders (picking), it
- * renders VTK's forward steps instead, so picking keeps working.
+ * lets the selector draw the props as VTK's forward renderer does
+ * (vtkFXSelectionPass), so picking keeps working.
  *
  * Reads the renderer's props and lights; writes the renderer's framebuffer.
  * Per-pass GPU times (vtkOpenGLRenderTimer, results a frame or more late)
@@ -43,6 +44,7 @@ class vtkLightsPass;
 class vtkOpaquePass;
 class vtkOverlayPass;
 class vtkVolumetricPass;
+class vtkWindow;
 
 class VTKFX_EXPORT vtkFXPipelinePass : public vtkRenderPass
 {
@@ -79,7 +81,7 @@ public:
   /**
    * Names of the passes that ran in the last frame, in order: "lights",
    * "gbuffer", "composite", "translucent", "volumes", "overlay"; or
-   * "forward-..." names while a hardware selector renders.
+   * "selection-lights", "selection" while a hardware selector renders.
    */
   int GetNumberOfPassesThatRan() const;
   const char* GetPassThatRan(int i) const;
@@ -117,8 +119,8 @@ protected:
   ~vtkFXPipelinePass() override;
 
   SceneInfo AnalyzeScene(const vtkRenderState* s) const;
-  void ScheduleDeferredFrame(const SceneInfo& scene);
-  void ScheduleForwardFrame();
+  void ScheduleDeferredFrame(const SceneInfo& scene, vtkWindow* window);
+  void ScheduleSelectionFrame();
 
   int DebugChannel = -1;
   SceneInfo LastScene;
@@ -134,6 +136,7 @@ protected:
   vtkSmartPointer<vtkRenderPass> TranslucentPass;
   vtkSmartPointer<vtkVolumetricPass> VolumetricPass;
   vtkSmartPointer<vtkOverlayPass> OverlayPass;
+  vtkSmartPointer<vtkRenderPass> SelectionPass;
 
 private:
   vtkFXPipelinePass(const vtkFXPipelinePass&) = delete;

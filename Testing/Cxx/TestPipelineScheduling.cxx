@@ -1,0 +1,110 @@
+// The pipeline leaves out what the scene does not need (rule 3):
+// - G-buffer channels follow the materials and lights of the scene,
+// - no opaque prop: no G-buffer pass and no G-buffer memory,
+// - translucent, volume and overlay steps run only when such props exist,
+// and it reports the passes that ran and the G-buffer's bytes per pixel.
+#include "vtkFXGBufferPass.h"
+#include "vtkFXPipelinePass.h"
+#include "vtkFXScenes.h"
+#include "vtkFXTestUtilities.h"
+
+#include "vtkActor.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
+
+namespace
+{
+using GB = vtkFXGBufferPass;
+
+std::string Passes(vtkFXPipelinePass* pipeline)
+{
+  std::string list;
+  for (int i = 0; i < pipeline->GetNumberOfPassesThatRan(); ++i)
+  {
+    list += (i ? "," : "") + std::string(pipeline->GetPassThatRan(i));
+  }
+  return list;
+}
+
+std::string Channels(unsigned int mask)
+{
+  std::string list;
+  for (int c = 0; c < GB::NumberOfChannels; ++c)
+  {
+    if (mask & GB::ChannelBit(c))
+    {
+      list += (list.empty() ? "" : ",") + std::string(GB::GetChannelName(c));
+    }
+  }
+  return list;
+}
+}
+
+int TestPipelineScheduling(int, char*[])
+{
+  auto window = vtkFXTest::MakeWindow(200, 150);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  vtkNew<vtkFXPipelinePass> pipeline;
+  renderer->SetPass(pipeline);
+
+  // Diffuse-only mesh under the light kit: normal + albedo, nothing else.
+  std::string error;
+  vtkFXScenes::Populate(renderer, vtkFXScenes::DataDirectory() + "/fandisk.obj",
+    vtkFXScenes::Options(), error);
+  window->Render();
+  std::cout << "fandisk: " << Passes(pipeline) << " [" << Channels(pipeline->GetGBufferChannels())
+            << "] " << pipeline->GetGBufferBytesPerPixel() << " B/px" << std::endl;
+  FX_CHECK(Passes(pipeline) == "lights,gbuffer,composite", Passes(pipeline));
+  FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "normal,albedo",
+    Channels(pipeline->GetGBufferChannels()));
+  FX_CHECK(pipeline->GetGBufferBytesPerPixel() == 12, "RG16F + RGBA8 + depth32F");
+  FX_CHECK(!pipeline->GetGBufferPass()->GetChannelTexture(GB::Specular), "no specular texture");
+
+  // Specular and ambient terms, translucent and 2D props: all of it runs.
+  renderer->RemoveAllViewProps();
+  vtkFXScenes::Populate(renderer, "scene:mixed", vtkFXScenes::Options(), error);
+  window->Render();
+  std::cout << "mixed: " << Passes(pipeline) << " [" << Channels(pipeline->GetGBufferChannels())
+            << "] " << pipeline->GetGBufferBytesPerPixel() << " B/px" << std::endl;
+  FX_CHECK(Passes(pipeline) == "lights,gbuffer,composite,translucent,overlay", Passes(pipeline));
+  FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "normal,depth,albedo,specular,ambient",
+    Channels(pipeline->GetGBufferChannels()));
+  FX_CHECK(pipeline->GetGBufferBytesPerPixel() == 24, "five 4-byte channels + depth");
+
+  // A debug view allocates the channel it shows.
+  pipeline->SetDebugChannel(GB::Emission);
+  window->Render();
+  FX_CHECK(pipeline->GetGBufferChannels() & GB::ChannelBit(GB::Emission), "emission shown");
+  pipeline->SetDebugChannel(-1);
+  window->Render();
+  FX_CHECK(!(pipeline->GetGBufferChannels() & GB::ChannelBit(GB::Emission)),
+    "emission released when nobody reads it");
+
+  // Only translucent geometry: no G-buffer pass and no G-buffer memory.
+  renderer->RemoveAllViewProps();
+  vtkNew<vtkSphereSource> sphere;
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> glass;
+  glass->SetMapper(mapper);
+  glass->GetProperty()->SetOpacity(0.5);
+  renderer->AddActor(glass);
+  renderer->ResetCamera();
+  window->Render();
+  std::cout << "translucent only: " << Passes(pipeline) << ", "
+            << pipeline->GetGBufferBytesPerPixel() << " B/px" << std::endl;
+  FX_CHECK(Passes(pipeline) == "lights,translucent", Passes(pipeline));
+  FX_CHECK(pipeline->GetGBufferBytesPerPixel() == 0, "no G-buffer");
+  FX_CHECK(!pipeline->GetGBufferPass()->GetDepthTexture() &&
+      !pipeline->GetGBufferPass()->GetChannelTexture(GB::Albedo),
+    "G-buffer textures released");
+
+  // An empty renderer: only the lights.
+  renderer->RemoveAllViewProps();
+  window->Render();
+  FX_CHECK(Passes(pipeline) == "lights", Passes(pipeline));
+  return EXIT_SUCCESS;
+}

@@ -1,0 +1,72 @@
+// The window changes size between frames: the G-buffer textures follow the
+// viewport and the image still matches VTK's forward render. A 1x1 window
+// and a renderer that covers only part of the window work too.
+#include "vtkFXGBufferPass.h"
+#include "vtkFXPipelinePass.h"
+#include "vtkFXScenes.h"
+#include "vtkFXTestUtilities.h"
+
+#include "vtkRenderer.h"
+
+namespace
+{
+double PipelineVsForward(vtkRenderWindow* window, vtkRenderer* renderer, vtkFXPipelinePass* pipeline)
+{
+  renderer->SetPass(nullptr);
+  window->Render();
+  const auto forward = vtkFXScenes::Capture(window);
+  renderer->SetPass(pipeline);
+  window->Render();
+  return vtkFXScenes::PSNR(forward, vtkFXScenes::Capture(window));
+}
+}
+
+int TestResize(int, char*[])
+{
+  auto window = vtkFXTest::MakeWindow(300, 200);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  std::string error;
+  FX_CHECK(vtkFXScenes::Populate(renderer, "scene:spheres", vtkFXScenes::Options(), error), error);
+  vtkNew<vtkFXPipelinePass> pipeline;
+  vtkFXGBufferPass* gbuffer = pipeline->GetGBufferPass();
+
+  const int sizes[][2] = { { 300, 200 }, { 517, 333 }, { 120, 380 }, { 1, 1 }, { 300, 200 } };
+  for (const auto& size : sizes)
+  {
+    window->SetSize(size[0], size[1]);
+    const double psnr = PipelineVsForward(window, renderer, pipeline);
+    vtkTextureObject* albedo = gbuffer->GetChannelTexture(vtkFXGBufferPass::Albedo);
+    std::cout << size[0] << "x" << size[1] << ": PSNR " << psnr << " dB, albedo texture "
+              << (albedo ? albedo->GetWidth() : 0) << "x" << (albedo ? albedo->GetHeight() : 0)
+              << std::endl;
+    FX_CHECK(albedo && static_cast<int>(albedo->GetWidth()) == size[0] &&
+        static_cast<int>(albedo->GetHeight()) == size[1],
+      "G-buffer follows the window size");
+    FX_CHECK(static_cast<int>(gbuffer->GetDepthTexture()->GetWidth()) == size[0],
+      "depth follows too");
+    FX_CHECK(psnr >= 40.0, "pipeline matches VTK after resizing");
+  }
+
+  // Two renderers side by side: the pipeline renders only its viewport.
+  window->SetSize(400, 200);
+  renderer->SetViewport(0.0, 0.0, 0.5, 1.0);
+  vtkNew<vtkRenderer> right;
+  right->SetViewport(0.5, 0.0, 1.0, 1.0);
+  FX_CHECK(vtkFXScenes::Populate(right, "scene:corner", vtkFXScenes::Options(), error), error);
+  window->AddRenderer(right);
+  vtkNew<vtkFXPipelinePass> rightPipeline;
+  right->SetPass(nullptr);
+  renderer->SetPass(nullptr);
+  window->Render();
+  const auto forward = vtkFXScenes::Capture(window);
+  renderer->SetPass(pipeline);
+  right->SetPass(rightPipeline);
+  window->Render();
+  const double psnr = vtkFXScenes::PSNR(forward, vtkFXScenes::Capture(window));
+  std::cout << "two viewports: PSNR " << psnr << " dB" << std::endl;
+  FX_CHECK(static_cast<int>(gbuffer->GetChannelTexture(vtkFXGBufferPass::Albedo)->GetWidth()) == 200,
+    "G-buffer has the renderer's viewport size, not the window's");
+  FX_CHECK(psnr >= 40.0, "side-by-side renderers match VTK");
+  return EXIT_SUCCESS;
+}
