@@ -5,7 +5,13 @@
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkCompositePolyDataMapper2.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkConeSource.h"
+#include "vtkGPUVolumeRayCastMapper.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkRTAnalyticSource.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 #include "vtkCubeSource.h"
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkElevationFilter.h"
@@ -440,6 +446,33 @@ void SceneMixed(vtkRenderer* renderer)
   renderer->AddViewProp(bar);
 }
 
+void SceneVolume(vtkRenderer* renderer)
+{
+  // A ray-cast volume crossing an opaque sphere: the volume must stop at
+  // the sphere's surface, i.e. be depth-tested against the G-buffer depth.
+  vtkNew<vtkRTAnalyticSource> source;
+  source->SetWholeExtent(-16, 16, -16, 16, -16, 16);
+  source->Update();
+  vtkNew<vtkGPUVolumeRayCastMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(40, 0.1, 0.2, 0.9);
+  color->AddRGBPoint(160, 0.9, 0.9, 0.2);
+  color->AddRGBPoint(280, 0.9, 0.1, 0.1);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(40, 0.0);
+  opacity->AddPoint(280, 0.08);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->GetProperty()->SetColor(color);
+  volume->GetProperty()->SetScalarOpacity(opacity);
+  volume->GetProperty()->SetInterpolationTypeToLinear();
+  volume->SetScale(1.0 / 16.0);
+  volume->SetPosition(0, 1.0, 0);
+  renderer->AddVolume(volume);
+  renderer->AddActor(MakeActor(Sphere(0.4, 1.0, 0.3, 0.6), 0.9, 0.9, 0.9));
+}
+
 bool PopulateMolecule(vtkRenderer* renderer, const std::string& path, std::string& error)
 {
   vtkNew<vtkPDBReader> reader;
@@ -480,6 +513,8 @@ bool PopulateBuiltIn(vtkRenderer* renderer, const std::string& name, std::string
     SceneLights(renderer);
   else if (name == "scene:mixed")
     SceneMixed(renderer);
+  else if (name == "scene:volume")
+    SceneVolume(renderer);
   else if (name == "scene:molecule")
     return PopulateMolecule(renderer, vtkFXScenes::DataDirectory() + "/1crn.pdb", error);
   else
@@ -504,7 +539,7 @@ std::string vtkFXScenes::DataDirectory()
 std::vector<std::string> vtkFXScenes::BuiltInSceneNames()
 {
   return { "scene:spheres", "scene:corner", "scene:scalars", "scene:textured", "scene:glyphs",
-    "scene:composite", "scene:splats", "scene:lights", "scene:mixed", "scene:molecule" };
+    "scene:composite", "scene:splats", "scene:lights", "scene:mixed", "scene:volume", "scene:molecule" };
 }
 
 bool vtkFXScenes::Populate(

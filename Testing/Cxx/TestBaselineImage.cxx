@@ -1,0 +1,34 @@
+// Baseline image test of the pipeline: renders INPUT (a built-in scene or a
+// file) at 400x300 through vtkFXPipelinePass and compares with the baseline
+// given by -V, either the lit image ("lit") or one G-buffer channel shown by
+// the pipeline's debug view ("normal", "depth", "albedo", ...).
+//   TestBaselineImage INPUT lit|CHANNEL -V baseline.png -T outdir
+#include "vtkFXGBufferPass.h"
+#include "vtkFXPipelinePass.h"
+#include "vtkFXScenes.h"
+#include "vtkFXTestUtilities.h"
+
+#include "vtkRenderer.h"
+
+int TestBaselineImage(int argc, char* argv[])
+{
+  FX_CHECK(argc >= 3, "usage: TestBaselineImage INPUT lit|CHANNEL -V baseline.png");
+  const std::string input = argv[1];
+  const std::string view = argv[2];
+  auto window = vtkFXTest::MakeWindow(400, 300);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  std::string error;
+  FX_CHECK(vtkFXScenes::Populate(renderer, input, vtkFXScenes::Options(), error), error);
+  vtkNew<vtkFXPipelinePass> pipeline;
+  if (view != "lit")
+  {
+    const int channel = vtkFXGBufferPass::GetChannelFromName(view.c_str());
+    FX_CHECK(channel >= 0, "unknown channel " << view);
+    pipeline->SetDebugChannel(channel);
+  }
+  renderer->SetPass(pipeline);
+  window->Render();
+  FX_CHECK(vtkFXTest::MatchesBaseline(window, argc, argv, 0.15), input << " " << view);
+  return EXIT_SUCCESS;
+}
