@@ -25,6 +25,7 @@
 #include "vtkActor.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
 #include "vtkSequencePass.h"
 
 namespace
@@ -60,12 +61,12 @@ void PixelRay(vtkMatrix4x4* inverse, double ndcX, double ndcY, double origin[3],
   }
 }
 
-int RunCase(const Case& c)
+int RunCase(vtkRenderWindow* window, const Case& c)
 {
   const int width = 160, height = 120;
   const double radius = c.Scale;
   const double center[3] = { c.Offset, c.Offset, c.Offset };
-  auto window = vtkFXTest::MakeWindow(width, height);
+  window->GetRenderers()->RemoveAllItems();
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
 
@@ -233,9 +234,11 @@ int TestGBufferGeometry(int, char*[])
     { "plane far from origin 1e6", false, 1.0, 1e6, 0.0, true },
     { "parallel plane far from origin 1e6", true, 1.0, 1e6, 0.0, true },
   };
+  // One window for all cases: each window is an X connection.
+  auto window = vtkFXTest::MakeWindow(160, 120);
   for (const Case& c : cases)
   {
-    if (RunCase(c) != EXIT_SUCCESS)
+    if (RunCase(window, c) != EXIT_SUCCESS)
     {
       return EXIT_FAILURE;
     }

@@ -7,15 +7,19 @@
 #include "vtkFXTestUtilities.h"
 
 #include "vtkCamera.h"
+#include "vtkRendererCollection.h"
 #include "vtkRenderer.h"
 
 #include <limits>
 
 namespace
 {
-double RenderAndCompare(const std::string& input, bool parallel, std::string& error)
+// One window serves every scene: a new X connection per scene can exhaust
+// a virtual X server's clients.
+double RenderAndCompare(
+  vtkRenderWindow* window, const std::string& input, bool parallel, std::string& error)
 {
-  auto window = vtkFXTest::MakeWindow(400, 300);
+  window->GetRenderers()->RemoveAllItems();
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
   if (!vtkFXScenes::Populate(renderer, input, vtkFXScenes::Options(), error))
@@ -53,6 +57,7 @@ int TestPipelineMatchesVTK(int argc, char* argv[])
   (void)argc;
   (void)argv;
 
+  auto window = vtkFXTest::MakeWindow(400, 300);
   int failures = 0;
   double worst = std::numeric_limits<double>::infinity();
   for (const auto& input : inputs)
@@ -60,7 +65,7 @@ int TestPipelineMatchesVTK(int argc, char* argv[])
     for (bool parallel : { false, true })
     {
       std::string error;
-      const double psnr = RenderAndCompare(input, parallel, error);
+      const double psnr = RenderAndCompare(window, input, parallel, error);
       std::cout << input << (parallel ? " (parallel)" : " (perspective)") << ": PSNR " << psnr
                 << " dB" << (error.empty() ? "" : " error: " + error) << std::endl;
       worst = std::min(worst, psnr);

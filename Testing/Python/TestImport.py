@@ -1,0 +1,20 @@
+"""'import vtkfx' works with Debian's python3 and python3-vtk9, and the
+wrapped passes are VTK render passes that Python can configure."""
+import sys
+
+import vtkfx
+from vtkmodules.vtkRenderingCore import vtkRenderPass
+from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLRenderPass
+
+pipeline = vtkfx.vtkFXPipelinePass()
+assert isinstance(pipeline, vtkRenderPass), type(pipeline).__mro__
+gbuffer = pipeline.GetGBufferPass()
+assert isinstance(gbuffer, vtkOpenGLRenderPass)
+assert isinstance(pipeline.GetCompositePass(), vtkOpenGLRenderPass)
+assert vtkfx.vtkFXGBufferPass.GetChannelName(vtkfx.vtkFXGBufferPass.LinearDepth) == "depth"
+assert vtkfx.vtkFXGBufferPass.GetChannelFromName("albedo") == vtkfx.vtkFXGBufferPass.Albedo
+pipeline.SetDebugChannel(9)  # clamped by vtkSetClampMacro
+assert pipeline.GetDebugChannel() == 5, pipeline.GetDebugChannel()
+gbuffer.SetRequiredChannels(0)
+assert gbuffer.GetRequiredChannels() == 0
+print("vtkfx imported from", vtkfx.__file__, "with", sys.executable)
