@@ -1,0 +1,199 @@
+// vtkfx-bench: error against run time, in one process, for vtkFX's passes
+// next to VTK's own rendering.
+//
+//   vtkfx-bench pipeline [INPUT ...] [--size WxH] [--frames N] --out DIR
+//
+// "pipeline": the vtkFX pipeline with no effect against VTK's forward render
+// of the same scene (the exact result it must reproduce). Two windows hold
+// identical copies of the scene, one with each renderer, and frames are
+// interleaved so that both see the same machine load. Writes
+// DIR/pipeline.csv (scene, method, setting, ms, rmse, psnr) with the median
+// frame time over N frames, and prints the time ratio per scene.
+#include "vtkFXPipelinePass.h"
+#include "vtkFXScenes.h"
+
+#include "vtkNew.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkTimerLog.h"
+#include "vtksys/SystemTools.hxx"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct Options
+{
+  std::string Effect;
+  std::vector<std::string> Inputs;
+  int Width = 1280;
+  int Height = 720;
+  int Frames = 15;
+  std::string Out;
+};
+
+double Median(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n == 0 ? -1.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
+}
+
+double RMSE(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
+{
+  double sum = 0.0;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
+  {
+    const double d = (static_cast<double>(a[i]) - b[i]) / 255.0;
+    sum += d * d;
+  }
+  return a.empty() ? 0.0 : std::sqrt(sum / a.size());
+}
+
+double TimedRender(vtkRenderWindow* window, vtkTimerLog* timer)
+{
+  timer->StartTimer();
+  window->Render();
+  window->WaitForCompletion();
+  timer->StopTimer();
+  return 1000.0 * timer->GetElapsedTime();
+}
+
+struct Setup
+{
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkSmartPointer<vtkRenderer> Renderer;
+};
+
+bool MakeSetup(const std::string& input, const Options& o, Setup& setup, std::string& error)
+{
+  setup.Window = vtkSmartPointer<vtkRenderWindow>::New();
+  setup.Window->SetOffScreenRendering(1);
+  setup.Window->SetMultiSamples(0);
+  setup.Window->SetSize(o.Width, o.Height);
+  setup.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  setup.Window->AddRenderer(setup.Renderer);
+  return vtkFXScenes::Populate(setup.Renderer, input, vtkFXScenes::Options(), error);
+}
+
+int BenchPipeline(const Options& o)
+{
+  const std::string csvPath = o.Out + "/pipeline.csv";
+  std::ofstream csv(csvPath.c_str());
+  if (!csv)
+  {
+    std::cerr << "vtkfx-bench: cannot write " << csvPath << "\n";
+    return 1;
+  }
+  csv << "scene,method,setting,ms,rmse,psnr\n";
+  vtkNew<vtkTimerLog> timer;
+  std::vector<std::string> summary;
+  for (size_t s = 0; s < o.Inputs.size(); ++s)
+  {
+    const std::string& input = o.Inputs[s];
+    Setup forward, deferred;
+    std::string error;
+    if (!MakeSetup(input, o, forward, error) || !MakeSetup(input, o, deferred, error))
+    {
+      std::cerr << "vtkfx-bench: " << error << "\n";
+      return 1;
+    }
+    vtkNew<vtkFXPipelinePass> pipeline;
+    deferred.Renderer->SetPass(pipeline);
+    // Warm up: shader compilation and allocation are not part of a frame.
+    forward.Window->Render();
+    deferred.Window->Render();
+    std::vector<double> vtkMs, fxMs;
+    for (int f = 0; f < o.Frames; ++f)
+    {
+      std::cerr << "\r[" << s + 1 << "/" << o.Inputs.size() << "] " << input << ": frame "
+                << f + 1 << "/" << o.Frames << std::flush;
+      vtkMs.push_back(TimedRender(forward.Window, timer));
+      fxMs.push_back(TimedRender(deferred.Window, timer));
+    }
+    std::cerr << "\n";
+    const auto reference = vtkFXScenes::Capture(forward.Window);
+    const auto image = vtkFXScenes::Capture(deferred.Window);
+    const double psnr = vtkFXScenes::PSNR(reference, image);
+    const double vtk = Median(vtkMs), fx = Median(fxMs);
+    csv << input << ",vtk-forward,default," << vtk << ",0,inf\n";
+    csv << input << ",vtkfx-pipeline,effects=none," << fx << "," << RMSE(reference, image) << ","
+        << psnr << "\n";
+    std::ostringstream line;
+    line << std::fixed << std::setprecision(2) << input << ": VTK " << vtk << " ms, vtkFX " << fx
+         << " ms, ratio " << fx / vtk << ", PSNR " << psnr << " dB, G-buffer "
+         << pipeline->GetGBufferBytesPerPixel() << " B/px";
+    summary.push_back(line.str());
+    std::cout << line.str() << std::endl;
+  }
+  std::cout << "wrote " << csvPath << " (" << o.Width << "x" << o.Height << ", median of "
+            << o.Frames << " interleaved frames)\n";
+  return 0;
+}
+
+void Usage(std::ostream& os)
+{
+  os << "usage: vtkfx-bench pipeline [INPUT ...] [--size WxH] [--frames N] --out DIR\n"
+        "Without INPUT, runs the built-in scene list and the bunny and fandisk meshes.\n";
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Options o;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if (a == "--out" && i + 1 < argc)
+      o.Out = argv[++i];
+    else if (a == "--frames" && i + 1 < argc)
+      o.Frames = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--size" && i + 1 < argc)
+    {
+      char x = 0;
+      std::istringstream in(argv[++i]);
+      if (!(in >> o.Width >> x >> o.Height) || x != 'x' || o.Width < 1 || o.Height < 1)
+      {
+        std::cerr << "vtkfx-bench: bad --size\n";
+        return 2;
+      }
+    }
+    else if (a == "--help" || a == "-h")
+    {
+      Usage(std::cout);
+      return 0;
+    }
+    else if (!a.empty() && a[0] == '-')
+    {
+      std::cerr << "vtkfx-bench: unknown option '" << a << "'\n";
+      Usage(std::cerr);
+      return 2;
+    }
+    else if (o.Effect.empty())
+      o.Effect = a;
+    else
+      o.Inputs.push_back(a);
+  }
+  if (o.Effect != "pipeline" || o.Out.empty())
+  {
+    std::cerr << "vtkfx-bench: " << (o.Out.empty() ? "--out DIR is required" : "unknown benchmark '" + o.Effect + "'") << "\n";
+    Usage(std::cerr);
+    return 2;
+  }
+  if (o.Inputs.empty())
+  {
+    o.Inputs = vtkFXScenes::BuiltInSceneNames();
+    o.Inputs.push_back(vtkFXScenes::DataDirectory() + "/stanford-bunny.obj");
+    o.Inputs.push_back(vtkFXScenes::DataDirectory() + "/fandisk.obj");
+  }
+  vtksys::SystemTools::MakeDirectory(o.Out);
+  return BenchPipeline(o);
+}
