@@ -1,6 +1,7 @@
 #include "vtkFXPipelinePass.h"
 
 #include "vtkFXCompositePass.h"
+#include "vtkFXEffectPass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXSelectionPass.h"
 #include "vtkFXTimedSequencePass.h"
@@ -23,6 +24,8 @@
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumetricPass.h"
+
+#include <algorithm>
 
 vtkStandardNewMacro(vtkFXPipelinePass);
 
@@ -189,10 +192,39 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const SceneInfo& scene, vtkWindow*
     composite->SetUseAmbient(scene.AnyAmbient);
     composite->SetUseSpecular(scene.AnySpecular);
     composite->SetUseEmission(false);
-    this->GBufferPass->SetRequiredChannels(
-      composite->GetRequiredChannels(scene.LightingComplexity));
+    unsigned int channels = composite->GetRequiredChannels(scene.LightingComplexity);
+    for (EffectSlot& slot : this->Effects)
+    {
+      const bool active =
+        slot.Effect->GetEnabled() && slot.Effect->HasWork(scene.OpaqueProps, scene.TranslucentProps);
+      if (slot.Active && !active)
+      {
+        slot.Effect->ReleaseGraphicsResources(window);
+      }
+      slot.Active = active;
+      if (active)
+      {
+        channels |= slot.Effect->GetRequiredChannels();
+        slot.Effect->SetGBuffer(this->GBufferPass);
+      }
+    }
+    this->GBufferPass->SetRequiredChannels(channels);
     this->Sequence->AddPass("gbuffer", this->GBufferPass);
+    this->ScheduleEffects(vtkFXEffectPass::AfterGBuffer);
     this->Sequence->AddPass("composite", composite);
+    this->ScheduleEffects(vtkFXEffectPass::AfterComposite);
+  }
+  else
+  {
+    // Effects read the G-buffer: without opaque props none of them runs.
+    for (EffectSlot& slot : this->Effects)
+    {
+      if (slot.Active)
+      {
+        slot.Effect->ReleaseGraphicsResources(window);
+      }
+      slot.Active = false;
+    }
   }
   if (scene.TranslucentProps > 0)
   {
@@ -208,6 +240,71 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const SceneInfo& scene, vtkWindow*
   }
 }
 
+void vtkFXPipelinePass::ScheduleEffects(int stage)
+{
+  for (const EffectSlot& slot : this->Effects)
+  {
+    if (slot.Active && slot.Effect->GetStage() == stage)
+    {
+      this->Sequence->AddPass(slot.Name.c_str(), slot.Effect);
+    }
+  }
+}
+
+void vtkFXPipelinePass::AddEffect(const char* name, vtkFXEffectPass* effect)
+{
+  if (!name || !*name || !effect)
+  {
+    vtkErrorMacro("AddEffect needs a name and an effect.");
+    return;
+  }
+  for (EffectSlot& slot : this->Effects)
+  {
+    if (slot.Name == name)
+    {
+      if (slot.Active && this->LastWindow && slot.Effect != effect)
+      {
+        slot.Effect->ReleaseGraphicsResources(this->LastWindow);
+      }
+      slot.Effect = effect;
+      slot.Active = false;
+      return;
+    }
+  }
+  this->Effects.push_back({ name, effect, false });
+}
+
+void vtkFXPipelinePass::RemoveEffect(const char* name)
+{
+  for (EffectSlot& slot : this->Effects)
+  {
+    if (name && slot.Name == name && slot.Active && this->LastWindow)
+    {
+      slot.Effect->ReleaseGraphicsResources(this->LastWindow);
+    }
+  }
+  this->Effects.erase(std::remove_if(this->Effects.begin(), this->Effects.end(),
+                        [name](const EffectSlot& slot) { return name && slot.Name == name; }),
+    this->Effects.end());
+}
+
+vtkFXEffectPass* vtkFXPipelinePass::GetEffect(const char* name)
+{
+  for (const EffectSlot& slot : this->Effects)
+  {
+    if (name && slot.Name == name)
+    {
+      return slot.Effect;
+    }
+  }
+  return nullptr;
+}
+
+int vtkFXPipelinePass::GetNumberOfEffects() const
+{
+  return static_cast<int>(this->Effects.size());
+}
+
 void vtkFXPipelinePass::ScheduleSelectionFrame()
 {
   // What VTK's forward renderer does while a hardware selector renders:
@@ -219,6 +316,7 @@ void vtkFXPipelinePass::ScheduleSelectionFrame()
 
 void vtkFXPipelinePass::Render(const vtkRenderState* s)
 {
+  this->LastWindow = s->GetRenderer()->GetRenderWindow();
   if (s->GetRenderer()->GetSelector())
   {
     this->ScheduleSelectionFrame();
@@ -272,6 +370,11 @@ void vtkFXPipelinePass::ReleaseGraphicsResources(vtkWindow* w)
   this->TranslucentPass->ReleaseGraphicsResources(w);
   this->VolumetricPass->ReleaseGraphicsResources(w);
   this->OverlayPass->ReleaseGraphicsResources(w);
+  for (EffectSlot& slot : this->Effects)
+  {
+    slot.Effect->ReleaseGraphicsResources(w);
+    slot.Active = false;
+  }
 }
 
 void vtkFXPipelinePass::PrintSelf(ostream& os, vtkIndent indent)

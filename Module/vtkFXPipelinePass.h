@@ -21,7 +21,8 @@
  * Per-pass GPU times (vtkOpenGLRenderTimer, results a frame or more late)
  * and the list of passes that ran are exposed for benchmarks and tests.
  *
- * Effects of later issues plug in here as slots; with none enabled the image
+ * Effects (vtkFXEffectPass subclasses) plug in by name with AddEffect and
+ * run at their stage when enabled and given work; with none the image
  * matches VTK's own forward render (PSNR >= 40 dB on the test scenes, apart
  * from multisample anti-aliasing, which the G-buffer does not do: render
  * windows should use SetMultiSamples(0)).
@@ -32,12 +33,14 @@
 #include "vtkFXModule.h"
 #include "vtkRenderPass.h"
 #include "vtkSmartPointer.h"
+#include "vtkWeakPointer.h"
 
 #include <string>
 #include <vector>
 
 class vtkCameraPass;
 class vtkFXCompositePass;
+class vtkFXEffectPass;
 class vtkFXGBufferPass;
 class vtkFXTimedSequencePass;
 class vtkLightsPass;
@@ -105,6 +108,20 @@ public:
    */
   unsigned int GetGBufferChannels() const;
 
+  ///@{
+  /**
+   * Effect slots. An effect runs at its stage (vtkFXEffectPass::Stage), in
+   * the order added, under `name` (its name in timings and in the passes that
+   * ran), when it is enabled and the scene gives it work; the G-buffer then
+   * also holds the channels it reads. Adding a name again replaces the
+   * effect of that name.
+   */
+  void AddEffect(const char* name, vtkFXEffectPass* effect);
+  void RemoveEffect(const char* name);
+  vtkFXEffectPass* GetEffect(const char* name);
+  int GetNumberOfEffects() const;
+  ///@}
+
   /**
    * The passes it composes, for applications that tune them.
    */
@@ -122,7 +139,17 @@ protected:
   void ScheduleDeferredFrame(const SceneInfo& scene, vtkWindow* window);
   void ScheduleSelectionFrame();
 
+  struct EffectSlot
+  {
+    std::string Name;
+    vtkSmartPointer<vtkFXEffectPass> Effect;
+    bool Active = false; // ran in the last deferred frame
+  };
+  void ScheduleEffects(int stage);
+
   int DebugChannel = -1;
+  std::vector<EffectSlot> Effects;
+  vtkWeakPointer<vtkWindow> LastWindow; // to release effects removed between frames
   SceneInfo LastScene;
   std::vector<std::string> LastPasses;
   bool GBufferRan = false;

@@ -2,13 +2,17 @@
 // - G-buffer channels follow the materials and lights of the scene,
 // - no opaque prop: no G-buffer pass and no G-buffer memory,
 // - translucent, volume and overlay steps run only when such props exist,
+// - an effect slot adds the channels its effect reads while it is active,
 // and it reports the passes that ran and the G-buffer's bytes per pixel.
+#include "vtkFXEffectPass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
 
 #include "vtkActor.h"
+#include "vtkObjectFactory.h"
+#include "vtkTextureObject.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
@@ -17,6 +21,24 @@
 namespace
 {
 using GB = vtkFXGBufferPass;
+
+// An effect that reads linear depth and records what it saw.
+class DepthProbe : public vtkFXEffectPass
+{
+public:
+  static DepthProbe* New();
+  vtkTypeMacro(DepthProbe, vtkFXEffectPass);
+  unsigned int GetRequiredChannels() override { return GB::ChannelBit(GB::LinearDepth); }
+  void Render(const vtkRenderState*) override
+  {
+    ++this->Runs;
+    vtkTextureObject* depth = this->GBuffer ? this->GBuffer->GetChannelTexture(GB::LinearDepth) : nullptr;
+    this->SawDepth = depth && depth->GetWidth() > 0;
+  }
+  int Runs = 0;
+  bool SawDepth = false;
+};
+vtkStandardNewMacro(DepthProbe);
 
 std::string Passes(vtkFXPipelinePass* pipeline)
 {
@@ -63,13 +85,33 @@ int TestPipelineScheduling(int, char*[])
   FX_CHECK(pipeline->GetGBufferBytesPerPixel() == 12, "RG16F + RGBA8 + depth32F");
   FX_CHECK(!pipeline->GetGBufferPass()->GetChannelTexture(GB::Specular), "no specular texture");
 
+  // An effect slot: the channel it reads exists only while it runs.
+  vtkNew<DepthProbe> probe;
+  pipeline->AddEffect("probe", probe);
+  window->Render();
+  FX_CHECK(Passes(pipeline) == "lights,gbuffer,probe,composite", Passes(pipeline));
+  FX_CHECK(probe->Runs == 1 && probe->SawDepth, "the effect ran and saw the depth channel");
+  FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "normal,depth,albedo",
+    Channels(pipeline->GetGBufferChannels()));
+  probe->SetStage(vtkFXEffectPass::AfterComposite);
+  window->Render();
+  FX_CHECK(Passes(pipeline) == "lights,gbuffer,composite,probe", Passes(pipeline));
+  probe->EnabledOff();
+  window->Render();
+  FX_CHECK(Passes(pipeline) == "lights,gbuffer,composite", Passes(pipeline));
+  FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "normal,albedo",
+    "a disabled effect's channel is released: " << Channels(pipeline->GetGBufferChannels()));
+  FX_CHECK(probe->Runs == 2, "a disabled effect does not run");
+  probe->EnabledOn();
+  probe->SetStage(vtkFXEffectPass::AfterGBuffer);
+
   // Specular and ambient terms, translucent and 2D props: all of it runs.
   renderer->RemoveAllViewProps();
   vtkFXScenes::Populate(renderer, "scene:mixed", vtkFXScenes::Options(), error);
   window->Render();
   std::cout << "mixed: " << Passes(pipeline) << " [" << Channels(pipeline->GetGBufferChannels())
             << "] " << pipeline->GetGBufferBytesPerPixel() << " B/px" << std::endl;
-  FX_CHECK(Passes(pipeline) == "lights,gbuffer,composite,translucent,overlay", Passes(pipeline));
+  FX_CHECK(Passes(pipeline) == "lights,gbuffer,probe,composite,translucent,overlay", Passes(pipeline));
   FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "normal,depth,albedo,specular,ambient",
     Channels(pipeline->GetGBufferChannels()));
   FX_CHECK(pipeline->GetGBufferBytesPerPixel() == 24, "five 4-byte channels + depth");
@@ -96,7 +138,9 @@ int TestPipelineScheduling(int, char*[])
   window->Render();
   std::cout << "translucent only: " << Passes(pipeline) << ", "
             << pipeline->GetGBufferBytesPerPixel() << " B/px" << std::endl;
+  const int runs = probe->Runs;
   FX_CHECK(Passes(pipeline) == "lights,translucent", Passes(pipeline));
+  FX_CHECK(probe->Runs == runs, "effects that read the G-buffer do not run without it");
   FX_CHECK(pipeline->GetGBufferBytesPerPixel() == 0, "no G-buffer");
   FX_CHECK(!pipeline->GetGBufferPass()->GetDepthTexture() &&
       !pipeline->GetGBufferPass()->GetChannelTexture(GB::Albedo),
@@ -106,5 +150,7 @@ int TestPipelineScheduling(int, char*[])
   renderer->RemoveAllViewProps();
   window->Render();
   FX_CHECK(Passes(pipeline) == "lights", Passes(pipeline));
+  pipeline->RemoveEffect("probe");
+  FX_CHECK(pipeline->GetNumberOfEffects() == 0, "effect removed");
   return EXIT_SUCCESS;
 }
