@@ -1,6 +1,7 @@
 #include "vtkFXCompositePass.h"
 
 #include "vtkFXCompositeFS.h"
+#include "vtkFXLightingFS.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXNormalCoding.h"
 #include "vtkFXRenderUtilities.h"
@@ -25,91 +26,29 @@ namespace
 {
 using GB = vtkFXGBufferPass;
 
-// VTK 9.1's Phong lighting (vtkOpenGLPolyDataMapper::ReplaceShaderLight,
-// non-PBR branch), same formulas and names, with the forward shader's output
-// "gl_FragData[0] = vec4(ambientColor + diffuse + specular, opacity)" turned
-// into "color = ambientColor + diffuse + specular".
-// Without a specular channel every highlight term is zero: the highlight
-// code is left out, and with it the need for positions at complexity 2.
-std::string LightingGLSL(int complexity, int lightCount, bool specular)
+// Calls of vtkFXLightingFS.glsl's functions, one per light that is on, with
+// VTK's per-light uniform names (vtkOpenGLRenderer::GetLightingUniforms).
+std::string LightCallsGLSL(int complexity, int lightCount)
 {
   std::ostringstream s;
-  switch (complexity)
+  for (int i = 0; i < lightCount && complexity > 0; ++i)
   {
-    case 1: // headlight: light and view along +z
-      s << "float df = max(0.0,normalVCVSOutput.z);\n"
-           "    vec3 diffuse = df * diffuseColor * lightColor0;\n"
-           "    vec3 specular = vec3(0.0);\n";
-      if (specular)
-      {
-        s << "    float sf = pow(df, specularPower);\n"
-             "    specular = sf * specularColor * lightColor0;\n";
-      }
-      s << "    color = ambientColor + diffuse + specular;\n";
-      break;
-    case 2: // directional lights (light kit)
-      s << "vec3 diffuse = vec3(0,0,0);\n"
-           "    vec3 specular = vec3(0,0,0);\n"
-           "    float df;\n"
-           "    float sf;\n";
-      for (int i = 0; i < lightCount; ++i)
-      {
-        s << "    df = max(0.0, dot(normalVCVSOutput, -lightDirectionVC" << i << "));\n"
-          << "    diffuse += (df * lightColor" << i << ");\n";
-        if (specular)
-        {
-          s << "    sf = sign(df)*pow(max(0.0, dot( reflect(lightDirectionVC" << i
-            << ", normalVCVSOutput), normalize(-vertexVC.xyz))), specularPower);\n"
-            << "    specular += (sf * lightColor" << i << ");\n";
-        }
-      }
-      s << "    diffuse = diffuse * diffuseColor;\n"
-           "    specular = specular * specularColor;\n"
-           "    color = ambientColor + diffuse + specular;\n";
-      break;
-    case 3: // positional lights with attenuation and cones
-      s << "vec3 diffuse = vec3(0,0,0);\n"
-           "    vec3 specular = vec3(0,0,0);\n"
-           "    vec3 vertLightDirectionVC;\n"
-           "    float attenuation;\n"
-           "    float df;\n"
-           "    float sf;\n";
-      for (int i = 0; i < lightCount; ++i)
-      {
-        s << "    attenuation = 1.0;\n"
-          << "    if (lightPositional" << i << " == 0) {\n"
-          << "      vertLightDirectionVC = lightDirectionVC" << i << "; }\n"
-          << "    else {\n"
-          << "      vertLightDirectionVC = vertexVC.xyz - lightPositionVC" << i << ";\n"
-          << "      float distanceVC = length(vertLightDirectionVC);\n"
-          << "      vertLightDirectionVC = normalize(vertLightDirectionVC);\n"
-          << "      attenuation = 1.0 /\n"
-          << "        (lightAttenuation" << i << ".x\n"
-          << "         + lightAttenuation" << i << ".y * distanceVC\n"
-          << "         + lightAttenuation" << i << ".z * distanceVC * distanceVC);\n"
-          << "      if (lightConeAngle" << i << " < 90.0) {\n"
-          << "        float coneDot = dot(vertLightDirectionVC, lightDirectionVC" << i << ");\n"
-          << "        if (coneDot >= cos(radians(lightConeAngle" << i << "))) {\n"
-          << "          attenuation = attenuation * pow(coneDot, lightExponent" << i << "); }\n"
-          << "        else {\n"
-          << "          attenuation = 0.0; }\n"
-          << "        }\n"
-          << "      }\n"
-          << "    df = max(0.0,attenuation*dot(normalVCVSOutput, -vertLightDirectionVC));\n"
-          << "    diffuse += (df * lightColor" << i << ");\n";
-        if (specular)
-        {
-          s << "    sf = sign(df)*attenuation*pow( max(0.0, dot( reflect(vertLightDirectionVC, "
-               "normalVCVSOutput), normalize(-vertexVC.xyz))), specularPower);\n"
-            << "    specular += (sf * lightColor" << i << ");\n";
-        }
-      }
-      s << "    diffuse = diffuse * diffuseColor;\n"
-           "    specular = specular * specularColor;\n"
-           "    color = ambientColor + diffuse + specular;\n";
-      break;
-    default: // no light on: VTK shows ambient + diffuse, stored as unlit colour
-      break;
+    switch (complexity)
+    {
+      case 1:
+        s << "fxHeadlight(n, lightColor0, specularPower, diffuseLight, specularLight);\n";
+        return s.str(); // a headlight is the only light by definition
+      case 2:
+        s << "    fxDirectionalLight(n, view, lightDirectionVC" << i << ", lightColor" << i
+          << ", specularPower, diffuseLight, specularLight);\n";
+        break;
+      default:
+        s << "    fxPositionalLight(n, position, view, lightPositional" << i
+          << ", lightDirectionVC" << i << ", lightPositionVC" << i << ", lightAttenuation" << i
+          << ", lightConeAngle" << i << ", lightExponent" << i << ", lightColor" << i
+          << ", specularPower, diffuseLight, specularLight);\n";
+        break;
+    }
   }
   return s.str();
 }
@@ -155,10 +94,6 @@ unsigned int vtkFXCompositePass::GetRequiredChannels(int lightingComplexity) con
       mask |= GB::ChannelBit(GB::LinearDepth);
     }
   }
-  if (this->UseEmission)
-  {
-    mask |= GB::ChannelBit(GB::Emission);
-  }
   if (this->DebugChannel >= 0)
   {
     mask |= GB::ChannelBit(this->DebugChannel);
@@ -166,43 +101,49 @@ unsigned int vtkFXCompositePass::GetRequiredChannels(int lightingComplexity) con
   return mask;
 }
 
-std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren) const
+std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
 {
   vtkFXGBufferPass* gb = this->GBuffer;
-  int complexity = ren->GetLightingComplexity();
   const int lightCount = ren->GetLightingCount();
-  if (lightCount == 0 || !gb->GetChannelTexture(GB::Normal))
-  {
-    complexity = 0;
-  }
+  const int complexity =
+    (lightCount == 0 || !gb->GetChannelTexture(GB::Normal)) ? 0 : ren->GetLightingComplexity();
   const bool hasDepth = gb->GetChannelTexture(GB::LinearDepth) != nullptr;
-  const bool hasSpecular = gb->GetChannelTexture(GB::Specular) != nullptr;
-  // Complexity >= 2 reads positions only for highlights and positional lights.
-  const bool needsPosition = hasDepth && (complexity == 3 || (complexity == 2 && hasSpecular));
+  bool hasSpecular = gb->GetChannelTexture(GB::Specular) != nullptr && complexity > 0;
+  if (complexity >= 2 && hasSpecular && !hasDepth)
+  {
+    if (!this->WarnedMissingDepth)
+    {
+      vtkWarningMacro("Specular highlights need the G-buffer's linear depth "
+                      "(see GetRequiredChannels); they are left out.");
+      this->WarnedMissingDepth = true;
+    }
+    hasSpecular = false;
+  }
   if (complexity == 3 && !hasDepth)
   {
-    vtkWarningMacro("Positional lights need the G-buffer's linear depth; lighting falls back "
-                    "to the headlight model.");
-    complexity = 1;
+    return std::string(); // Render() reports it
   }
+  const bool needsPosition = complexity == 3 || (complexity == 2 && hasSpecular);
 
   std::ostringstream defines;
   defines << "//VTK::System::Dec\n"
           << "#define FX_LIGHTING " << complexity << "\n"
           << "#define FX_HAS_SPECULAR " << (hasSpecular ? 1 : 0) << "\n"
           << "#define FX_HAS_AMBIENT " << (gb->GetChannelTexture(GB::Ambient) ? 1 : 0) << "\n"
-          << "#define FX_HAS_EMISSION " << (gb->GetChannelTexture(GB::Emission) ? 1 : 0) << "\n"
           << "#define FX_NEEDS_POSITION " << (needsPosition ? 1 : 0) << "\n"
+          << "#define FX_CHANNEL_NORMAL " << GB::Normal << "\n"
+          << "#define FX_CHANNEL_DEPTH " << GB::LinearDepth << "\n"
           << "#define FX_DEBUG_CHANNEL "
           << (gb->GetChannelTexture(this->DebugChannel) ? this->DebugChannel : -1) << "\n";
 
   std::string fs = vtkFXCompositeFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str(), false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXLighting::Dec", vtkFXLightingFS, false);
   vtkShaderProgram::Substitute(
     fs, "//VTK::Light::Dec", complexity > 0 ? ren->GetLightingUniforms() : "", false);
   vtkShaderProgram::Substitute(
-    fs, "//VTK::FXLight::Impl", LightingGLSL(complexity, lightCount, hasSpecular), false);
+    fs, "//VTK::FXLight::Impl", LightCallsGLSL(complexity, lightCount), false);
   return fs;
 }
 
@@ -219,8 +160,19 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   vtkOpenGLState* state = window->GetState();
 
-  vtkShaderProgram* program = vtkFXRenderUtilities::ReadyQuad(
-    this->Quad, this->QuadSource, window, this->BuildFragmentShader(ren));
+  const std::string fragmentShader = this->BuildFragmentShader(ren);
+  if (fragmentShader.empty())
+  {
+    if (!this->WarnedMissingDepth)
+    {
+      vtkErrorMacro("Positional lights need the G-buffer's linear depth channel "
+                    "(see GetRequiredChannels); the opaque props are not drawn.");
+      this->WarnedMissingDepth = true;
+    }
+    return;
+  }
+  vtkShaderProgram* program =
+    vtkFXRenderUtilities::ReadyQuad(this->Quad, this->QuadSource, window, fragmentShader);
   if (!program)
   {
     return;
@@ -232,7 +184,6 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
   BindSampler(program, "fxNormal", gb->GetChannelTexture(GB::Normal));
   BindSampler(program, "fxSpecular", gb->GetChannelTexture(GB::Specular));
   BindSampler(program, "fxAmbient", gb->GetChannelTexture(GB::Ambient));
-  BindSampler(program, "fxEmission", gb->GetChannelTexture(GB::Emission));
   BindSampler(program, "fxLinearDepth", gb->GetChannelTexture(GB::LinearDepth));
   BindSampler(program, "fxDebugTexture", gb->GetChannelTexture(this->DebugChannel));
   vtkFXRenderUtilities::SetFrustumRayUniforms(program, ren);
@@ -290,5 +241,4 @@ void vtkFXCompositePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DebugChannel: " << this->DebugChannel << "\n";
   os << indent << "UseSpecular: " << this->UseSpecular << "\n";
   os << indent << "UseAmbient: " << this->UseAmbient << "\n";
-  os << indent << "UseEmission: " << this->UseEmission << "\n";
 }

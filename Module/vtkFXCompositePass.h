@@ -2,8 +2,8 @@
  * @class   vtkFXCompositePass
  * @brief   Deferred lighting of a vtkFXGBufferPass with VTK's own light model.
  *
- * Reads: the G-buffer's hardware depth, linear depth, normal, albedo and,
- * when allocated, specular, ambient and emission channels; the renderer's
+ * Reads: the G-buffer's hardware depth, albedo and, when allocated, normal,
+ * linear depth, specular and ambient channels; the renderer's
  * lights through vtkOpenGLRenderer::UpdateLightingUniforms, so headlights,
  * camera and scene lights, positional lights with cone and attenuation,
  * vtkLightKit and two-sided lighting give the same numbers as VTK's forward
@@ -26,7 +26,7 @@
 #define vtkFXCompositePass_h
 
 #include "vtkFXModule.h"
-#include "vtkOpenGLRenderPass.h"
+#include "vtkRenderPass.h"
 
 #include <memory>
 #include <string>
@@ -35,11 +35,11 @@ class vtkFXGBufferPass;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderer;
 
-class VTKFX_EXPORT vtkFXCompositePass : public vtkOpenGLRenderPass
+class VTKFX_EXPORT vtkFXCompositePass : public vtkRenderPass
 {
 public:
   static vtkFXCompositePass* New();
-  vtkTypeMacro(vtkFXCompositePass, vtkOpenGLRenderPass);
+  vtkTypeMacro(vtkFXCompositePass, vtkRenderPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
@@ -53,21 +53,19 @@ public:
    * or -1 (default) for the lit image. Normals show as 0.5 + 0.5 n, linear
    * depth as a grey ramp from the nearest to the farthest covered pixel.
    */
-  vtkSetClampMacro(DebugChannel, int, -1, 5);
+  vtkSetClampMacro(DebugChannel, int, -1, 5); // -1 .. NumberOfChannels - 1
   vtkGetMacro(DebugChannel, int);
 
   ///@{
   /**
-   * Material channels the scene needs, decided by whoever knows the scene
+   * Material terms the scene has, decided by whoever knows the scene
    * (vtkFXPipelinePass does it per frame). Off means every fragment has zero
-   * of that term, so the channel need not exist. All on by default.
+   * of that term, so its channel need not exist. Both on by default.
    */
   vtkSetMacro(UseSpecular, bool);
   vtkGetMacro(UseSpecular, bool);
   vtkSetMacro(UseAmbient, bool);
   vtkGetMacro(UseAmbient, bool);
-  vtkSetMacro(UseEmission, bool);
-  vtkGetMacro(UseEmission, bool);
   ///@}
 
   /**
@@ -84,14 +82,14 @@ protected:
   vtkFXCompositePass();
   ~vtkFXCompositePass() override;
 
-  std::string BuildFragmentShader(vtkOpenGLRenderer* ren) const;
+  std::string BuildFragmentShader(vtkOpenGLRenderer* ren);
 
   vtkFXGBufferPass* GBuffer = nullptr;
   int DebugChannel = -1;
   bool UseSpecular = true;
   bool UseAmbient = true;
-  bool UseEmission = true;
 
+  bool WarnedMissingDepth = false; // report a misconfigured G-buffer once
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   std::string QuadSource;
 

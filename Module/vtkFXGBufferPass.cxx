@@ -5,6 +5,8 @@
 #include "vtkFXRenderUtilities.h"
 
 #include "vtkActor.h"
+#include "vtkAssemblyNode.h"
+#include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -19,17 +21,24 @@
 #include "vtk_glew.h"
 
 #include <sstream>
+#include <vector>
 
 vtkStandardNewMacro(vtkFXGBufferPass);
 
 namespace
 {
-const char* const ChannelNames[vtkFXGBufferPass::NumberOfChannels] = { "normal", "depth", "albedo",
+const char* const ChannelNames[vtkFXGBufferPass::NumberOfChannels] = { "albedo", "normal", "depth",
   "specular", "ambient", "emission" };
 
-const int ChannelFormats[vtkFXGBufferPass::NumberOfChannels] = { vtkFXRenderUtilities::RG16F,
-  vtkFXRenderUtilities::R32F, vtkFXRenderUtilities::RGBA8, vtkFXRenderUtilities::RGBA8,
+const int ChannelFormats[vtkFXGBufferPass::NumberOfChannels] = { vtkFXRenderUtilities::RGBA8,
+  vtkFXRenderUtilities::RG16F, vtkFXRenderUtilities::R32F, vtkFXRenderUtilities::RGBA8,
   vtkFXRenderUtilities::RGBA8, vtkFXRenderUtilities::RGBA8 };
+
+// Value of each channel where no surface is: the normal channel holds the
+// "unlit" sentinel of vtkFXNormalCoding.glsl, so that pixels no hooked
+// mapper wrote are never lit with a made-up normal.
+const float ClearValues[vtkFXGBufferPass::NumberOfChannels][4] = { { 0, 0, 0, 0 }, { 4, 4, 0, 1 },
+  { 0, 0, 0, 0 }, { 0, 0, 0, 0 }, { 0, 0, 0, 0 }, { 0, 0, 0, 0 } };
 
 // Tags planted in the mapper's fragment shader before its own substitutions.
 const char* const TexBeginTag = "//VTK::FXGBuffer::TexBegin";
@@ -121,7 +130,27 @@ int vtkFXGBufferPass::GetBytesPerPixel() const
   return bytes;
 }
 
-bool vtkFXGBufferPass::UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height)
+bool vtkFXGBufferPass::CanCapture(vtkProp* prop)
+{
+  if (vtkActor::SafeDownCast(prop))
+  {
+    return true;
+  }
+  if (!prop || !prop->IsA("vtkAssembly"))
+  {
+    return false;
+  }
+  // An assembly is captured when every part is an actor.
+  bool all = true;
+  prop->InitPathTraversal();
+  while (vtkAssemblyPath* path = prop->GetNextPath())
+  {
+    all = all && vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp()) != nullptr;
+  }
+  return all;
+}
+
+void vtkFXGBufferPass::UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height)
 {
   const unsigned int wanted = this->RequiredChannels & ((1u << NumberOfChannels) - 1);
   if (wanted != this->AllocatedChannels)
@@ -163,8 +192,23 @@ bool vtkFXGBufferPass::UpdateTargets(vtkOpenGLRenderWindow* window, int width, i
     }
   }
   this->FrameBuffer->AddDepthAttachment(this->DepthTexture);
+  this->NumberOfTargets = attachment;
   this->FrameBuffer->ActivateDrawBuffers(attachment);
-  return true;
+}
+
+void vtkFXGBufferPass::ClearTargets()
+{
+  // glClearBuffer leaves the clear colour and depth of the GL state alone.
+  GLint target = 0;
+  for (int c = 0; c < NumberOfChannels; ++c)
+  {
+    if (this->AllocatedChannels & ChannelBit(c))
+    {
+      glClearBufferfv(GL_COLOR, target++, ClearValues[c]);
+    }
+  }
+  const GLfloat far = 1.0f;
+  glClearBufferfv(GL_DEPTH, 0, &far);
 }
 
 void vtkFXGBufferPass::Render(const vtkRenderState* s)
@@ -195,8 +239,8 @@ void vtkFXGBufferPass::Render(const vtkRenderState* s)
     vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
     vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
     vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
-    vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
     vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+    vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
 
     state->vtkglViewport(0, 0, width, height);
     state->vtkglScissor(0, 0, width, height);
@@ -205,9 +249,8 @@ void vtkFXGBufferPass::Render(const vtkRenderState* s)
     state->vtkglDisable(GL_BLEND);
     state->vtkglEnable(GL_DEPTH_TEST);
     state->vtkglDepthMask(GL_TRUE);
-    state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-    state->vtkglClearDepth(1.0);
-    state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    this->ClearTargets();
 
     // Third and fourth rows of the projection, for unlit primitives' depth.
     vtkMatrix4x4* projection = ren->GetActiveCamera()->GetProjectionTransformMatrix(
@@ -219,8 +262,17 @@ void vtkFXGBufferPass::Render(const vtkRenderState* s)
 
     if (this->DelegatePass)
     {
+      // Only props whose shaders we can extend; the pipeline draws the rest.
+      std::vector<vtkProp*> props;
+      for (int i = 0; i < s->GetPropArrayCount(); ++i)
+      {
+        if (CanCapture(s->GetPropArray()[i]))
+        {
+          props.push_back(s->GetPropArray()[i]);
+        }
+      }
       vtkRenderState delegateState(ren);
-      delegateState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+      delegateState.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
       delegateState.SetFrameBuffer(this->FrameBuffer);
       this->PreRender(&delegateState);
       this->DelegatePass->Render(&delegateState);
@@ -248,7 +300,7 @@ bool vtkFXGBufferPass::PreReplaceShaderValues(std::string&, std::string&,
   return true;
 }
 
-std::string vtkFXGBufferPass::ChannelWritesGLSL(bool lit, bool hasVertexVC) const
+std::string vtkFXGBufferPass::ChannelWritesGLSL(bool lit, const char* linearDepth) const
 {
   std::ostringstream code;
   int target = 0;
@@ -266,10 +318,7 @@ std::string vtkFXGBufferPass::ChannelWritesGLSL(bool lit, bool hasVertexVC) cons
                      : "vec4(fxUnlitNormal, 0.0, 1.0);\n");
         break;
       case LinearDepth:
-        // Unlit primitives have no view-space position: invert the
-        // projection of the window depth instead.
-        code << (hasVertexVC ? "vec4(-vertexVC.z, 0.0, 0.0, 1.0);\n"
-                             : "vec4(fxLinearDepthFromWindow(gl_FragCoord.z), 0.0, 0.0, 1.0);\n");
+        code << "vec4(" << linearDepth << ", 0.0, 0.0, 1.0);\n";
         break;
       case Albedo:
         code << (lit ? "vec4(fxDiffuse, fxColor.a);\n" : "fxColor;\n");
@@ -303,9 +352,14 @@ bool vtkFXGBufferPass::PostReplaceShaderValues(std::string&, std::string&,
   const bool pbr = actor && actor->GetProperty()->GetInterpolation() == VTK_PBR;
   const bool lit = !pbr && Contains(fragmentShader, "vec3 diffuse = ") &&
     Contains(fragmentShader, "normalVCVSOutput");
-  const bool hasVertexVC = Contains(fragmentShader, "vec4 vertexVC");
-  const bool hasSpecular = Contains(fragmentShader, "specularColor") && Contains(fragmentShader, "specularPower");
-  const bool hasAmbient = Contains(fragmentShader, "ambientColor");
+  // Linear depth: -z of the view-space position where the shader has one.
+  // Points drawn as spheres and lines drawn as tubes move the surface off
+  // that position (to gl_FragDepth), and unlit primitives have none: both
+  // invert the projection of the window depth instead.
+  const bool impostor = Contains(fragmentShader, "ZCalcR");
+  const char* linearDepth = impostor ? "fxLinearDepthFromWindow(gl_FragDepth)"
+    : Contains(fragmentShader, "vec4 vertexVC =") ? "-vertexVC.z"
+                                                   : "fxLinearDepthFromWindow(gl_FragCoord.z)";
 
   // VTK 9.1 applies actor textures after lighting: lit RGBA * texel, with no
   // clamp, so texel x (ambient + diffuse + specular) distributes exactly over
@@ -322,15 +376,16 @@ bool vtkFXGBufferPass::PostReplaceShaderValues(std::string&, std::string&,
   }
   if (lit)
   {
-    impl << "  vec3 fxDiffuse = diffuseColor * fxTexture.rgb;\n";
-    impl << "  vec3 fxAmbient = " << (hasAmbient ? "ambientColor * fxTexture.rgb" : "vec3(0.0)") << ";\n";
-    impl << "  vec3 fxSpecular = " << (hasSpecular ? "specularColor * fxTexture.rgb" : "vec3(0.0)") << ";\n";
-    impl << "  float fxSpecularPower = " << (hasSpecular ? "clamp(specularPower, 0.0, 128.0)" : "1.0") << ";\n";
+    // A lit shader always declares these (ReplaceShaderColor, 9.1).
+    impl << "  vec3 fxDiffuse = diffuseColor * fxTexture.rgb;\n"
+            "  vec3 fxAmbient = ambientColor * fxTexture.rgb;\n"
+            "  vec3 fxSpecular = specularColor * fxTexture.rgb;\n"
+            "  float fxSpecularPower = clamp(specularPower, 0.0, 128.0);\n";
   }
   // The mapper discards fully transparent fragments after this point; do it
   // here too, before our writes replace gl_FragData[0].
   impl << "  if (fxColor.a <= 0.0) { discard; }\n";
-  impl << this->ChannelWritesGLSL(lit, hasVertexVC);
+  impl << this->ChannelWritesGLSL(lit, linearDepth);
   // Remove the markers; keep the mapper's code where it was.
   vtkShaderProgram::Substitute(fragmentShader, TexBeginTag, "", false);
   vtkShaderProgram::Substitute(fragmentShader, TexEndTag, "", false);
@@ -345,14 +400,9 @@ bool vtkFXGBufferPass::SetShaderParameters(
   {
     program->SetUniform4f("fxProjectionZ", this->ProjectionZ);
   }
-  unsigned int targets = 0;
-  for (int c = 0; c < NumberOfChannels; ++c)
-  {
-    targets += (this->AllocatedChannels & ChannelBit(c)) ? 1 : 0;
-  }
   if (this->FrameBuffer)
   {
-    this->FrameBuffer->ActivateDrawBuffers(targets);
+    this->FrameBuffer->ActivateDrawBuffers(this->NumberOfTargets);
   }
   return true;
 }
@@ -387,6 +437,7 @@ void vtkFXGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
     this->FrameBuffer = nullptr;
   }
   this->AllocatedChannels = 0;
+  this->NumberOfTargets = 0;
 }
 
 void vtkFXGBufferPass::PrintSelf(ostream& os, vtkIndent indent)

@@ -9,14 +9,14 @@
  *
  * Writes, each as its own texture at the renderer's viewport size, and only
  * for the channels some consumer requested (SetRequiredChannels):
- * - Normal       RG16F   view-space normal, octahedral encoding (Cigolle et
- *                        al. 2014, "A Survey of Efficient Representations for
- *                        Independent Unit Vectors"); unlit fragments carry a
- *                        sentinel outside [-1,1].
- * - LinearDepth  R32F    -z in view coordinates (world units), 0 = no surface.
  * - Albedo       RGBA8   VTK's diffuse colour after scalar colouring and
  *                        texturing; alpha = opacity. Unlit fragments store
  *                        their final colour here.
+ * - Normal       RG16F   view-space normal, octahedral encoding (Cigolle et
+ *                        al. 2014, "A Survey of Efficient Representations for
+ *                        Independent Unit Vectors"); unlit fragments and
+ *                        uncovered pixels carry a sentinel outside [-1,1].
+ * - LinearDepth  R32F    -z in view coordinates (world units), 0 = no surface.
  * - Specular     RGBA8   specular colour x intensity; alpha = power / 128.
  * - Ambient      RGBA8   VTK's ambient term (ambient intensity x colour).
  * - Emission     RGBA8   light-independent colour: the colour of unlit
@@ -26,6 +26,12 @@
  * Cost: one geometry pass with up to 6 render targets; memory is
  * GetBytesPerPixel() x viewport pixels. The mappers rebuild their shaders
  * only when the set of channels changes.
+ *
+ * Only props whose mappers call the render-pass hooks can be captured
+ * (CanCapture: vtkActor and assemblies of actors); the pass leaves the others
+ * out, and vtkFXPipelinePass draws them forward after the composite.
+ * Limitation: the G-buffer does not blend, so soft (Gaussian) point splats
+ * drawn in the opaque pass lose their blended fringe.
  *
  * Used alone (as the delegate of a vtkCameraPass) it only fills its
  * textures; vtkFXPipelinePass pairs it with vtkFXCompositePass.
@@ -40,6 +46,7 @@
 #include <string>
 
 class vtkOpenGLFramebufferObject;
+class vtkProp;
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
 
@@ -50,11 +57,17 @@ public:
   vtkTypeMacro(vtkFXGBufferPass, vtkOpenGLRenderPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * Channels, in attachment order. Albedo comes first: the mapper's own
+   * "discard if alpha <= 0" test, which runs after the channel writes, then
+   * reads the opacity, and a draw that bypasses the hooks leaves its colour
+   * there.
+   */
   enum Channel
   {
-    Normal = 0,
+    Albedo = 0,
+    Normal,
     LinearDepth,
-    Albedo,
     Specular,
     Ambient,
     Emission,
@@ -107,6 +120,13 @@ public:
   static int GetChannelFormat(int channel);
 
   /**
+   * Whether the G-buffer can capture a prop: its mappers must call VTK's
+   * render-pass shader hooks (the vtkOpenGLPolyDataMapper family, reached
+   * through vtkActor). Image slices, 3D text and other props cannot.
+   */
+  static bool CanCapture(vtkProp* prop);
+
+  /**
    * The pass that renders the props (usually a vtkOpaquePass).
    */
   vtkGetObjectMacro(DelegatePass, vtkRenderPass);
@@ -133,12 +153,14 @@ protected:
   vtkFXGBufferPass();
   ~vtkFXGBufferPass() override;
 
-  bool UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height);
-  std::string ChannelWritesGLSL(bool lit, bool hasVertexVC) const;
+  void UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height);
+  void ClearTargets();
+  std::string ChannelWritesGLSL(bool lit, const char* linearDepth) const;
 
   vtkRenderPass* DelegatePass = nullptr;
   unsigned int RequiredChannels;
   unsigned int AllocatedChannels = 0;
+  unsigned int NumberOfTargets = 0;
   vtkSmartPointer<vtkTextureObject> Textures[NumberOfChannels];
   vtkSmartPointer<vtkTextureObject> DepthTexture;
   vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;

@@ -2,6 +2,7 @@
 
 #include "vtkFXCompositePass.h"
 #include "vtkFXEffectPass.h"
+#include "vtkFXForwardOpaquePass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXSelectionPass.h"
 #include "vtkFXTimedSequencePass.h"
@@ -16,6 +17,7 @@
 #include "vtkLightsPass.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpaquePass.h"
+#include "vtkOpenGLRenderer.h"
 #include "vtkOverlayPass.h"
 #include "vtkProp.h"
 #include "vtkProperty.h"
@@ -31,14 +33,46 @@ vtkStandardNewMacro(vtkFXPipelinePass);
 
 namespace
 {
-double MaxComponent(const double c[3])
+// Records which optional material terms an actor's shaders will produce.
+// Besides Ambient > 0, VTK 9.1 puts colour into the ambient term for
+// surface edges (the edge colour, unscaled) and for vertices (intensity
+// forced to 1), and a backface property has its own terms.
+void AddMaterialTerms(vtkActor* actor, vtkFXPipelinePass::SceneInfo& scene)
 {
-  return std::max(c[0], std::max(c[1], c[2]));
+  for (vtkProperty* p : { actor->GetProperty(), actor->GetBackfaceProperty() })
+  {
+    if (!p || !p->GetLighting())
+    {
+      continue;
+    }
+    if (p->GetAmbient() > 0.0 || p->GetEdgeVisibility() || p->GetVertexVisibility())
+    {
+      scene.AnyAmbient = true;
+    }
+    if (p->GetSpecular() > 0.0)
+    {
+      scene.AnySpecular = true;
+    }
+  }
 }
 
-// Adds what one leaf prop contributes to the scene summary.
-void AnalyzeLeaf(vtkProp* prop, vtkFXPipelinePass::SceneInfo& scene)
+// Adds one prop of the renderer to the scene summary.
+void AnalyzeProp(vtkProp* prop, vtkFXPipelinePass::SceneInfo& scene)
 {
+  if (prop->IsA("vtkActor2D"))
+  {
+    // 2D props draw in the overlay step, but VTK calls their opaque step
+    // too (text actors build their texture there): that is forward work,
+    // not a reason to run the G-buffer.
+    ++scene.OverlayProps;
+    scene.ForwardOpaqueProps += prop->HasOpaqueGeometry() ? 1 : 0;
+    return;
+  }
+  if (!prop->IsA("vtkActor") && !prop->IsA("vtkVolume") && !prop->IsA("vtkAssembly"))
+  {
+    // Widgets' representations and other props may draw overlays too.
+    ++scene.OverlayProps;
+  }
   if (prop->IsA("vtkVolume"))
   {
     ++scene.VolumeProps;
@@ -52,63 +86,21 @@ void AnalyzeLeaf(vtkProp* prop, vtkFXPipelinePass::SceneInfo& scene)
   {
     return;
   }
+  if (!vtkFXGBufferPass::CanCapture(prop))
+  {
+    ++scene.ForwardOpaqueProps;
+    return;
+  }
   ++scene.OpaqueProps;
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  if (!actor)
+  // Assemblies hold their actors as paths; a plain actor is its own path.
+  prop->InitPathTraversal();
+  while (vtkAssemblyPath* path = prop->GetNextPath())
   {
-    // A prop whose material we cannot read: assume it uses every term.
-    scene.AnyAmbient = scene.AnySpecular = scene.AnyUnlit = true;
-    return;
-  }
-  vtkProperty* p = actor->GetProperty();
-  if (!p->GetLighting())
-  {
-    scene.AnyUnlit = true;
-    return;
-  }
-  if (p->GetAmbient() > 0.0 && MaxComponent(p->GetAmbientColor()) > 0.0)
-  {
-    scene.AnyAmbient = true;
-  }
-  if (p->GetSpecular() > 0.0 && MaxComponent(p->GetSpecularColor()) > 0.0)
-  {
-    scene.AnySpecular = true;
-  }
-}
-
-// The light complexity vtkOpenGLRenderer::UpdateLights will compute in the
-// lights pass of this frame (VTK 9.1 rules: any light that is not a headlight
-// or a second light on makes it 2, any positional light, even one switched
-// off, makes it 3; with no light on, one is created automatically).
-int PredictLightingComplexity(vtkRenderer* ren, int& lightsOn)
-{
-  int complexity = 0;
-  lightsOn = 0;
-  vtkLightCollection* lights = ren->GetLights();
-  vtkCollectionSimpleIterator it;
-  lights->InitTraversal(it);
-  while (vtkLight* light = lights->GetNextLight(it))
-  {
-    if (light->GetSwitch() > 0)
+    if (vtkActor* actor = vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp()))
     {
-      ++lightsOn;
-      complexity = std::max(complexity, 1);
-    }
-    if (complexity == 1 && (lightsOn > 1 || light->GetLightType() != VTK_LIGHT_TYPE_HEADLIGHT))
-    {
-      complexity = 2;
-    }
-    if (complexity < 3 && light->GetPositional())
-    {
-      complexity = 3;
+      AddMaterialTerms(actor, scene);
     }
   }
-  if (lightsOn == 0 && ren->GetAutomaticLightCreation())
-  {
-    lightsOn = 1;
-    complexity = 1; // VTK creates a headlight
-  }
-  return complexity;
 }
 }
 
@@ -123,6 +115,7 @@ vtkFXPipelinePass::vtkFXPipelinePass()
   this->TranslucentPass = vtkSmartPointer<vtkFXTranslucentPass>::New();
   this->VolumetricPass = vtkSmartPointer<vtkVolumetricPass>::New();
   this->OverlayPass = vtkSmartPointer<vtkOverlayPass>::New();
+  this->ForwardOpaquePass = vtkSmartPointer<vtkFXForwardOpaquePass>::New();
   this->SelectionPass = vtkSmartPointer<vtkFXSelectionPass>::New();
 
   this->GBufferPass->SetDelegatePass(this->OpaquePass);
@@ -147,37 +140,18 @@ vtkFXPipelinePass::SceneInfo vtkFXPipelinePass::AnalyzeScene(const vtkRenderStat
   SceneInfo scene;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
-    vtkProp* prop = s->GetPropArray()[i];
-    if (!prop->IsA("vtkActor") && !prop->IsA("vtkVolume") && !prop->IsA("vtkAssembly"))
-    {
-      // 2D actors, widgets' representations and other props may draw overlays.
-      ++scene.OverlayProps;
-    }
-    // Assemblies hold their parts as paths; analyse each leaf.
-    prop->InitPathTraversal();
-    bool anyLeaf = false;
-    while (vtkAssemblyPath* path = prop->GetNextPath())
-    {
-      vtkProp* leaf = path->GetLastNode()->GetViewProp();
-      if (leaf && leaf != prop)
-      {
-        anyLeaf = true;
-        AnalyzeLeaf(leaf, scene);
-      }
-    }
-    if (!anyLeaf)
-    {
-      AnalyzeLeaf(prop, scene);
-    }
+    AnalyzeProp(s->GetPropArray()[i], scene);
   }
-  scene.LightingComplexity = PredictLightingComplexity(s->GetRenderer(), scene.LightsOn);
+  // The lights pass ran before the analysis: read what VTK decided.
+  vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  scene.LightsOn = ren ? ren->GetLightingCount() : 0;
+  scene.LightingComplexity = scene.LightsOn > 0 ? ren->GetLightingComplexity() : 0;
   return scene;
 }
 
 void vtkFXPipelinePass::ScheduleDeferredFrame(const SceneInfo& scene, vtkWindow* window)
 {
   this->Sequence->ClearPasses();
-  this->Sequence->AddPass("lights", this->LightsPass);
   const bool deferred = scene.OpaqueProps > 0;
   if (this->GBufferRan && !deferred)
   {
@@ -191,7 +165,6 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const SceneInfo& scene, vtkWindow*
     composite->SetDebugChannel(this->DebugChannel);
     composite->SetUseAmbient(scene.AnyAmbient);
     composite->SetUseSpecular(scene.AnySpecular);
-    composite->SetUseEmission(false);
     unsigned int channels = composite->GetRequiredChannels(scene.LightingComplexity);
     for (EffectSlot& slot : this->Effects)
     {
@@ -225,6 +198,10 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const SceneInfo& scene, vtkWindow*
       }
       slot.Active = false;
     }
+  }
+  if (scene.ForwardOpaqueProps > 0)
+  {
+    this->Sequence->AddPass("forward-opaque", this->ForwardOpaquePass);
   }
   if (scene.TranslucentProps > 0)
   {
@@ -317,18 +294,27 @@ void vtkFXPipelinePass::ScheduleSelectionFrame()
 void vtkFXPipelinePass::Render(const vtkRenderState* s)
 {
   this->LastWindow = s->GetRenderer()->GetRenderWindow();
-  if (s->GetRenderer()->GetSelector())
+  const bool selecting = s->GetRenderer()->GetSelector() != nullptr;
+  if (selecting)
   {
     this->ScheduleSelectionFrame();
   }
   else
   {
+    // VTK decides the lighting complexity while it updates the lights; the
+    // channels the composite reads depend on it, so this comes first.
+    this->LightsPass->Render(s);
     this->LastScene = this->AnalyzeScene(s);
     this->ScheduleDeferredFrame(this->LastScene, s->GetRenderer()->GetRenderWindow());
   }
   this->CameraPass->Render(s);
   this->NumberOfRenderedProps = this->CameraPass->GetNumberOfRenderedProps();
   this->LastPasses = this->Sequence->GetPassesThatRan();
+  if (!selecting)
+  {
+    // The lights were updated before the camera pass, outside the sequence.
+    this->LastPasses.insert(this->LastPasses.begin(), "lights");
+  }
 }
 
 int vtkFXPipelinePass::GetNumberOfPassesThatRan() const

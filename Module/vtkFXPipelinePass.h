@@ -6,10 +6,11 @@
  * 1. analyses the scene on the CPU (opaque, translucent, volume and overlay
  *    props; whether any lit prop has ambient or specular terms; how many
  *    lights are on),
- * 2. sets up the camera (an internal vtkCameraPass) and VTK's lights,
+ * 2. updates VTK's lights and sets up the camera (an internal vtkCameraPass),
  * 3. renders the opaque props into a vtkFXGBufferPass that allocates only
  *    the channels the active passes read,
  * 4. lights them with vtkFXCompositePass (VTK's light model, deferred),
+ *    then draws forward the opaque props the G-buffer cannot capture,
  * 5. lets VTK draw translucent props (its own depth peeling / OIT choice),
  *    volumes and 2D overlays, depth-tested against the G-buffer depth.
  * Passes with no work in the current scene are left out (no opaque props:
@@ -20,6 +21,10 @@
  * Reads the renderer's props and lights; writes the renderer's framebuffer.
  * Per-pass GPU times (vtkOpenGLRenderTimer, results a frame or more late)
  * and the list of passes that ran are exposed for benchmarks and tests.
+ *
+ * Cost: the scene analysis is one loop over the props per frame; the rest
+ * is the cost of the passes it schedules, and nothing for those it leaves
+ * out.
  *
  * Effects (vtkFXEffectPass subclasses) plug in by name with AddEffect and
  * run at their stage when enabled and given work; with none the image
@@ -61,15 +66,15 @@ public:
    */
   struct SceneInfo
   {
-    int OpaqueProps = 0;
+    int OpaqueProps = 0;        // captured by the G-buffer
+    int ForwardOpaqueProps = 0; // opaque, drawn forward (vtkFXForwardOpaquePass)
     int TranslucentProps = 0;
     int VolumeProps = 0;
     int OverlayProps = 0;
-    bool AnyAmbient = false;  // a lit opaque prop with a non-zero ambient term
-    bool AnySpecular = false; // a lit opaque prop with a non-zero specular term
-    bool AnyUnlit = false;    // an opaque prop with lighting off
+    bool AnyAmbient = false;  // a lit captured prop with an ambient term
+    bool AnySpecular = false; // a lit captured prop with a specular term
     int LightsOn = 0;
-    int LightingComplexity = 0; // as vtkOpenGLRenderer will compute it
+    int LightingComplexity = 0; // vtkOpenGLRenderer's, 0 when no light is on
   };
   const SceneInfo& GetLastSceneInfo() const { return this->LastScene; }
 
@@ -83,7 +88,8 @@ public:
   ///@{
   /**
    * Names of the passes that ran in the last frame, in order: "lights",
-   * "gbuffer", "composite", "translucent", "volumes", "overlay"; or
+   * "gbuffer", effects by name, "composite", "forward-opaque",
+   * "translucent", "volumes", "overlay"; or
    * "selection-lights", "selection" while a hardware selector renders.
    */
   int GetNumberOfPassesThatRan() const;
@@ -164,6 +170,7 @@ protected:
   vtkSmartPointer<vtkVolumetricPass> VolumetricPass;
   vtkSmartPointer<vtkOverlayPass> OverlayPass;
   vtkSmartPointer<vtkRenderPass> SelectionPass;
+  vtkSmartPointer<vtkRenderPass> ForwardOpaquePass;
 
 private:
   vtkFXPipelinePass(const vtkFXPipelinePass&) = delete;

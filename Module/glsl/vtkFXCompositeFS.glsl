@@ -1,16 +1,15 @@
 //VTK::System::Dec
 // vtkFXCompositeFS: deferred lighting of the vtkFX G-buffer.
 //
-// The lighting is VTK 9.1's own Phong model as vtkOpenGLPolyDataMapper::
-// ReplaceShaderLight writes it for light complexity 1 (headlight), 2
-// (directional) and 3 (positional, cone and attenuation), generated per light
-// by vtkFXCompositePass with the same variable names, and fed by the same uniforms (vtkOpenGLRenderer::
-// UpdateLightingUniforms). Positions come from linear depth and the affine
-// per-pixel frustum ray (the "frustum corner ray" of seed 001), so no
-// world-space position is ever stored.
+// The lighting is VTK 9.1's own Phong model (vtkFXLightingFS.glsl), called
+// once per light by code vtkFXCompositePass generates, and fed by the same
+// uniforms as VTK's mappers (vtkOpenGLRenderer::UpdateLightingUniforms).
+// Positions come from linear depth and the affine per-pixel frustum ray (the
+// "frustum corner ray" of seed 001), so no world-space position is stored.
 //
 // Defines set by vtkFXCompositePass: FX_LIGHTING (0..3), FX_HAS_SPECULAR,
-// FX_HAS_AMBIENT, FX_HAS_EMISSION, FX_NEEDS_POSITION, FX_DEBUG_CHANNEL.
+// FX_HAS_AMBIENT, FX_NEEDS_POSITION, FX_DEBUG_CHANNEL, and the channel
+// numbers FX_CHANNEL_NORMAL, FX_CHANNEL_DEPTH (vtkFXGBufferPass::Channel).
 
 in vec2 texCoord;
 
@@ -24,9 +23,6 @@ uniform sampler2D fxSpecular;
 #endif
 #if FX_HAS_AMBIENT
 uniform sampler2D fxAmbient;
-#endif
-#if FX_HAS_EMISSION
-uniform sampler2D fxEmission;
 #endif
 #if FX_NEEDS_POSITION
 uniform sampler2D fxLinearDepth;
@@ -42,6 +38,8 @@ uniform vec2 fxDepthRange;
 
 //VTK::Light::Dec
 
+//VTK::FXLighting::Dec
+
 //VTK::Output::Dec
 
 #if FX_NEEDS_POSITION
@@ -55,21 +53,22 @@ vec3 fxViewPosition(float depth)
 }
 #endif
 
-// Finite, non-negative colours only: NaN or infinite input never reaches
-// the screen.
+// Finite, non-negative colours only: NaN becomes 0, and +inf (VTK writes it
+// for a light with zero attenuation coefficients) the largest half float, as
+// an 8-bit framebuffer would clamp it to white.
 vec3 fxSanitize(vec3 c)
 {
-  bvec3 bad = bvec3(isnan(c.x) || isinf(c.x), isnan(c.y) || isinf(c.y), isnan(c.z) || isinf(c.z));
-  return clamp(mix(c, vec3(0.0), bad), 0.0, 65504.0);
+  c = mix(c, vec3(0.0), bvec3(isnan(c.x), isnan(c.y), isnan(c.z)));
+  return clamp(c, 0.0, 65504.0);
 }
 
 #if FX_DEBUG_CHANNEL >= 0
 vec3 fxDebugColor()
 {
   vec4 v = texture(fxDebugTexture, texCoord);
-#if FX_DEBUG_CHANNEL == 0
+#if FX_DEBUG_CHANNEL == FX_CHANNEL_NORMAL
   return fxIsUnlit(v.xy) ? vec3(0.0) : 0.5 + 0.5 * fxDecodeNormal(v.xy);
-#elif FX_DEBUG_CHANNEL == 1
+#elif FX_DEBUG_CHANNEL == FX_CHANNEL_DEPTH
   return vec3(clamp((v.r - fxDepthRange.x) / max(fxDepthRange.y - fxDepthRange.x, 1e-30), 0.0, 1.0));
 #else
   return v.rgb;
@@ -95,9 +94,8 @@ void main()
   vec2 encodedNormal = texture(fxNormal, texCoord).rg;
   if (!fxIsUnlit(encodedNormal))
   {
-    vec3 normalVCVSOutput = fxDecodeNormal(encodedNormal);
+    vec3 n = fxDecodeNormal(encodedNormal);
     vec3 diffuseColor = albedo.rgb;
-    float opacity = albedo.a;
 #if FX_HAS_AMBIENT
     vec3 ambientColor = texture(fxAmbient, texCoord).rgb;
 #else
@@ -112,12 +110,16 @@ void main()
     float specularPower = 1.0;
 #endif
 #if FX_NEEDS_POSITION
-    vec4 vertexVC = vec4(fxViewPosition(texture(fxLinearDepth, texCoord).r), 1.0);
+    vec3 position = fxViewPosition(texture(fxLinearDepth, texCoord).r);
+    vec3 view = normalize(-position);
+#else
+    vec3 position = vec3(0.0);
+    vec3 view = vec3(0.0, 0.0, 1.0);
 #endif
+    vec3 diffuseLight = vec3(0.0);
+    vec3 specularLight = vec3(0.0);
     //VTK::FXLight::Impl
-#if FX_HAS_EMISSION
-    color += texture(fxEmission, texCoord).rgb;
-#endif
+    color = ambientColor + diffuseLight * diffuseColor + specularLight * specularColor;
   }
 #endif
   gl_FragData[0] = vec4(fxSanitize(color), clamp(albedo.a, 0.0, 1.0));

@@ -17,6 +17,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
+#include "vtkTextActor.h"
 
 namespace
 {
@@ -80,7 +81,7 @@ int TestPipelineScheduling(int, char*[])
   std::cout << "fandisk: " << Passes(pipeline) << " [" << Channels(pipeline->GetGBufferChannels())
             << "] " << pipeline->GetGBufferBytesPerPixel() << " B/px" << std::endl;
   FX_CHECK(Passes(pipeline) == "lights,gbuffer,composite", Passes(pipeline));
-  FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "normal,albedo",
+  FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "albedo,normal",
     Channels(pipeline->GetGBufferChannels()));
   FX_CHECK(pipeline->GetGBufferBytesPerPixel() == 12, "RG16F + RGBA8 + depth32F");
   FX_CHECK(!pipeline->GetGBufferPass()->GetChannelTexture(GB::Specular), "no specular texture");
@@ -91,7 +92,7 @@ int TestPipelineScheduling(int, char*[])
   window->Render();
   FX_CHECK(Passes(pipeline) == "lights,gbuffer,probe,composite", Passes(pipeline));
   FX_CHECK(probe->Runs == 1 && probe->SawDepth, "the effect ran and saw the depth channel");
-  FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "normal,depth,albedo",
+  FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "albedo,normal,depth",
     Channels(pipeline->GetGBufferChannels()));
   probe->SetStage(vtkFXEffectPass::AfterComposite);
   window->Render();
@@ -99,7 +100,7 @@ int TestPipelineScheduling(int, char*[])
   probe->EnabledOff();
   window->Render();
   FX_CHECK(Passes(pipeline) == "lights,gbuffer,composite", Passes(pipeline));
-  FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "normal,albedo",
+  FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "albedo,normal",
     "a disabled effect's channel is released: " << Channels(pipeline->GetGBufferChannels()));
   FX_CHECK(probe->Runs == 2, "a disabled effect does not run");
   probe->EnabledOn();
@@ -111,8 +112,10 @@ int TestPipelineScheduling(int, char*[])
   window->Render();
   std::cout << "mixed: " << Passes(pipeline) << " [" << Channels(pipeline->GetGBufferChannels())
             << "] " << pipeline->GetGBufferBytesPerPixel() << " B/px" << std::endl;
-  FX_CHECK(Passes(pipeline) == "lights,gbuffer,probe,composite,translucent,overlay", Passes(pipeline));
-  FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "normal,depth,albedo,specular,ambient",
+  FX_CHECK(Passes(pipeline) ==
+      "lights,gbuffer,probe,composite,forward-opaque,translucent,overlay",
+    Passes(pipeline));
+  FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "albedo,normal,depth,specular,ambient",
     Channels(pipeline->GetGBufferChannels()));
   FX_CHECK(pipeline->GetGBufferBytesPerPixel() == 24, "five 4-byte channels + depth");
 
@@ -145,6 +148,23 @@ int TestPipelineScheduling(int, char*[])
   FX_CHECK(!pipeline->GetGBufferPass()->GetDepthTexture() &&
       !pipeline->GetGBufferPass()->GetChannelTexture(GB::Albedo),
     "G-buffer textures released");
+
+  // 2D props only: VTK's opaque step for them (text builds its texture
+  // there) and the overlay, but no G-buffer.
+  renderer->RemoveAllViewProps();
+  vtkNew<vtkTextActor> text;
+  text->SetInput("2D only");
+  renderer->AddViewProp(text);
+  window->Render();
+  FX_CHECK(Passes(pipeline) == "lights,forward-opaque,overlay", Passes(pipeline));
+  FX_CHECK(pipeline->GetGBufferBytesPerPixel() == 0, "no G-buffer for 2D props");
+
+  // A scalar bar next to a diffuse mesh does not add material channels.
+  vtkFXScenes::Populate(renderer, vtkFXScenes::DataDirectory() + "/fandisk.obj",
+    vtkFXScenes::Options(), error);
+  window->Render();
+  FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "albedo,normal,depth",
+    "2D props leave the channels alone: " << Channels(pipeline->GetGBufferChannels()));
 
   // An empty renderer: only the lights.
   renderer->RemoveAllViewProps();

@@ -10,7 +10,7 @@ pipeline = vtkfx.vtkFXPipelinePass()
 assert isinstance(pipeline, vtkRenderPass), type(pipeline).__mro__
 gbuffer = pipeline.GetGBufferPass()
 assert isinstance(gbuffer, vtkOpenGLRenderPass)
-assert isinstance(pipeline.GetCompositePass(), vtkOpenGLRenderPass)
+assert isinstance(pipeline.GetCompositePass(), vtkRenderPass)
 assert vtkfx.vtkFXGBufferPass.GetChannelName(vtkfx.vtkFXGBufferPass.LinearDepth) == "depth"
 assert vtkfx.vtkFXGBufferPass.GetChannelFromName("albedo") == vtkfx.vtkFXGBufferPass.Albedo
 pipeline.SetDebugChannel(9)  # clamped by vtkSetClampMacro

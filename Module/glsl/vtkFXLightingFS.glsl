@@ -1,0 +1,65 @@
+// VTK 9.1's Phong lighting, one function per light complexity, transcribed
+// from vtkOpenGLPolyDataMapper::ReplaceShaderLight (non-PBR branch). VTK's
+// forward shaders inline these statements once per light; vtkFXCompositePass
+// calls these functions once per light with the same uniforms
+// (lightColorN, lightDirectionVCN, lightPositionVCN, ...), accumulating the
+// light that reaches the surface; the caller multiplies by the material:
+//   colour = ambient + diffuseLight * diffuseColor + specularLight * specularColor
+// which is VTK's "ambientColor + diffuse + specular".
+
+// Complexity 1: one headlight; light and view both along +z.
+void fxHeadlight(vec3 n, vec3 lightColor, float specularPower,
+  inout vec3 diffuseLight, inout vec3 specularLight)
+{
+  float df = max(0.0, n.z);
+  diffuseLight += df * lightColor;
+#if FX_HAS_SPECULAR
+  float sf = pow(df, specularPower);
+  specularLight += sf * lightColor;
+#endif
+}
+
+// Complexity 2: a directional light (light kit, camera and scene lights).
+// `lightDirection` points from the light; `view` is normalize(-vertexVC).
+void fxDirectionalLight(vec3 n, vec3 view, vec3 lightDirection, vec3 lightColor,
+  float specularPower, inout vec3 diffuseLight, inout vec3 specularLight)
+{
+  float df = max(0.0, dot(n, -lightDirection));
+  diffuseLight += df * lightColor;
+#if FX_HAS_SPECULAR
+  float sf = sign(df) * pow(max(0.0, dot(reflect(lightDirection, n), view)), specularPower);
+  specularLight += sf * lightColor;
+#endif
+}
+
+// Complexity 3: directional or positional lights, with VTK's attenuation
+// 1 / (a.x + a.y d + a.z d^2) and, for cone angles below 90 degrees, a spot
+// cone with falloff pow(cos, exponent).
+void fxPositionalLight(vec3 n, vec3 position, vec3 view, int positional,
+  vec3 lightDirection, vec3 lightPosition, vec3 lightAttenuation, float coneAngle,
+  float exponent, vec3 lightColor, float specularPower,
+  inout vec3 diffuseLight, inout vec3 specularLight)
+{
+  float attenuation = 1.0;
+  vec3 toSurface = lightDirection;
+  if (positional != 0)
+  {
+    toSurface = position - lightPosition;
+    float distanceVC = length(toSurface);
+    toSurface = normalize(toSurface);
+    attenuation = 1.0 /
+      (lightAttenuation.x + lightAttenuation.y * distanceVC +
+        lightAttenuation.z * distanceVC * distanceVC);
+    if (coneAngle < 90.0)
+    {
+      float coneDot = dot(toSurface, lightDirection);
+      attenuation = coneDot >= cos(radians(coneAngle)) ? attenuation * pow(coneDot, exponent) : 0.0;
+    }
+  }
+  float df = max(0.0, attenuation * dot(n, -toSurface));
+  diffuseLight += df * lightColor;
+#if FX_HAS_SPECULAR
+  float sf = sign(df) * attenuation * pow(max(0.0, dot(reflect(toSurface, n), view)), specularPower);
+  specularLight += sf * lightColor;
+#endif
+}
