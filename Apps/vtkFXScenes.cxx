@@ -7,6 +7,7 @@
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkConeSource.h"
+#include "vtkCylinderSource.h"
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkRTAnalyticSource.h"
@@ -473,6 +474,46 @@ void SceneVolume(vtkRenderer* renderer)
   renderer->AddActor(MakeActor(Sphere(0.4, 1.0, 0.3, 0.6), 0.9, 0.9, 0.9));
 }
 
+void SceneEdges(vtkRenderer* renderer)
+{
+  // Everything VTK shades through paths other than plain surfaces: surface
+  // edges (colour in the ambient term), a lit wireframe, points drawn as
+  // spheres and lines drawn as tubes (impostors that write their own depth),
+  // and an open tube whose inside shows a backface property.
+  auto edged = MakeActor(Sphere(-1.2, 0.5, 0, 0.5, 16), 0.8, 0.8, 0.9);
+  edged->GetProperty()->EdgeVisibilityOn();
+  edged->GetProperty()->SetEdgeColor(0.9, 0.1, 0.1);
+  renderer->AddActor(edged);
+  auto wire = MakeActor(Sphere(0, 0.5, -0.8, 0.5, 20), 0.3, 0.9, 0.4);
+  wire->GetProperty()->SetRepresentationToWireframe();
+  renderer->AddActor(wire);
+  auto points = MakeActor(SpherePoints(40, 0.4, 0.5), 0.9, 0.6, 0.2);
+  points->SetPosition(0.0, 0.0, 0.8);
+  points->GetProperty()->SetRepresentationToPoints();
+  points->GetProperty()->RenderPointsAsSpheresOn();
+  points->GetProperty()->SetPointSize(9);
+  renderer->AddActor(points);
+  auto tubes = MakeActor(Sphere(1.2, 0.5, 0.6, 0.35, 10), 0.2, 0.5, 0.9);
+  tubes->GetProperty()->SetRepresentationToWireframe();
+  tubes->GetProperty()->RenderLinesAsTubesOn();
+  tubes->GetProperty()->SetLineWidth(4);
+  renderer->AddActor(tubes);
+  vtkNew<vtkCylinderSource> cylinder;
+  cylinder->SetCenter(1.1, 0.4, -0.6);
+  cylinder->SetRadius(0.35);
+  cylinder->SetHeight(0.8);
+  cylinder->SetResolution(32);
+  cylinder->CappingOff();
+  cylinder->Update();
+  auto open = MakeActor(cylinder->GetOutput(), 0.9, 0.9, 0.3);
+  vtkNew<vtkProperty> inside;
+  inside->SetColor(0.6, 0.2, 0.7);
+  inside->SetSpecular(0.4);
+  inside->SetSpecularPower(20);
+  open->SetBackfaceProperty(inside);
+  renderer->AddActor(open);
+}
+
 bool PopulateMolecule(vtkRenderer* renderer, const std::string& path, std::string& error)
 {
   vtkNew<vtkPDBReader> reader;
@@ -515,6 +556,8 @@ bool PopulateBuiltIn(vtkRenderer* renderer, const std::string& name, std::string
     SceneMixed(renderer);
   else if (name == "scene:volume")
     SceneVolume(renderer);
+  else if (name == "scene:edges")
+    SceneEdges(renderer);
   else if (name == "scene:molecule")
     return PopulateMolecule(renderer, vtkFXScenes::DataDirectory() + "/1crn.pdb", error);
   else
@@ -539,7 +582,8 @@ std::string vtkFXScenes::DataDirectory()
 std::vector<std::string> vtkFXScenes::BuiltInSceneNames()
 {
   return { "scene:spheres", "scene:corner", "scene:scalars", "scene:textured", "scene:glyphs",
-    "scene:composite", "scene:splats", "scene:lights", "scene:mixed", "scene:volume", "scene:molecule" };
+    "scene:composite", "scene:splats", "scene:lights", "scene:mixed", "scene:volume", "scene:edges",
+    "scene:molecule" };
 }
 
 bool vtkFXScenes::Populate(
@@ -608,22 +652,54 @@ std::vector<unsigned char> vtkFXScenes::Capture(vtkRenderWindow* window)
   return pixels;
 }
 
-double vtkFXScenes::PSNR(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
+double vtkFXScenes::PSNR(const std::vector<unsigned char>& a,
+  const std::vector<unsigned char>& b, const unsigned char* background)
 {
   if (a.size() != b.size() || a.empty())
   {
     return -1.0;
   }
+  auto isBackground = [background](const unsigned char* p) {
+    return background && std::abs(p[0] - background[0]) <= 1 &&
+      std::abs(p[1] - background[1]) <= 1 && std::abs(p[2] - background[2]) <= 1;
+  };
   double sum = 0.0;
-  for (size_t i = 0; i < a.size(); ++i)
+  size_t count = 0;
+  for (size_t i = 0; i + 2 < a.size(); i += 3)
   {
-    const double d = static_cast<double>(a[i]) - static_cast<double>(b[i]);
-    sum += d * d;
+    if (isBackground(&a[i]) && isBackground(&b[i]))
+    {
+      continue;
+    }
+    for (size_t c = 0; c < 3; ++c)
+    {
+      const double d = static_cast<double>(a[i + c]) - static_cast<double>(b[i + c]);
+      sum += d * d;
+    }
+    count += 3;
   }
-  const double mse = sum / static_cast<double>(a.size());
-  if (mse == 0.0)
+  if (count == 0 || sum == 0.0)
   {
     return std::numeric_limits<double>::infinity();
   }
-  return 10.0 * std::log10(255.0 * 255.0 / mse);
+  return 10.0 * std::log10(255.0 * 255.0 * count / sum);
+}
+
+int vtkFXScenes::MaxDifference(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
+{
+  int largest = 0;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
+  {
+    largest = std::max(largest, std::abs(static_cast<int>(a[i]) - static_cast<int>(b[i])));
+  }
+  return largest;
+}
+
+void vtkFXScenes::BackgroundBytes(vtkRenderer* renderer, unsigned char rgb[3])
+{
+  const double* bg = renderer->GetBackground();
+  for (int c = 0; c < 3; ++c)
+  {
+    rgb[c] = static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, std::max(0.0, bg[c]))));
+  }
 }

@@ -39,11 +39,24 @@ bool Populate(vtkRenderer* renderer, const std::string& input, const Options& op
   std::string& error);
 
 /**
- * Peak signal-to-noise ratio in dB between two RGB(A) 8-bit images of the
- * same size read from the window's front buffer, over the RGB channels.
- * Returns +inf for identical images, -1 if the sizes differ.
+ * Peak signal-to-noise ratio in dB between two RGB 8-bit images of the same
+ * size. With `background` (an RGB byte triple), pixels that show it (within
+ * 1) in both images are left out, so that the ratio measures the rendered
+ * data, not the empty screen around it. Returns +inf for identical images,
+ * -1 if the sizes differ.
  */
-double PSNR(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b);
+double PSNR(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b,
+  const unsigned char* background = nullptr);
+
+/**
+ * Largest difference of one channel between two RGB 8-bit images.
+ */
+int MaxDifference(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b);
+
+/**
+ * The renderer's background as the bytes an 8-bit framebuffer stores.
+ */
+void BackgroundBytes(vtkRenderer* renderer, unsigned char rgb[3]);
 
 /**
  * The window's current image as RGB bytes (bottom row first).

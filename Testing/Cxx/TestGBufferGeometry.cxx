@@ -1,7 +1,9 @@
 // Reads the G-buffer back and checks it against an analytic sphere (drawn by
 // VTK's ray-cast sphere imposter, so the surface is exact):
 // - linear depth equals -z_view of the ray/sphere hit within 1e-4 relative,
-// - normals decode to unit vectors within 2e-3 rad of the analytic normal,
+// - normals decode to unit vectors within 2e-3 rad of the analytic normal
+//   (16-bit octahedral coding: ~5e-4 per component), and unlit surfaces
+//   carry the unlit sentinel instead,
 // - background pixels have hardware depth 1 and linear depth 0,
 // under perspective and parallel projection, at scene scales 1e-6 and 1e6,
 // with near/far ratios down to 1e-6, and (for a plane) 1e6 units from the
@@ -21,6 +23,7 @@
 #include "vtkPlaneSource.h"
 #include "vtkPoints.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkPolyData.h"
 #include "vtkActor.h"
 #include "vtkRenderPassCollection.h"
@@ -38,6 +41,7 @@ struct Case
   double Offset;    // translation of the whole scene
   double NearRatio; // near/far clipping ratio (0: VTK's automatic range)
   bool Plane;       // a plane z = const instead of the sphere
+  bool Unlit;       // lighting off: no view-space position in VTK's shader
 };
 
 // Ray through the pixel centre in world coordinates (double precision).
@@ -93,6 +97,7 @@ int RunCase(vtkRenderWindow* window, const Case& c)
     vtkNew<vtkPolyDataMapper> planeMapper;
     planeMapper->SetInputConnection(plane->GetOutputPort());
     actor->SetMapper(planeMapper);
+    actor->GetProperty()->SetLighting(!c.Unlit);
   }
   else
   {
@@ -169,6 +174,22 @@ int RunCase(vtkRenderWindow* window, const Case& c)
         worstDepth = std::max(worstDepth, relative);
         FX_CHECK(relative <= 1e-4, c.Name << ": plane depth at (" << x << "," << y << ") "
                                           << depth[i] << " expected " << -hitVC[2]);
+        if (c.Unlit)
+        {
+          // Unlit fragments carry the sentinel, never a made-up normal.
+          FX_CHECK(normal[2 * i] == 4.0f && normal[2 * i + 1] == 4.0f,
+            c.Name << ": unlit normal sentinel at (" << x << "," << y << ")");
+        }
+        else
+        {
+          double n[3], up[4] = { 0, 0, 1, 0 }, upVC[4];
+          vtkFXTest::DecodeNormal(normal[2 * i], normal[2 * i + 1], n);
+          view->MultiplyPoint(up, upVC);
+          const double cosine = n[0] * upVC[0] + n[1] * upVC[1] + n[2] * upVC[2];
+          const double angle = std::acos(std::min(1.0, std::max(-1.0, cosine)));
+          worstAngle = std::max(worstAngle, angle);
+          FX_CHECK(angle <= 2e-3, c.Name << ": plane normal off by " << angle);
+        }
         ++checked;
         continue;
       }
@@ -224,15 +245,20 @@ int RunCase(vtkRenderWindow* window, const Case& c)
 int TestGBufferGeometry(int, char*[])
 {
   const Case cases[] = {
-    { "perspective", false, 1.0, 0.0, 0.0, false },
-    { "parallel", true, 1.0, 0.0, 0.0, false },
-    { "tiny scale 1e-6", false, 1e-6, 0.0, 0.0, false },
-    { "huge scale 1e6", false, 1e6, 0.0, 0.0, false },
-    { "parallel 1e6", true, 1e6, 0.0, 0.0, false },
-    { "near/far 1e-6", false, 1.0, 0.0, 1e-6, false },
-    { "plane", false, 1.0, 0.0, 0.0, true },
-    { "plane far from origin 1e6", false, 1.0, 1e6, 0.0, true },
-    { "parallel plane far from origin 1e6", true, 1.0, 1e6, 0.0, true },
+    { "perspective", false, 1.0, 0.0, 0.0, false, false },
+    { "parallel", true, 1.0, 0.0, 0.0, false, false },
+    { "tiny scale 1e-6", false, 1e-6, 0.0, 0.0, false, false },
+    { "huge scale 1e6", false, 1e6, 0.0, 0.0, false, false },
+    { "parallel 1e6", true, 1e6, 0.0, 0.0, false, false },
+    { "near/far 1e-6", false, 1.0, 0.0, 1e-6, false, false },
+    { "plane", false, 1.0, 0.0, 0.0, true, false },
+    { "plane far from origin 1e6", false, 1.0, 1e6, 0.0, true, false },
+    { "parallel plane far from origin 1e6", true, 1.0, 1e6, 0.0, true, false },
+    // Unlit: depth from inverting the projection of the 32-bit float window
+    // depth, relative error ~ 6e-8 * far / near, within 1e-4 for VTK's
+    // automatic clipping range.
+    { "unlit plane", false, 1.0, 0.0, 0.0, true, true },
+    { "unlit parallel plane", true, 1.0, 0.0, 0.0, true, true },
   };
   // One window for all cases: each window is an X connection.
   auto window = vtkFXTest::MakeWindow(160, 120);
