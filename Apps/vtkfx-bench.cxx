@@ -8,12 +8,14 @@
 // identical copies of the scene, one with each renderer, and frames are
 // interleaved so that both see the same machine load. Writes
 // DIR/pipeline.csv (scene, method, setting, ms, rmse, psnr) with the median
-// frame time over N frames, and prints the time ratio per scene.
+// frame time over N frames (PSNR over the pixels that show data), and
+// prints the time ratio and the pipeline's per-pass GPU times per scene.
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
 
 #include "vtkNew.h"
 #include "vtkRenderWindow.h"
+#include "vtkRendererCollection.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkTimerLog.h"
@@ -24,6 +26,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -67,21 +70,23 @@ double TimedRender(vtkRenderWindow* window, vtkTimerLog* timer)
   return 1000.0 * timer->GetElapsedTime();
 }
 
-struct Setup
+vtkSmartPointer<vtkRenderWindow> MakeWindow(const Options& o)
 {
-  vtkSmartPointer<vtkRenderWindow> Window;
-  vtkSmartPointer<vtkRenderer> Renderer;
-};
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(o.Width, o.Height);
+  return window;
+}
 
-bool MakeSetup(const std::string& input, const Options& o, Setup& setup, std::string& error)
+// A fresh renderer holding `input` in `window` (windows are reused across
+// scenes: each one is an X connection).
+vtkSmartPointer<vtkRenderer> Stage(vtkRenderWindow* window, const std::string& input, std::string& error)
 {
-  setup.Window = vtkSmartPointer<vtkRenderWindow>::New();
-  setup.Window->SetOffScreenRendering(1);
-  setup.Window->SetMultiSamples(0);
-  setup.Window->SetSize(o.Width, o.Height);
-  setup.Renderer = vtkSmartPointer<vtkRenderer>::New();
-  setup.Window->AddRenderer(setup.Renderer);
-  return vtkFXScenes::Populate(setup.Renderer, input, vtkFXScenes::Options(), error);
+  window->GetRenderers()->RemoveAllItems();
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  window->AddRenderer(renderer);
+  return vtkFXScenes::Populate(renderer, input, vtkFXScenes::Options(), error) ? renderer : nullptr;
 }
 
 int BenchPipeline(const Options& o)
@@ -95,34 +100,47 @@ int BenchPipeline(const Options& o)
   }
   csv << "scene,method,setting,ms,rmse,psnr\n";
   vtkNew<vtkTimerLog> timer;
-  std::vector<std::string> summary;
+  auto forward = MakeWindow(o);
+  auto deferred = MakeWindow(o);
   for (size_t s = 0; s < o.Inputs.size(); ++s)
   {
     const std::string& input = o.Inputs[s];
-    Setup forward, deferred;
     std::string error;
-    if (!MakeSetup(input, o, forward, error) || !MakeSetup(input, o, deferred, error))
+    auto forwardRenderer = Stage(forward, input, error);
+    auto deferredRenderer = Stage(deferred, input, error);
+    if (!forwardRenderer || !deferredRenderer)
     {
       std::cerr << "vtkfx-bench: " << error << "\n";
       return 1;
     }
     vtkNew<vtkFXPipelinePass> pipeline;
-    deferred.Renderer->SetPass(pipeline);
+    deferredRenderer->SetPass(pipeline);
     // Warm up: shader compilation and allocation are not part of a frame.
-    forward.Window->Render();
-    deferred.Window->Render();
+    forward->Render();
+    deferred->Render();
     std::vector<double> vtkMs, fxMs;
+    std::map<std::string, std::vector<double>> passMs;
     for (int f = 0; f < o.Frames; ++f)
     {
       std::cerr << "\r[" << s + 1 << "/" << o.Inputs.size() << "] " << input << ": frame "
                 << f + 1 << "/" << o.Frames << std::flush;
-      vtkMs.push_back(TimedRender(forward.Window, timer));
-      fxMs.push_back(TimedRender(deferred.Window, timer));
+      vtkMs.push_back(TimedRender(forward, timer));
+      fxMs.push_back(TimedRender(deferred, timer));
+      for (int i = 0; i < pipeline->GetNumberOfPassesThatRan(); ++i)
+      {
+        const double ms = pipeline->GetPassMilliseconds(pipeline->GetPassThatRan(i));
+        if (ms >= 0.0)
+        {
+          passMs[pipeline->GetPassThatRan(i)].push_back(ms);
+        }
+      }
     }
     std::cerr << "\n";
-    const auto reference = vtkFXScenes::Capture(forward.Window);
-    const auto image = vtkFXScenes::Capture(deferred.Window);
-    const double psnr = vtkFXScenes::PSNR(reference, image);
+    const auto reference = vtkFXScenes::Capture(forward);
+    const auto image = vtkFXScenes::Capture(deferred);
+    unsigned char background[3];
+    vtkFXScenes::BackgroundBytes(forwardRenderer, background);
+    const double psnr = vtkFXScenes::PSNR(reference, image, background);
     const double vtk = Median(vtkMs), fx = Median(fxMs);
     csv << input << ",vtk-forward,default," << vtk << ",0,inf\n";
     csv << input << ",vtkfx-pipeline,effects=none," << fx << "," << RMSE(reference, image) << ","
@@ -130,8 +148,11 @@ int BenchPipeline(const Options& o)
     std::ostringstream line;
     line << std::fixed << std::setprecision(2) << input << ": VTK " << vtk << " ms, vtkFX " << fx
          << " ms, ratio " << fx / vtk << ", PSNR " << psnr << " dB, G-buffer "
-         << pipeline->GetGBufferBytesPerPixel() << " B/px";
-    summary.push_back(line.str());
+         << pipeline->GetGBufferBytesPerPixel() << " B/px; GPU ms:";
+    for (const auto& pass : passMs)
+    {
+      line << " " << pass.first << " " << Median(pass.second);
+    }
     std::cout << line.str() << std::endl;
   }
   std::cout << "wrote " << csvPath << " (" << o.Width << "x" << o.Height << ", median of "

@@ -25,13 +25,13 @@
 #ifndef vtkFXCompositePass_h
 #define vtkFXCompositePass_h
 
+#include "vtkFXGBufferPass.h" // for the channel count
 #include "vtkFXModule.h"
 #include "vtkRenderPass.h"
 
 #include <memory>
 #include <string>
 
-class vtkFXGBufferPass;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderer;
 
@@ -53,7 +53,7 @@ public:
    * or -1 (default) for the lit image. Normals show as 0.5 + 0.5 n, linear
    * depth as a grey ramp from the nearest to the farthest covered pixel.
    */
-  vtkSetClampMacro(DebugChannel, int, -1, 5); // -1 .. NumberOfChannels - 1
+  vtkSetClampMacro(DebugChannel, int, -1, vtkFXGBufferPass::NumberOfChannels - 1);
   vtkGetMacro(DebugChannel, int);
 
   ///@{

@@ -35,6 +35,7 @@
 #ifndef vtkFXPipelinePass_h
 #define vtkFXPipelinePass_h
 
+#include "vtkFXGBufferPass.h" // for the channel count
 #include "vtkFXModule.h"
 #include "vtkRenderPass.h"
 #include "vtkSmartPointer.h"
@@ -46,7 +47,6 @@
 class vtkCameraPass;
 class vtkFXCompositePass;
 class vtkFXEffectPass;
-class vtkFXGBufferPass;
 class vtkFXTimedSequencePass;
 class vtkLightsPass;
 class vtkOpaquePass;
@@ -82,7 +82,7 @@ public:
    * G-buffer channel to show on screen instead of the lit image (a
    * vtkFXGBufferPass::Channel), or -1 (default) for the lit image.
    */
-  vtkSetClampMacro(DebugChannel, int, -1, 5);
+  vtkSetClampMacro(DebugChannel, int, -1, vtkFXGBufferPass::NumberOfChannels - 1);
   vtkGetMacro(DebugChannel, int);
 
   ///@{

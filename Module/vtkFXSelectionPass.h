@@ -9,7 +9,8 @@
  * effects during selection so that picking keeps working.
  *
  * Reads the render state's props; writes ids into the current framebuffer.
- * Does nothing when no selector is rendering. Limitation: a pick restricted
+ * Does nothing when no selector is rendering. Cost: VTK's own selection
+ * rendering, only while picking. Limitation: a pick restricted
  * to a prop list (vtkPicker's PickFromList) considers all visible props,
  * because the list is not public in vtkRenderer.
  */

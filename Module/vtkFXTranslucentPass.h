@@ -3,8 +3,9 @@
  * @brief   Renders translucent polygonal geometry exactly as the renderer would.
  *
  * Calls the renderer's own DeviceRenderTranslucentPolygonalGeometry, so the
- * renderer's settings decide between depth peeling, order-independent
- * transparency and plain alpha blending, as in a VTK render without passes.
+ * renderer's settings decide between depth peeling and order-independent
+ * transparency (VTK 9.1's only two paths), as in a VTK render without
+ * passes.
  * Reads the current framebuffer's depth (the G-buffer depth written by
  * vtkFXCompositePass) and blends into its colour. Cost: VTK's own.
  */

@@ -15,10 +15,7 @@
 
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
-#include "vtkCameraPass.h"
-#include "vtkLightsPass.h"
 #include "vtkMatrix4x4.h"
-#include "vtkOpaquePass.h"
 #include "vtkOpenGLSphereMapper.h"
 #include "vtkPlaneSource.h"
 #include "vtkPoints.h"
@@ -26,10 +23,8 @@
 #include "vtkProperty.h"
 #include "vtkPolyData.h"
 #include "vtkActor.h"
-#include "vtkRenderPassCollection.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
-#include "vtkSequencePass.h"
 
 namespace
 {
@@ -124,19 +119,7 @@ int RunCase(vtkRenderWindow* window, const Case& c)
     renderer->ResetCameraClippingRange();
   }
 
-  // The G-buffer used alone, as in a hand-built VTK pass chain.
-  vtkNew<vtkFXGBufferPass> gbuffer;
-  vtkNew<vtkOpaquePass> opaque;
-  gbuffer->SetDelegatePass(opaque);
-  vtkNew<vtkLightsPass> lights;
-  vtkNew<vtkRenderPassCollection> passes;
-  passes->AddItem(lights);
-  passes->AddItem(gbuffer);
-  vtkNew<vtkSequencePass> sequence;
-  sequence->SetPasses(passes);
-  vtkNew<vtkCameraPass> cameraPass;
-  cameraPass->SetDelegatePass(sequence);
-  renderer->SetPass(cameraPass);
+  vtkFXGBufferPass* gbuffer = vtkFXTest::InstallGBufferAlone(renderer);
   window->Render();
 
   vtkTextureObject* depthTexture = gbuffer->GetChannelTexture(vtkFXGBufferPass::LinearDepth);
@@ -185,8 +168,7 @@ int RunCase(vtkRenderWindow* window, const Case& c)
           double n[3], up[4] = { 0, 0, 1, 0 }, upVC[4];
           vtkFXTest::DecodeNormal(normal[2 * i], normal[2 * i + 1], n);
           view->MultiplyPoint(up, upVC);
-          const double cosine = n[0] * upVC[0] + n[1] * upVC[1] + n[2] * upVC[2];
-          const double angle = std::acos(std::min(1.0, std::max(-1.0, cosine)));
+          const double angle = vtkFXTest::Angle(n, upVC);
           worstAngle = std::max(worstAngle, angle);
           FX_CHECK(angle <= 2e-3, c.Name << ": plane normal off by " << angle);
         }
@@ -226,8 +208,7 @@ int RunCase(vtkRenderWindow* window, const Case& c)
         (hit[2] - center[2]) / radius, 0.0 };
       double nVC[4];
       view->MultiplyPoint(nWorld, nVC);
-      const double cosine = n[0] * nVC[0] + n[1] * nVC[1] + n[2] * nVC[2];
-      const double angle = std::acos(std::min(1.0, std::max(-1.0, cosine)));
+      const double angle = vtkFXTest::Angle(n, nVC);
       worstAngle = std::max(worstAngle, angle);
       FX_CHECK(angle <= 2e-3, c.Name << ": normal at (" << x << "," << y << ") off by " << angle);
       ++checked;

@@ -11,11 +11,6 @@
 #include "vtkFXTestUtilities.h"
 
 #include "vtkActor.h"
-#include "vtkCameraPass.h"
-#include "vtkLightsPass.h"
-#include "vtkOpaquePass.h"
-#include "vtkRenderPassCollection.h"
-#include "vtkSequencePass.h"
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
 #include "vtkPointData.h"
@@ -106,18 +101,7 @@ int TestRobustness(int, char*[])
   renderer->ResetCamera();
 
   // The G-buffer alone, every channel requested (its default).
-  vtkNew<vtkFXGBufferPass> gbuffer;
-  vtkNew<vtkOpaquePass> opaque;
-  gbuffer->SetDelegatePass(opaque);
-  vtkNew<vtkLightsPass> lights;
-  vtkNew<vtkRenderPassCollection> passes;
-  passes->AddItem(lights);
-  passes->AddItem(gbuffer);
-  vtkNew<vtkSequencePass> sequence;
-  sequence->SetPasses(passes);
-  vtkNew<vtkCameraPass> cameraPass;
-  cameraPass->SetDelegatePass(sequence);
-  renderer->SetPass(cameraPass);
+  vtkFXGBufferPass* gbuffer = vtkFXTest::InstallGBufferAlone(renderer);
   window->Render();
   FX_CHECK(gbuffer->GetAllocatedChannels() == (1u << vtkFXGBufferPass::NumberOfChannels) - 1,
     "all channels allocated");

@@ -2,13 +2,21 @@
 #ifndef vtkFXTestUtilities_h
 #define vtkFXTestUtilities_h
 
+#include "vtkCameraPass.h"
+#include "vtkFXGBufferPass.h"
+#include "vtkLightsPass.h"
 #include "vtkNew.h"
+#include "vtkOpaquePass.h"
+#include "vtkRenderPassCollection.h"
+#include "vtkRenderer.h"
+#include "vtkSequencePass.h"
 #include "vtkPixelBufferObject.h"
 #include "vtkRenderWindow.h"
 #include "vtkSmartPointer.h"
 #include "vtkTesting.h"
 #include "vtkTextureObject.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -38,6 +46,32 @@ inline vtkSmartPointer<vtkRenderWindow> MakeWindow(int width, int height)
   window->SetMultiSamples(0);
   window->SetSize(width, height);
   return window;
+}
+
+// Installs a G-buffer used alone, as in a hand-built VTK pass chain:
+// camera -> sequence(lights, G-buffer(opaque)). The renderer keeps it alive.
+inline vtkFXGBufferPass* InstallGBufferAlone(vtkRenderer* renderer)
+{
+  vtkNew<vtkFXGBufferPass> gbuffer;
+  vtkNew<vtkOpaquePass> opaque;
+  gbuffer->SetDelegatePass(opaque);
+  vtkNew<vtkLightsPass> lights;
+  vtkNew<vtkRenderPassCollection> passes;
+  passes->AddItem(lights);
+  passes->AddItem(gbuffer);
+  vtkNew<vtkSequencePass> sequence;
+  sequence->SetPasses(passes);
+  vtkNew<vtkCameraPass> cameraPass;
+  cameraPass->SetDelegatePass(sequence);
+  renderer->SetPass(cameraPass);
+  return gbuffer;
+}
+
+// Angle in radians between two unit vectors.
+inline double Angle(const double a[3], const double b[3])
+{
+  const double cosine = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  return std::acos(std::min(1.0, std::max(-1.0, cosine)));
 }
 
 // The value of "-X value" in argv, or "" when absent.
