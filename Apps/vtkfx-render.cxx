@@ -6,6 +6,7 @@
 //                [--debug-channel NAME] [--no-ground]
 #include "vtkFXScenes.h"
 
+#include "vtkFXBilateralBlurPass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
 
@@ -41,8 +42,9 @@ struct Arguments
   bool Ground = true;
 };
 
-// Effects the pipeline knows. The effects of later issues register here.
-const std::vector<std::string> KnownEffects = {};
+// Effects the pipeline knows: "ssao" (screen-space ambient occlusion) and
+// "blur" (its depth/normal-aware blur and upsampling).
+const std::vector<std::string> KnownEffects = { "ssao", "blur" };
 
 void Usage(std::ostream& os)
 {
@@ -188,6 +190,19 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
     error = "no INPUT given";
     return false;
   }
+  const auto has = [&args](const char* e) {
+    return std::find(args.Effects.begin(), args.Effects.end(), e) != args.Effects.end();
+  };
+  if (has("blur") && !has("ssao"))
+  {
+    error = "effect 'blur' blurs an occlusion effect: use --effects ssao,blur";
+    return false;
+  }
+  if (args.PlainVTK && !args.Effects.empty())
+  {
+    error = "--plain-vtk renders VTK's own image: it takes no --effects";
+    return false;
+  }
   return true;
 }
 
@@ -244,6 +259,11 @@ int main(int argc, char* argv[])
   if (!args.PlainVTK)
   {
     renderer->SetPass(pipeline);
+    const auto has = [&args](const char* e) {
+      return std::find(args.Effects.begin(), args.Effects.end(), e) != args.Effects.end();
+    };
+    pipeline->SetAmbientOcclusion(has("ssao"));
+    pipeline->GetOcclusionBlurPass()->SetEnabled(has("blur"));
     if (!args.DebugChannel.empty())
     {
       pipeline->SetDebugChannel(vtkFXGBufferPass::GetChannelFromName(args.DebugChannel.c_str()));

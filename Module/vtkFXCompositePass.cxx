@@ -1,6 +1,7 @@
 #include "vtkFXCompositePass.h"
 
 #include "vtkFXCompositeFS.h"
+#include "vtkFXEffectPass.h"
 #include "vtkFXLightingFS.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXNormalCoding.h"
@@ -69,9 +70,11 @@ vtkFXCompositePass::vtkFXCompositePass() = default;
 vtkFXCompositePass::~vtkFXCompositePass()
 {
   this->SetGBuffer(nullptr);
+  this->SetOcclusionEffect(nullptr);
 }
 
 vtkCxxSetObjectMacro(vtkFXCompositePass, GBuffer, vtkFXGBufferPass);
+vtkCxxSetObjectMacro(vtkFXCompositePass, OcclusionEffect, vtkFXEffectPass);
 
 unsigned int vtkFXCompositePass::GetRequiredChannels(int lightingComplexity) const
 {
@@ -131,6 +134,8 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
           << "#define FX_HAS_SPECULAR " << (hasSpecular ? 1 : 0) << "\n"
           << "#define FX_HAS_AMBIENT " << (gb->GetChannelTexture(GB::Ambient) ? 1 : 0) << "\n"
           << "#define FX_NEEDS_POSITION " << (needsPosition ? 1 : 0) << "\n"
+          << "#define FX_HAS_OCCLUSION " << (this->OcclusionTexture() && complexity > 0 ? 1 : 0)
+          << "\n"
           << "#define FX_CHANNEL_NORMAL " << GB::Normal << "\n"
           << "#define FX_CHANNEL_DEPTH " << GB::LinearDepth << "\n"
           << "#define FX_DEBUG_CHANNEL "
@@ -186,6 +191,12 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
   BindSampler(program, "fxAmbient", gb->GetChannelTexture(GB::Ambient));
   BindSampler(program, "fxLinearDepth", gb->GetChannelTexture(GB::LinearDepth));
   BindSampler(program, "fxDebugTexture", gb->GetChannelTexture(this->DebugChannel));
+  BindSampler(program, "fxOcclusion", this->OcclusionTexture());
+  if (program->IsUniformUsed("fxOcclusionDiffuseStrength"))
+  {
+    program->SetUniformf(
+      "fxOcclusionDiffuseStrength", static_cast<float>(this->OcclusionDiffuseStrength));
+  }
   vtkFXRenderUtilities::SetFrustumRayUniforms(program, ren);
   if (program->IsUniformUsed("fxDepthRange"))
   {
@@ -222,6 +233,15 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
     }
   }
   gb->GetDepthTexture()->Deactivate();
+  if (vtkTextureObject* occlusion = this->OcclusionTexture())
+  {
+    occlusion->Deactivate();
+  }
+}
+
+vtkTextureObject* vtkFXCompositePass::OcclusionTexture() const
+{
+  return this->OcclusionEffect ? this->OcclusionEffect->GetOutputTexture() : nullptr;
 }
 
 void vtkFXCompositePass::ReleaseGraphicsResources(vtkWindow* w)

@@ -17,8 +17,8 @@
  * Cost: one full-screen pass, one texture read per allocated channel and a
  * loop over the lights per pixel.
  *
- * Later effects plug in as optional inputs: an occlusion texture scales the
- * ambient term (and, by OcclusionDiffuseStrength, the diffuse term).
+ * Optional input: an occlusion texture (SetOcclusionEffect) scales the
+ * ambient term and, by OcclusionDiffuseStrength, the diffuse light.
  *
  * DebugChannel shows one G-buffer channel instead of the lit image.
  */
@@ -32,8 +32,10 @@
 #include <memory>
 #include <string>
 
+class vtkFXEffectPass;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderer;
+class vtkTextureObject;
 
 class VTKFX_EXPORT vtkFXCompositePass : public vtkRenderPass
 {
@@ -69,6 +71,26 @@ public:
   ///@}
 
   /**
+   * An effect whose output texture holds ambient occlusion (1 = open), e.g.
+   * a vtkFXSSAOPass or the vtkFXBilateralBlurPass after it; nullptr (the
+   * default) for none. Read at render time; an effect that wrote no texture
+   * is ignored.
+   */
+  virtual void SetOcclusionEffect(vtkFXEffectPass* effect);
+  vtkGetObjectMacro(OcclusionEffect, vtkFXEffectPass);
+
+  /**
+   * How much occlusion also darkens the diffuse light (0..1, dimensionless,
+   * default 1). Occlusion always scales VTK's ambient term, but VTK's
+   * materials have none by default (Ambient = 0), so ambient-only occlusion
+   * would be invisible in most VTK scenes: 0 is the physically ambient-only
+   * choice, 1 darkens diffuse shading like vtkSSAOPass (which scales the
+   * whole colour). Specular highlights are never occluded.
+   */
+  vtkSetClampMacro(OcclusionDiffuseStrength, double, 0.0, 1.0);
+  vtkGetMacro(OcclusionDiffuseStrength, double);
+
+  /**
    * Channels this pass reads when the renderer's lighting complexity is
    * `lightingComplexity` (0 = no light on, see vtkOpenGLRenderer), as a mask
    * of vtkFXGBufferPass::ChannelBit().
@@ -83,8 +105,11 @@ protected:
   ~vtkFXCompositePass() override;
 
   std::string BuildFragmentShader(vtkOpenGLRenderer* ren);
+  vtkTextureObject* OcclusionTexture() const;
 
   vtkFXGBufferPass* GBuffer = nullptr;
+  vtkFXEffectPass* OcclusionEffect = nullptr;
+  double OcclusionDiffuseStrength = 1.0;
   int DebugChannel = -1;
   bool UseSpecular = true;
   bool UseAmbient = true;

@@ -4,9 +4,12 @@
 
 vtkCxxSetObjectMacro(vtkFXEffectPass, GBuffer, vtkFXGBufferPass);
 
+vtkCxxSetObjectMacro(vtkFXEffectPass, InputEffect, vtkFXEffectPass);
+
 vtkFXEffectPass::~vtkFXEffectPass()
 {
   this->SetGBuffer(nullptr);
+  this->SetInputEffect(nullptr);
 }
 
 bool vtkFXEffectPass::HasWork(int opaqueProps, int)

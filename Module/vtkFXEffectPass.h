@@ -21,6 +21,7 @@
 #include "vtkOpenGLRenderPass.h"
 
 class vtkFXGBufferPass;
+class vtkTextureObject;
 
 class VTKFX_EXPORT vtkFXEffectPass : public vtkOpenGLRenderPass
 {
@@ -60,6 +61,19 @@ public:
   virtual bool HasWork(int opaqueProps, int translucentProps);
 
   /**
+   * The texture the effect wrote in its last Render() (e.g. occlusion), or
+   * nullptr for effects that write into the framebuffer.
+   */
+  virtual vtkTextureObject* GetOutputTexture() { return nullptr; }
+
+  /**
+   * An effect whose output texture this one reads (e.g. a blur of an
+   * occlusion pass), or nullptr.
+   */
+  virtual void SetInputEffect(vtkFXEffectPass* input);
+  vtkGetObjectMacro(InputEffect, vtkFXEffectPass);
+
+  /**
    * The G-buffer the effect reads; set by the pipeline before Render().
    */
   virtual void SetGBuffer(vtkFXGBufferPass* gbuffer);
@@ -72,6 +86,7 @@ protected:
   int Stage = AfterGBuffer;
   bool Enabled = true;
   vtkFXGBufferPass* GBuffer = nullptr;
+  vtkFXEffectPass* InputEffect = nullptr;
 
 private:
   vtkFXEffectPass(const vtkFXEffectPass&) = delete;

@@ -1,6 +1,8 @@
 #include "vtkFXPipelinePass.h"
 
+#include "vtkFXBilateralBlurPass.h"
 #include "vtkFXCompositePass.h"
+#include "vtkFXSSAOPass.h"
 #include "vtkFXEffectPass.h"
 #include "vtkFXForwardOpaquePass.h"
 #include "vtkFXGBufferPass.h"
@@ -118,6 +120,10 @@ vtkFXPipelinePass::vtkFXPipelinePass()
   this->ForwardOpaquePass = vtkSmartPointer<vtkFXForwardOpaquePass>::New();
   this->SelectionPass = vtkSmartPointer<vtkFXSelectionPass>::New();
 
+  this->SSAOPass = vtkSmartPointer<vtkFXSSAOPass>::New();
+  this->OcclusionBlurPass = vtkSmartPointer<vtkFXBilateralBlurPass>::New();
+  this->OcclusionBlurPass->SetInputEffect(this->SSAOPass);
+
   this->GBufferPass->SetDelegatePass(this->OpaquePass);
   this->CompositePass->SetGBuffer(this->GBufferPass);
   this->CameraPass->SetDelegatePass(this->Sequence);
@@ -168,8 +174,11 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const SceneInfo& scene, vtkWindow*
     unsigned int channels = composite->GetRequiredChannels(scene.LightingComplexity);
     for (EffectSlot& slot : this->Effects)
     {
-      const bool active =
-        slot.Effect->GetEnabled() && slot.Effect->HasWork(scene.OpaqueProps, scene.TranslucentProps);
+      // An effect that reads another's output runs only after that one ran.
+      vtkFXEffectPass* input = slot.Effect->GetInputEffect();
+      const bool active = slot.Effect->GetEnabled() &&
+        slot.Effect->HasWork(scene.OpaqueProps, scene.TranslucentProps) &&
+        (!input || this->RanEffect(input));
       if (slot.Active && !active)
       {
         slot.Effect->ReleaseGraphicsResources(window);
@@ -182,6 +191,15 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const SceneInfo& scene, vtkWindow*
       }
     }
     this->GBufferPass->SetRequiredChannels(channels);
+    // Occlusion for the composite: the blurred result when the blur runs.
+    vtkFXEffectPass* occlusion = nullptr;
+    if (this->AmbientOcclusion && this->RanEffect(this->SSAOPass))
+    {
+      occlusion = this->RanEffect(this->OcclusionBlurPass)
+        ? static_cast<vtkFXEffectPass*>(this->OcclusionBlurPass)
+        : this->SSAOPass;
+    }
+    composite->SetOcclusionEffect(occlusion);
     this->Sequence->AddPass("gbuffer", this->GBufferPass);
     this->ScheduleEffects(vtkFXEffectPass::AfterGBuffer);
     this->Sequence->AddPass("composite", composite);
@@ -226,6 +244,49 @@ void vtkFXPipelinePass::ScheduleEffects(int stage)
       this->Sequence->AddPass(slot.Name.c_str(), slot.Effect);
     }
   }
+}
+
+bool vtkFXPipelinePass::RanEffect(vtkFXEffectPass* effect) const
+{
+  for (const EffectSlot& slot : this->Effects)
+  {
+    if (slot.Effect == effect)
+    {
+      return slot.Active;
+    }
+  }
+  return false;
+}
+
+void vtkFXPipelinePass::SetAmbientOcclusion(bool enabled)
+{
+  if (enabled == this->AmbientOcclusion)
+  {
+    return;
+  }
+  this->AmbientOcclusion = enabled;
+  if (enabled)
+  {
+    this->AddEffect("ssao", this->SSAOPass);
+    this->AddEffect("ssao-blur", this->OcclusionBlurPass);
+  }
+  else
+  {
+    this->RemoveEffect("ssao");
+    this->RemoveEffect("ssao-blur");
+    this->CompositePass->SetOcclusionEffect(nullptr);
+  }
+  this->Modified();
+}
+
+vtkFXSSAOPass* vtkFXPipelinePass::GetSSAOPass()
+{
+  return this->SSAOPass;
+}
+
+vtkFXBilateralBlurPass* vtkFXPipelinePass::GetOcclusionBlurPass()
+{
+  return this->OcclusionBlurPass;
 }
 
 void vtkFXPipelinePass::AddEffect(const char* name, vtkFXEffectPass* effect)
@@ -367,6 +428,7 @@ void vtkFXPipelinePass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DebugChannel: " << this->DebugChannel << "\n";
+  os << indent << "AmbientOcclusion: " << this->AmbientOcclusion << "\n";
   os << indent << "Passes that ran:";
   for (const auto& name : this->LastPasses)
   {

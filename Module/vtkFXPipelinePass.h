@@ -45,6 +45,8 @@
 #include <vector>
 
 class vtkCameraPass;
+class vtkFXBilateralBlurPass;
+class vtkFXSSAOPass;
 class vtkFXCompositePass;
 class vtkFXEffectPass;
 class vtkFXTimedSequencePass;
@@ -116,6 +118,21 @@ public:
 
   ///@{
   /**
+   * Ambient occlusion: a vtkFXSSAOPass ("ssao") followed by a
+   * vtkFXBilateralBlurPass ("ssao-blur", which also upsamples the
+   * half-resolution result) in the effect slots, feeding the composite
+   * (vtkFXCompositePass::SetOcclusionEffect). Off by default; while off,
+   * neither runs and their textures and G-buffer channels are released.
+   */
+  virtual void SetAmbientOcclusion(bool enabled);
+  vtkGetMacro(AmbientOcclusion, bool);
+  vtkBooleanMacro(AmbientOcclusion, bool);
+  vtkFXSSAOPass* GetSSAOPass();
+  vtkFXBilateralBlurPass* GetOcclusionBlurPass();
+  ///@}
+
+  ///@{
+  /**
    * Effect slots. An effect runs at its stage (vtkFXEffectPass::Stage), in
    * the order added, under `name` (its name in timings and in the passes that
    * ran), when it is enabled and the scene gives it work; the G-buffer then
@@ -152,9 +169,13 @@ protected:
     bool Active = false; // ran in the last deferred frame
   };
   void ScheduleEffects(int stage);
+  bool RanEffect(vtkFXEffectPass* effect) const;
 
   int DebugChannel = -1;
+  bool AmbientOcclusion = false;
   std::vector<EffectSlot> Effects;
+  vtkSmartPointer<vtkFXSSAOPass> SSAOPass;
+  vtkSmartPointer<vtkFXBilateralBlurPass> OcclusionBlurPass;
   vtkWeakPointer<vtkWindow> LastWindow; // to release effects removed between frames
   SceneInfo LastScene;
   std::vector<std::string> LastPasses;

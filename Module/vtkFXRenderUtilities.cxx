@@ -3,6 +3,7 @@
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -33,6 +34,7 @@ const FormatInfo& Info(int format)
     { GL_RGBA8, GL_RGBA, 4, VTK_UNSIGNED_CHAR, 4 },
     { GL_RGBA16F, GL_RGBA, 4, VTK_FLOAT, 8 },
     { GL_R8, GL_RED, 1, VTK_UNSIGNED_CHAR, 1 },
+    { GL_RG8, GL_RG, 2, VTK_UNSIGNED_CHAR, 2 },
     { GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, 1, VTK_FLOAT, 4 },
   };
   return table[format];
@@ -103,6 +105,34 @@ vtkShaderProgram* vtkFXRenderUtilities::ReadyQuad(std::unique_ptr<vtkOpenGLQuadH
     return nullptr;
   }
   return quad->Program;
+}
+
+vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow* window,
+  vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer, vtkTextureObject* target)
+  : State(window->GetState())
+  , Viewport(window->GetState())
+  , DepthTest(window->GetState(), GL_DEPTH_TEST)
+  , Blend(window->GetState(), GL_BLEND)
+  , Scissor(window->GetState(), GL_SCISSOR_TEST)
+{
+  this->State->PushFramebufferBindings();
+  if (!framebuffer)
+  {
+    framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    framebuffer->SetContext(window);
+  }
+  framebuffer->Bind();
+  framebuffer->AddColorAttachment(0, target);
+  framebuffer->ActivateDrawBuffers(1);
+  this->State->vtkglViewport(0, 0, target->GetWidth(), target->GetHeight());
+  this->State->vtkglDisable(GL_DEPTH_TEST);
+  this->State->vtkglDisable(GL_BLEND);
+  this->State->vtkglDisable(GL_SCISSOR_TEST);
+}
+
+vtkFXRenderUtilities::RenderTargetScope::~RenderTargetScope()
+{
+  this->State->PopFramebufferBindings();
 }
 
 void vtkFXRenderUtilities::GetViewportSize(vtkRenderer* renderer, int& width, int& height)

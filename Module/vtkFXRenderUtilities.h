@@ -13,11 +13,13 @@
 
 #include "vtkFXModule.h"
 #include "vtkObject.h"
+#include "vtkOpenGLState.h" // for the scoped state of RenderTargetScope
 #include "vtkSmartPointer.h"
 
 #include <memory>
 #include <string>
 
+class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
@@ -41,6 +43,7 @@ public:
     RGBA8,     // 4 bytes: colours in [0,1]
     RGBA16F,   // 8 bytes: HDR colours
     R8,        // 1 byte:  occlusion in [0,1]
+    RG8,       // 2 bytes: two values in [0,1]
     Depth32F,  // 4 bytes: hardware depth
     NumberOfTextureFormats
   };
@@ -92,6 +95,27 @@ public:
    * constant, ndc.x and ndc.y coefficients. Exposed for tests and CPU code.
    */
   static void ComputeFrustumRay(vtkRenderer* renderer, double origin[3][3], double direction[3][3]);
+
+  /**
+   * While it lives, draws go to `target` (the only colour attachment of
+   * `framebuffer`, created on first use) over its whole size, with depth
+   * test, blending and scissor off. The previous framebuffer, viewport and
+   * those switches come back when it is destroyed.
+   */
+  class VTKFX_EXPORT RenderTargetScope
+  {
+  public:
+    RenderTargetScope(vtkOpenGLRenderWindow* window,
+      vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer, vtkTextureObject* target);
+    ~RenderTargetScope();
+
+  private:
+    vtkOpenGLState* State;
+    vtkOpenGLState::ScopedglViewport Viewport;
+    vtkOpenGLState::ScopedglEnableDisable DepthTest;
+    vtkOpenGLState::ScopedglEnableDisable Blend;
+    vtkOpenGLState::ScopedglEnableDisable Scissor;
+  };
 
 protected:
   vtkFXRenderUtilities() = default;

@@ -8,7 +8,7 @@
 // "frustum corner ray" of seed 001), so no world-space position is stored.
 //
 // Defines set by vtkFXCompositePass: FX_LIGHTING (0..3), FX_HAS_SPECULAR,
-// FX_HAS_AMBIENT, FX_NEEDS_POSITION, FX_DEBUG_CHANNEL, and the channel
+// FX_HAS_AMBIENT, FX_HAS_OCCLUSION, FX_NEEDS_POSITION, FX_DEBUG_CHANNEL, and the channel
 // numbers FX_CHANNEL_NORMAL, FX_CHANNEL_DEPTH (vtkFXGBufferPass::Channel).
 
 in vec2 texCoord;
@@ -28,6 +28,11 @@ uniform sampler2D fxAmbient;
 uniform sampler2D fxLinearDepth;
 uniform vec3 fxRayOrigin[3];
 uniform vec3 fxRayDirection[3];
+#endif
+#if FX_HAS_OCCLUSION
+// Ambient occlusion (1 = open) from an effect such as vtkFXSSAOPass.
+uniform sampler2D fxOcclusion;
+uniform float fxOcclusionDiffuseStrength;
 #endif
 #if FX_DEBUG_CHANNEL >= 0
 uniform sampler2D fxDebugTexture;
@@ -119,6 +124,15 @@ void main()
     vec3 diffuseLight = vec3(0.0);
     vec3 specularLight = vec3(0.0);
     //VTK::FXLight::Impl
+#if FX_HAS_OCCLUSION
+    // Occlusion always scales the ambient term; VTK's materials have none
+    // by default (Ambient = 0), so it also scales the light reaching the
+    // surface diffusely, by a strength (0: physically ambient only; 1: like
+    // vtkSSAOPass, which darkens the whole colour). Highlights are kept.
+    float occlusion = clamp(texture(fxOcclusion, texCoord).r, 0.0, 1.0);
+    ambientColor *= occlusion;
+    diffuseLight *= mix(1.0, occlusion, fxOcclusionDiffuseStrength);
+#endif
     color = ambientColor + diffuseLight * diffuseColor + specularLight * specularColor;
   }
 #endif

@@ -1,0 +1,121 @@
+//VTK::System::Dec
+// vtkFXBilateralBlurFS: depth- and normal-aware (cross-bilateral) blur and
+// joint-bilateral upsampling of 1 to 4 values per pixel.
+//
+// Bilateral filtering after Tomasi and Manduchi (1998), guided by the
+// G-buffer instead of the image itself ("cross"/"joint" bilateral, Eisemann
+// and Durand 2004; upsampling: Kopf et al. 2007), as the seeds blur their
+// occlusion over 17 taps: a tap counts with a Gaussian of its distance times
+//   exp(-((d - d0) / (sigma d0))^2 / 2)   (depth relative to depth: the same
+//                                          at every scene scale)
+//   max(0, n . n0)^p                      (no bleeding across creases)
+// FX_MODE: 0 horizontal pass, 1 vertical pass (input resolution),
+//          2 upsample from input to G-buffer resolution.
+
+// Texels are addressed through gl_FragCoord; texCoord is read once only so
+// that the quad's texture-coordinate attribute stays in the program
+// (vtkOpenGLQuadHelper binds it and complains when it is optimised away).
+in vec2 texCoord;
+
+uniform sampler2D fxInput;
+uniform sampler2D fxLinearDepth;
+uniform sampler2D fxNormal;
+uniform ivec2 fxGBufferSize;
+uniform ivec2 fxInputSize;
+uniform int fxStep;          // G-buffer texels per input texel
+uniform int fxRadius;        // taps on each side
+uniform float fxDepthSigma;  // fraction of the depth
+uniform float fxNormalPower;
+
+//VTK::FXNormalCoding::Dec
+
+//VTK::Output::Dec
+
+ivec2 fxGuideTexel(ivec2 inputTexel)
+{
+  return min(inputTexel * fxStep, fxGBufferSize - 1);
+}
+
+float fxGuideWeight(float d0, vec3 n0, ivec2 guideTexel)
+{
+  float d = texelFetch(fxLinearDepth, guideTexel, 0).r;
+  if (!(d > 0.0))
+  {
+    return 0.0; // background never contributes
+  }
+  float r = (d - d0) / (fxDepthSigma * d0);
+  float wn = pow(max(dot(n0, fxDecodeNormal(texelFetch(fxNormal, guideTexel, 0).rg)), 0.0), fxNormalPower);
+  return exp(-0.5 * r * r) * wn;
+}
+
+void main()
+{
+  if (texCoord.x < -1.0)
+  {
+    discard; // never: see the declaration of texCoord
+  }
+  ivec2 p = ivec2(gl_FragCoord.xy);
+#if FX_MODE < 2
+  ivec2 guide = fxGuideTexel(p);
+  float d0 = texelFetch(fxLinearDepth, guide, 0).r;
+  vec4 center = texelFetch(fxInput, p, 0);
+  if (!(d0 > 0.0))
+  {
+    gl_FragData[0] = center;
+    return;
+  }
+  vec3 n0 = fxDecodeNormal(texelFetch(fxNormal, guide, 0).rg);
+  ivec2 direction = FX_MODE == 0 ? ivec2(1, 0) : ivec2(0, 1);
+  float sigma = max(0.5 * float(fxRadius), 0.5);
+  vec4 sum = center;
+  float total = 1.0;
+  for (int i = -fxRadius; i <= fxRadius; ++i)
+  {
+    ivec2 q = p + i * direction;
+    if (i == 0 || any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, fxInputSize)))
+    {
+      continue;
+    }
+    float w = exp(-0.5 * float(i * i) / (sigma * sigma)) * fxGuideWeight(d0, n0, fxGuideTexel(q));
+    sum += w * texelFetch(fxInput, q, 0);
+    total += w;
+  }
+  gl_FragData[0] = sum / total;
+#else
+  float d0 = texelFetch(fxLinearDepth, p, 0).r;
+  vec2 x = (vec2(p) + 0.5) / float(fxStep) - 0.5;
+  ivec2 base = ivec2(floor(x));
+  vec2 f = x - vec2(base);
+  if (!(d0 > 0.0))
+  {
+    gl_FragData[0] = texelFetch(fxInput, clamp(base, ivec2(0), fxInputSize - 1), 0);
+    return;
+  }
+  vec3 n0 = fxDecodeNormal(texelFetch(fxNormal, p, 0).rg);
+  vec4 sum = vec4(0.0);
+  float total = 0.0;
+  vec4 nearest = vec4(1.0);
+  float nearestGap = 1e30;
+  for (int j = 0; j < 2; ++j)
+  {
+    for (int i = 0; i < 2; ++i)
+    {
+      ivec2 q = clamp(base + ivec2(i, j), ivec2(0), fxInputSize - 1);
+      float bilinear = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
+      vec4 v = texelFetch(fxInput, q, 0);
+      ivec2 g = fxGuideTexel(q);
+      float w = bilinear * fxGuideWeight(d0, n0, g);
+      sum += w * v;
+      total += w;
+      float gap = abs(texelFetch(fxLinearDepth, g, 0).r - d0);
+      if (gap < nearestGap)
+      {
+        nearestGap = gap;
+        nearest = v;
+      }
+    }
+  }
+  // No similar neighbour (a thin feature): take the closest in depth.
+  gl_FragData[0] = total > 1e-4 ? sum / total : nearest;
+#endif
+}

@@ -1,0 +1,168 @@
+#include "vtkFXBilateralBlurPass.h"
+
+#include "vtkFXBilateralBlurFS.h"
+#include "vtkFXGBufferPass.h"
+#include "vtkFXNormalCoding.h"
+#include "vtkFXRenderUtilities.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+vtkStandardNewMacro(vtkFXBilateralBlurPass);
+
+namespace
+{
+using GB = vtkFXGBufferPass;
+enum Mode
+{
+  HorizontalPass = 0,
+  VerticalPass = 1,
+  Upsample = 2
+};
+}
+
+vtkFXBilateralBlurPass::vtkFXBilateralBlurPass() = default;
+vtkFXBilateralBlurPass::~vtkFXBilateralBlurPass() = default;
+
+unsigned int vtkFXBilateralBlurPass::GetRequiredChannels()
+{
+  return GB::ChannelBit(GB::Normal) | GB::ChannelBit(GB::LinearDepth);
+}
+
+vtkTextureObject* vtkFXBilateralBlurPass::GetOutputTexture()
+{
+  return this->Output;
+}
+
+int vtkFXBilateralBlurPass::TextureFormat() const
+{
+  switch (this->NumberOfComponents)
+  {
+    case 1:
+      return vtkFXRenderUtilities::R8;
+    case 2:
+      return vtkFXRenderUtilities::RG8;
+    default:
+      return vtkFXRenderUtilities::RGBA8;
+  }
+}
+
+void vtkFXBilateralBlurPass::RunStage(int mode, vtkOpenGLRenderWindow* window,
+  vtkTextureObject* input, vtkTextureObject* output, int step)
+{
+  std::string fs = vtkFXBilateralBlurFS;
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define FX_MODE " + std::to_string(mode) + "\n", false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
+
+  vtkFXRenderUtilities::RenderTargetScope target(window, this->FrameBuffer, output);
+  vtkShaderProgram* program =
+    vtkFXRenderUtilities::ReadyQuad(this->Quads[mode], this->QuadSources[mode], window, fs);
+  if (!program)
+  {
+    return;
+  }
+  vtkTextureObject* depth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
+  vtkTextureObject* normal = this->GBuffer->GetChannelTexture(GB::Normal);
+  input->Activate();
+  depth->Activate();
+  normal->Activate();
+  program->SetUniformi("fxInput", input->GetTextureUnit());
+  program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());
+  program->SetUniformi("fxNormal", normal->GetTextureUnit());
+  const int gbufferSize[2] = { static_cast<int>(depth->GetWidth()),
+    static_cast<int>(depth->GetHeight()) };
+  const int inputSize[2] = { static_cast<int>(input->GetWidth()),
+    static_cast<int>(input->GetHeight()) };
+  program->SetUniform2i("fxGBufferSize", gbufferSize);
+  program->SetUniform2i("fxInputSize", inputSize);
+  program->SetUniformi("fxStep", step);
+  program->SetUniformi("fxRadius", this->Radius);
+  program->SetUniformf("fxDepthSigma", static_cast<float>(this->DepthSigma));
+  program->SetUniformf("fxNormalPower", static_cast<float>(this->NormalPower));
+  this->Quads[mode]->Render();
+  input->Deactivate();
+  depth->Deactivate();
+  normal->Deactivate();
+}
+
+void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  this->Output = nullptr;
+  vtkTextureObject* input = this->InputEffect ? this->InputEffect->GetOutputTexture() : nullptr;
+  vtkTextureObject* depth = this->GBuffer ? this->GBuffer->GetChannelTexture(GB::LinearDepth) : nullptr;
+  if (!input || !depth || !this->GBuffer->GetChannelTexture(GB::Normal))
+  {
+    vtkErrorMacro("vtkFXBilateralBlurPass needs an input effect that wrote a texture and a "
+                  "G-buffer with normal and linear depth channels.");
+    return;
+  }
+  vtkOpenGLRenderWindow* window =
+    vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  const int width = static_cast<int>(input->GetWidth());
+  const int height = static_cast<int>(input->GetHeight());
+  const int fullWidth = static_cast<int>(depth->GetWidth());
+  // The input covers the G-buffer at full resolution or at half of it.
+  const int step = width < fullWidth ? 2 : 1;
+  const int format = this->TextureFormat();
+  vtkFXRenderUtilities::EnsureTexture(this->Horizontal, window, width, height, format);
+  vtkFXRenderUtilities::EnsureTexture(this->Blurred, window, width, height, format);
+  this->RunStage(HorizontalPass, window, input, this->Horizontal, step);
+  this->RunStage(VerticalPass, window, this->Horizontal, this->Blurred, step);
+  this->Output = this->Blurred;
+  if (step > 1)
+  {
+    vtkFXRenderUtilities::EnsureTexture(
+      this->Upsampled, window, fullWidth, static_cast<int>(depth->GetHeight()), format);
+    this->RunStage(Upsample, window, this->Blurred, this->Upsampled, step);
+    this->Output = this->Upsampled;
+  }
+  else if (this->Upsampled)
+  {
+    this->Upsampled->ReleaseGraphicsResources(window);
+    this->Upsampled = nullptr;
+  }
+}
+
+void vtkFXBilateralBlurPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    if (this->Quads[i])
+    {
+      this->Quads[i]->ReleaseGraphicsResources(w);
+      this->Quads[i].reset();
+    }
+    this->QuadSources[i].clear();
+  }
+  for (auto* texture : { &this->Horizontal, &this->Blurred, &this->Upsampled })
+  {
+    if (*texture)
+    {
+      (*texture)->ReleaseGraphicsResources(w);
+      *texture = nullptr;
+    }
+  }
+  this->Output = nullptr;
+  if (this->FrameBuffer)
+  {
+    this->FrameBuffer->ReleaseGraphicsResources(w);
+    this->FrameBuffer = nullptr;
+  }
+}
+
+void vtkFXBilateralBlurPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Radius: " << this->Radius << "\n";
+  os << indent << "DepthSigma: " << this->DepthSigma << "\n";
+  os << indent << "NormalPower: " << this->NormalPower << "\n";
+  os << indent << "NumberOfComponents: " << this->NumberOfComponents << "\n";
+}

@@ -1,0 +1,193 @@
+#include "vtkFXSSAOPass.h"
+
+#include "vtkFXGBufferPass.h"
+#include "vtkFXNormalCoding.h"
+#include "vtkFXRenderUtilities.h"
+#include "vtkFXSSAOFS.h"
+
+#include "vtkCamera.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkFXSSAOPass);
+
+namespace
+{
+using GB = vtkFXGBufferPass;
+
+// Radical inverse of i in `base`: a low-discrepancy sequence in [0,1), so
+// that few samples already cover the hemisphere evenly and deterministically.
+double RadicalInverse(unsigned int i, unsigned int base)
+{
+  double result = 0.0, scale = 1.0 / base;
+  for (; i > 0; i /= base, scale /= base)
+  {
+    result += (i % base) * scale;
+  }
+  return result;
+}
+}
+
+vtkFXSSAOPass::vtkFXSSAOPass() = default;
+vtkFXSSAOPass::~vtkFXSSAOPass() = default;
+
+unsigned int vtkFXSSAOPass::GetRequiredChannels()
+{
+  return GB::ChannelBit(GB::Normal) | GB::ChannelBit(GB::LinearDepth);
+}
+
+vtkTextureObject* vtkFXSSAOPass::GetOutputTexture()
+{
+  return this->Occlusion;
+}
+
+double vtkFXSSAOPass::ComputeRadius(vtkRenderer* ren) const
+{
+  if (this->Radius > 0.0)
+  {
+    return this->Radius;
+  }
+  double bounds[6];
+  ren->ComputeVisiblePropBounds(bounds);
+  if (!vtkMath::AreBoundsInitialized(bounds))
+  {
+    return 1.0;
+  }
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  return diagonal > 0.0 ? this->RadiusFraction * diagonal : 1.0;
+}
+
+void vtkFXSSAOPass::SetKernelUniforms(vtkShaderProgram* program) const
+{
+  // Seed 000's distribution: cosine-weighted directions (z = sqrt(r2)) and
+  // lengths u^3. Azimuths are stratified over [0, 2 pi); r2 and u follow
+  // radical-inverse sequences (bases 2 and 3).
+  const int n = this->NumberOfSamples;
+  std::vector<float> kernel(4 * n);
+  for (int i = 0; i < n; ++i)
+  {
+    const double r1 = (i + 0.5) / n;
+    const double r2 = RadicalInverse(i + 1, 2);
+    const double u = RadicalInverse(i + 1, 3);
+    const double phi = 2.0 * vtkMath::Pi() * r1;
+    kernel[4 * i + 0] = static_cast<float>(std::cos(phi) * std::sqrt(1.0 - r2));
+    kernel[4 * i + 1] = static_cast<float>(std::sin(phi) * std::sqrt(1.0 - r2));
+    kernel[4 * i + 2] = static_cast<float>(std::sqrt(r2));
+    kernel[4 * i + 3] = static_cast<float>(u * u * u);
+  }
+  program->SetUniform4fv("fxKernel", n, reinterpret_cast<const float(*)[4]>(kernel.data()));
+
+  // 4x4 tile of rotations within one azimuth stratum (2 pi / n), in the
+  // order of a 4x4 ordered-dither matrix so that neighbours differ most.
+  static const int order[16] = { 0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5 };
+  float noise[32];
+  for (int i = 0; i < 16; ++i)
+  {
+    const double angle = 2.0 * vtkMath::Pi() / n * (order[i] + 0.5) / 16.0;
+    noise[2 * i] = static_cast<float>(std::cos(angle));
+    noise[2 * i + 1] = static_cast<float>(std::sin(angle));
+  }
+  program->SetUniform2fv("fxNoise", 16, reinterpret_cast<const float(*)[2]>(noise));
+}
+
+void vtkFXSSAOPass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  vtkRenderer* ren = s->GetRenderer();
+  vtkTextureObject* depth = this->GBuffer ? this->GBuffer->GetChannelTexture(GB::LinearDepth) : nullptr;
+  vtkTextureObject* normal = this->GBuffer ? this->GBuffer->GetChannelTexture(GB::Normal) : nullptr;
+  if (!depth || !normal)
+  {
+    vtkErrorMacro("vtkFXSSAOPass needs a G-buffer with normal and linear depth channels.");
+    return;
+  }
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  const int fullWidth = static_cast<int>(depth->GetWidth());
+  const int fullHeight = static_cast<int>(depth->GetHeight());
+  const int step = this->HalfResolution ? 2 : 1;
+  vtkFXRenderUtilities::EnsureTexture(this->Occlusion, window, (fullWidth + step - 1) / step,
+    (fullHeight + step - 1) / step, vtkFXRenderUtilities::R8);
+  this->Occlusion->SetMinificationFilter(vtkTextureObject::Linear);
+  this->Occlusion->SetMagnificationFilter(vtkTextureObject::Linear);
+
+  std::ostringstream defines;
+  defines << "//VTK::System::Dec\n#define FX_SAMPLES " << this->NumberOfSamples << "\n";
+  std::string fs = vtkFXSSAOFS;
+  vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str(), false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
+
+  vtkFXRenderUtilities::RenderTargetScope target(window, this->FrameBuffer, this->Occlusion);
+  vtkShaderProgram* program =
+    vtkFXRenderUtilities::ReadyQuad(this->Quad, this->QuadSource, window, fs);
+  if (!program)
+  {
+    return;
+  }
+  depth->Activate();
+  normal->Activate();
+  program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());
+  program->SetUniformi("fxNormal", normal->GetTextureUnit());
+  const int size[2] = { fullWidth, fullHeight };
+  program->SetUniform2i("fxGBufferSize", size);
+  program->SetUniformi("fxStep", step);
+  vtkFXRenderUtilities::SetFrustumRayUniforms(program, ren);
+  // vtkShaderProgram hands a matrix's row-major elements to GLSL, which reads
+  // them column by column: upload the transpose so that GLSL sees P.
+  vtkNew<vtkMatrix4x4> projection;
+  projection->DeepCopy(
+    ren->GetActiveCamera()->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
+  projection->Transpose();
+  program->SetUniformMatrix("fxProjection", projection);
+  this->EffectiveRadius = this->ComputeRadius(ren);
+  program->SetUniformf("fxRadius", static_cast<float>(this->EffectiveRadius));
+  program->SetUniformf("fxBias", static_cast<float>(this->Bias * this->EffectiveRadius));
+  this->SetKernelUniforms(program);
+  this->Quad->Render();
+  depth->Deactivate();
+  normal->Deactivate();
+}
+
+void vtkFXSSAOPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  if (this->Quad)
+  {
+    this->Quad->ReleaseGraphicsResources(w);
+    this->Quad.reset();
+  }
+  this->QuadSource.clear();
+  if (this->Occlusion)
+  {
+    this->Occlusion->ReleaseGraphicsResources(w);
+    this->Occlusion = nullptr;
+  }
+  if (this->FrameBuffer)
+  {
+    this->FrameBuffer->ReleaseGraphicsResources(w);
+    this->FrameBuffer = nullptr;
+  }
+}
+
+void vtkFXSSAOPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Radius: " << this->Radius << " (effective " << this->EffectiveRadius << ")\n";
+  os << indent << "RadiusFraction: " << this->RadiusFraction << "\n";
+  os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
+  os << indent << "Bias: " << this->Bias << "\n";
+  os << indent << "HalfResolution: " << this->HalfResolution << "\n";
+}

@@ -1,0 +1,113 @@
+/**
+ * @class   vtkFXSSAOPass
+ * @brief   Screen-space ambient occlusion from the vtkFX G-buffer.
+ *
+ * Reads the G-buffer's normal and linear depth channels; writes an
+ * occlusion texture (R8, 1 = open, 0 = fully occluded) at full or half
+ * resolution (GetOutputTexture). Normal-oriented hemisphere of
+ * NumberOfSamples points, cosine-distributed with lengths u^3 (seed 000),
+ * rotated per pixel by a 4x4 tile, with a range check: an unbiased estimate
+ * of cosine-weighted obscurance with falloff 1 - (t/R)^(1/3) for solid
+ * occluders (see vtkFXSSAOFS.glsl), which is what vtkfx-bench's ray-traced
+ * reference computes.
+ *
+ * Radius is in world units; 0 (default) means 0.1 x the diagonal of the
+ * visible props' bounds, so any dataset scale works unchanged. Bias is a
+ * fraction of the radius. Pair it with vtkFXBilateralBlurPass to remove the
+ * noise of the rotated kernel (and to upsample a half-resolution result);
+ * vtkFXPipelinePass does so with SetAmbientOcclusion(true).
+ *
+ * Cost: one full-screen pass (a quarter of the pixels at half resolution)
+ * with NumberOfSamples depth fetches per pixel.
+ */
+#ifndef vtkFXSSAOPass_h
+#define vtkFXSSAOPass_h
+
+#include "vtkFXEffectPass.h"
+#include "vtkFXModule.h"
+#include "vtkSmartPointer.h"
+
+#include <memory>
+#include <string>
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkRenderer;
+
+class VTKFX_EXPORT vtkFXSSAOPass : public vtkFXEffectPass
+{
+public:
+  static vtkFXSSAOPass* New();
+  vtkTypeMacro(vtkFXSSAOPass, vtkFXEffectPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Occlusion radius in world units; 0 (default) = RadiusFraction x the
+   * diagonal of the visible props' bounds.
+   */
+  vtkSetClampMacro(Radius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Radius, double);
+
+  /**
+   * Fraction of the visible bounds' diagonal used when Radius is 0
+   * (dimensionless, default 0.1).
+   */
+  vtkSetClampMacro(RadiusFraction, double, 1e-6, 10.0);
+  vtkGetMacro(RadiusFraction, double);
+
+  /**
+   * Samples per pixel (1..64, default 16).
+   */
+  vtkSetClampMacro(NumberOfSamples, int, 1, 64);
+  vtkGetMacro(NumberOfSamples, int);
+
+  /**
+   * Offset along the normal and depth tolerance, as a fraction of the
+   * radius (0..0.5, default 0.02): keeps a surface from occluding itself.
+   */
+  vtkSetClampMacro(Bias, double, 0.0, 0.5);
+  vtkGetMacro(Bias, double);
+
+  /**
+   * Compute occlusion at half the viewport's resolution (default on).
+   */
+  vtkSetMacro(HalfResolution, bool);
+  vtkGetMacro(HalfResolution, bool);
+  vtkBooleanMacro(HalfResolution, bool);
+
+  /**
+   * The radius used in the last Render(), in world units.
+   */
+  vtkGetMacro(EffectiveRadius, double);
+
+  unsigned int GetRequiredChannels() override;
+  vtkTextureObject* GetOutputTexture() override;
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+protected:
+  vtkFXSSAOPass();
+  ~vtkFXSSAOPass() override;
+
+  double ComputeRadius(vtkRenderer* ren) const;
+  void SetKernelUniforms(vtkShaderProgram* program) const;
+
+  double Radius = 0.0;
+  double RadiusFraction = 0.1;
+  int NumberOfSamples = 16;
+  double Bias = 0.02;
+  bool HalfResolution = true;
+  double EffectiveRadius = 0.0;
+
+  vtkSmartPointer<vtkTextureObject> Occlusion;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  std::string QuadSource;
+
+private:
+  vtkFXSSAOPass(const vtkFXSSAOPass&) = delete;
+  void operator=(const vtkFXSSAOPass&) = delete;
+};
+
+#endif
