@@ -586,8 +586,8 @@ std::vector<std::string> vtkFXScenes::BuiltInSceneNames()
     "scene:molecule" };
 }
 
-bool vtkFXScenes::Populate(
-  vtkRenderer* renderer, const std::string& input, const Options& options, std::string& error)
+bool vtkFXScenes::Populate(vtkRenderer* renderer, const std::string& input,
+  const Options& options, std::string& error, double dataBounds[6])
 {
   bool ok = false;
   const bool lightKitScene = input != "scene:lights";
@@ -626,6 +626,10 @@ bool vtkFXScenes::Populate(
     error = "'" + input + "' has nothing visible";
     renderer->RemoveAllViewProps();
     return false;
+  }
+  if (dataBounds)
+  {
+    std::copy(bounds, bounds + 6, dataBounds);
   }
   if (options.Ground)
   {

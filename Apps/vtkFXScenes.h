@@ -34,9 +34,11 @@ struct Options
  * Fill `renderer` with INPUT: a built-in scene name or a file VTK can read
  * (.obj, .ply, .stl, .vtp, .vtk, .pdb). Frames the camera. On failure returns
  * false and puts a message in `error`; the renderer is then left empty.
+ * `dataBounds`, when given, receives the bounds of the data without the
+ * ground plane.
  */
 bool Populate(vtkRenderer* renderer, const std::string& input, const Options& options,
-  std::string& error);
+  std::string& error, double dataBounds[6] = nullptr);
 
 /**
  * Peak signal-to-noise ratio in dB between two RGB 8-bit images of the same

@@ -1,8 +1,9 @@
 // vtkfx-bench: error against run time, in one process, for vtkFX's passes
 // next to VTK's own rendering.
 //
-//   vtkfx-bench pipeline [INPUT ...] [--size WxH] [--frames N] --out DIR
+//   vtkfx-bench pipeline|ao [INPUT ...] [--size WxH] [--frames N] --out DIR
 //
+// "ao": see vtkFXBenchAO.cxx.
 // "pipeline": the vtkFX pipeline with no effect against VTK's forward render
 // of the same scene (the exact result it must reproduce). Two windows hold
 // identical copies of the scene, one with each renderer, and frames are
@@ -10,6 +11,7 @@
 // DIR/pipeline.csv (scene, method, setting, ms, rmse, psnr) with the median
 // frame time over N frames (PSNR over the pixels that show data), and
 // prints the time ratio and the pipeline's per-pass GPU times per scene.
+#include "vtkFXBench.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
 
@@ -33,61 +35,7 @@
 
 namespace
 {
-struct Options
-{
-  std::string Effect;
-  std::vector<std::string> Inputs;
-  int Width = 1280;
-  int Height = 720;
-  int Frames = 15;
-  std::string Out;
-};
-
-double Median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n == 0 ? -1.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
-}
-
-double RMSE(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
-{
-  double sum = 0.0;
-  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
-  {
-    const double d = (static_cast<double>(a[i]) - b[i]) / 255.0;
-    sum += d * d;
-  }
-  return a.empty() ? 0.0 : std::sqrt(sum / a.size());
-}
-
-double TimedRender(vtkRenderWindow* window, vtkTimerLog* timer)
-{
-  timer->StartTimer();
-  window->Render();
-  window->WaitForCompletion();
-  timer->StopTimer();
-  return 1000.0 * timer->GetElapsedTime();
-}
-
-vtkSmartPointer<vtkRenderWindow> MakeWindow(const Options& o)
-{
-  auto window = vtkSmartPointer<vtkRenderWindow>::New();
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(o.Width, o.Height);
-  return window;
-}
-
-// A fresh renderer holding `input` in `window` (windows are reused across
-// scenes: each one is an X connection).
-vtkSmartPointer<vtkRenderer> Stage(vtkRenderWindow* window, const std::string& input, std::string& error)
-{
-  window->GetRenderers()->RemoveAllItems();
-  auto renderer = vtkSmartPointer<vtkRenderer>::New();
-  window->AddRenderer(renderer);
-  return vtkFXScenes::Populate(renderer, input, vtkFXScenes::Options(), error) ? renderer : nullptr;
-}
+using namespace vtkFXBench;
 
 int BenchPipeline(const Options& o)
 {
@@ -162,8 +110,11 @@ int BenchPipeline(const Options& o)
 
 void Usage(std::ostream& os)
 {
-  os << "usage: vtkfx-bench pipeline [INPUT ...] [--size WxH] [--frames N] --out DIR\n"
-        "Without INPUT, runs the built-in scene list and the bunny and fandisk meshes.\n";
+  os << "usage: vtkfx-bench pipeline|ao [INPUT ...] [--size WxH] [--frames N] --out DIR\n"
+        "pipeline: vtkFX without effects against VTK's forward render (default: every\n"
+        "          built-in scene, the bunny and the fandisk, 1280x720)\n"
+        "ao:       ambient occlusion against a ray-traced reference, vtkFX's and VTK's\n"
+        "          (default: scene:corner, bunny, fandisk, 1crn.pdb, 640x480)\n";
 }
 }
 
@@ -186,6 +137,7 @@ int main(int argc, char* argv[])
         std::cerr << "vtkfx-bench: bad --size\n";
         return 2;
       }
+      o.SizeGiven = true;
     }
     else if (a == "--help" || a == "-h")
     {
@@ -203,18 +155,33 @@ int main(int argc, char* argv[])
     else
       o.Inputs.push_back(a);
   }
-  if (o.Effect != "pipeline" || o.Out.empty())
+  if ((o.Effect != "pipeline" && o.Effect != "ao") || o.Out.empty())
   {
     std::cerr << "vtkfx-bench: " << (o.Out.empty() ? "--out DIR is required" : "unknown benchmark '" + o.Effect + "'") << "\n";
     Usage(std::cerr);
     return 2;
   }
+  vtksys::SystemTools::MakeDirectory(o.Out);
+  const std::string data = vtkFXScenes::DataDirectory();
+  if (o.Effect == "ao")
+  {
+    if (o.Inputs.empty())
+    {
+      o.Inputs = { "scene:corner", data + "/stanford-bunny.obj", data + "/fandisk.obj",
+        data + "/1crn.pdb" };
+    }
+    if (!o.SizeGiven)
+    {
+      o.Width = 640;
+      o.Height = 480;
+    }
+    return BenchAO(o);
+  }
   if (o.Inputs.empty())
   {
     o.Inputs = vtkFXScenes::BuiltInSceneNames();
-    o.Inputs.push_back(vtkFXScenes::DataDirectory() + "/stanford-bunny.obj");
-    o.Inputs.push_back(vtkFXScenes::DataDirectory() + "/fandisk.obj");
+    o.Inputs.push_back(data + "/stanford-bunny.obj");
+    o.Inputs.push_back(data + "/fandisk.obj");
   }
-  vtksys::SystemTools::MakeDirectory(o.Out);
   return BenchPipeline(o);
 }

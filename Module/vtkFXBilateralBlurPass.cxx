@@ -23,7 +23,8 @@ enum Mode
 {
   HorizontalPass = 0,
   VerticalPass = 1,
-  Upsample = 2
+  Upsample = 2,
+  Guide = 3
 };
 }
 
@@ -57,11 +58,14 @@ void vtkFXBilateralBlurPass::RunStage(int mode, vtkOpenGLRenderWindow* window,
   vtkTextureObject* input, vtkTextureObject* output, int step)
 {
   std::string fs = vtkFXBilateralBlurFS;
-  vtkShaderProgram::Substitute(
-    fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define FX_MODE " + std::to_string(mode) + "\n", false);
+  vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
+    "//VTK::System::Dec\n#define FX_MODE " + std::to_string(mode) + "\n#define FX_NORMAL_POWER " +
+      std::to_string(this->NormalPower) + "\n",
+    false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
 
-  vtkFXRenderUtilities::RenderTargetScope target(window, this->FrameBuffer, output);
+  // One framebuffer per stage: its attachment never changes between frames.
+  vtkFXRenderUtilities::RenderTargetScope target(window, this->FrameBuffers[mode], output);
   vtkShaderProgram* program =
     vtkFXRenderUtilities::ReadyQuad(this->Quads[mode], this->QuadSources[mode], window, fs);
   if (!program)
@@ -73,6 +77,11 @@ void vtkFXBilateralBlurPass::RunStage(int mode, vtkOpenGLRenderWindow* window,
   input->Activate();
   depth->Activate();
   normal->Activate();
+  if (mode != Guide) // the guide stage writes it
+  {
+    this->GuideTexture->Activate();
+    program->SetUniformi("fxGuide", this->GuideTexture->GetTextureUnit());
+  }
   program->SetUniformi("fxInput", input->GetTextureUnit());
   program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());
   program->SetUniformi("fxNormal", normal->GetTextureUnit());
@@ -85,11 +94,14 @@ void vtkFXBilateralBlurPass::RunStage(int mode, vtkOpenGLRenderWindow* window,
   program->SetUniformi("fxStep", step);
   program->SetUniformi("fxRadius", this->Radius);
   program->SetUniformf("fxDepthSigma", static_cast<float>(this->DepthSigma));
-  program->SetUniformf("fxNormalPower", static_cast<float>(this->NormalPower));
   this->Quads[mode]->Render();
   input->Deactivate();
   depth->Deactivate();
   normal->Deactivate();
+  if (mode != Guide)
+  {
+    this->GuideTexture->Deactivate();
+  }
 }
 
 void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
@@ -114,6 +126,9 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   const int format = this->TextureFormat();
   vtkFXRenderUtilities::EnsureTexture(this->Horizontal, window, width, height, format);
   vtkFXRenderUtilities::EnsureTexture(this->Blurred, window, width, height, format);
+  vtkFXRenderUtilities::EnsureTexture(
+    this->GuideTexture, window, width, height, vtkFXRenderUtilities::RGBA16F);
+  this->RunStage(Guide, window, input, this->GuideTexture, step);
   this->RunStage(HorizontalPass, window, input, this->Horizontal, step);
   this->RunStage(VerticalPass, window, this->Horizontal, this->Blurred, step);
   this->Output = this->Blurred;
@@ -133,7 +148,7 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
 
 void vtkFXBilateralBlurPass::ReleaseGraphicsResources(vtkWindow* w)
 {
-  for (int i = 0; i < 3; ++i)
+  for (int i = 0; i < NumberOfModes; ++i)
   {
     if (this->Quads[i])
     {
@@ -142,7 +157,7 @@ void vtkFXBilateralBlurPass::ReleaseGraphicsResources(vtkWindow* w)
     }
     this->QuadSources[i].clear();
   }
-  for (auto* texture : { &this->Horizontal, &this->Blurred, &this->Upsampled })
+  for (auto* texture : { &this->GuideTexture, &this->Horizontal, &this->Blurred, &this->Upsampled })
   {
     if (*texture)
     {
@@ -151,10 +166,13 @@ void vtkFXBilateralBlurPass::ReleaseGraphicsResources(vtkWindow* w)
     }
   }
   this->Output = nullptr;
-  if (this->FrameBuffer)
+  for (auto& framebuffer : this->FrameBuffers)
   {
-    this->FrameBuffer->ReleaseGraphicsResources(w);
-    this->FrameBuffer = nullptr;
+    if (framebuffer)
+    {
+      framebuffer->ReleaseGraphicsResources(w);
+      framebuffer = nullptr;
+    }
   }
 }
 

@@ -7,13 +7,15 @@
  * or half of it, and the G-buffer's linear depth and normal channels as
  * guides. Writes a texture of the same number of values at the G-buffer's
  * full resolution (GetOutputTexture): a horizontal and a vertical pass of
- * 2 x Radius + 1 taps weighted by a Gaussian of the distance, the relative
- * depth difference (DepthSigma, a fraction of the depth, so the result does
- * not depend on the scene's scale) and the normal agreement (NormalPower),
+ * 2 x Radius + 1 taps weighted by a Gaussian of the distance, a Cauchy
+ * weight of the relative depth difference (DepthSigma, a fraction of the
+ * depth, so the result does not depend on the scene's scale) and the normal
+ * agreement (NormalPower),
  * then, for half-resolution input, a joint-bilateral upsample (4 taps).
  *
- * Cost: 2 x (2 Radius + 1) taps per input pixel, plus 4 taps per output
- * pixel when upsampling.
+ * Cost: one guide pass (normal and depth per input pixel, RGBA16F), then
+ * 2 x (2 Radius + 1) taps per input pixel, plus 4 taps per output pixel
+ * when upsampling.
  */
 #ifndef vtkFXBilateralBlurPass_h
 #define vtkFXBilateralBlurPass_h
@@ -52,10 +54,11 @@ public:
   vtkGetMacro(DepthSigma, double);
 
   /**
-   * Exponent of the normal agreement max(0, n . n0) (0..64, default 8).
+   * Integer exponent of the normal agreement max(0, n . n0) (0..32,
+   * default 8; compiled into the shader).
    */
-  vtkSetClampMacro(NormalPower, double, 0.0, 64.0);
-  vtkGetMacro(NormalPower, double);
+  vtkSetClampMacro(NormalPower, int, 0, 32);
+  vtkGetMacro(NormalPower, int);
 
   /**
    * Values per pixel, 1..4 (default 1); 3 serves the directional occlusion
@@ -80,16 +83,18 @@ protected:
 
   int Radius = 4;
   double DepthSigma = 0.05;
-  double NormalPower = 8.0;
+  int NormalPower = 8;
   int NumberOfComponents = 1;
 
+  vtkSmartPointer<vtkTextureObject> GuideTexture; // (normal, depth) at input resolution
   vtkSmartPointer<vtkTextureObject> Horizontal;
   vtkSmartPointer<vtkTextureObject> Blurred;
   vtkSmartPointer<vtkTextureObject> Upsampled;
   vtkTextureObject* Output = nullptr;
-  vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;
-  std::unique_ptr<vtkOpenGLQuadHelper> Quads[3];
-  std::string QuadSources[3];
+  static constexpr int NumberOfModes = 4; // horizontal, vertical, upsample, guide
+  vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffers[NumberOfModes];
+  std::unique_ptr<vtkOpenGLQuadHelper> Quads[NumberOfModes];
+  std::string QuadSources[NumberOfModes];
 
 private:
   vtkFXBilateralBlurPass(const vtkFXBilateralBlurPass&) = delete;

@@ -6,10 +6,15 @@
 // G-buffer instead of the image itself ("cross"/"joint" bilateral, Eisemann
 // and Durand 2004; upsampling: Kopf et al. 2007), as the seeds blur their
 // occlusion over 17 taps: a tap counts with a Gaussian of its distance times
-//   exp(-((d - d0) / (sigma d0))^2 / 2)   (depth relative to depth: the same
-//                                          at every scene scale)
-//   max(0, n . n0)^p                      (no bleeding across creases)
-// FX_MODE: 0 horizontal pass, 1 vertical pass (input resolution),
+//   1 / (1 + ((d - d0) / (sigma d0))^2)   (depth relative to depth: the same
+//                                          at every scene scale; a Cauchy
+//                                          weight, as selective as a Gaussian
+//                                          near 0 and cheaper than exp)
+//   max(0, n . n0)^p                      (no bleeding across creases; p is
+//                                          a compile-time integer, FX_NORMAL_POWER)
+// FX_MODE: 3 guide: normal and depth of each input texel, once, so that the
+//            taps below fetch one texel instead of two and decode nothing;
+//          0 horizontal pass, 1 vertical pass (input resolution),
 //          2 upsample from input to G-buffer resolution.
 
 // Texels are addressed through gl_FragCoord; texCoord is read once only so
@@ -18,6 +23,7 @@
 in vec2 texCoord;
 
 uniform sampler2D fxInput;
+uniform sampler2D fxGuide;   // (normal, linear depth) per input texel
 uniform sampler2D fxLinearDepth;
 uniform sampler2D fxNormal;
 uniform ivec2 fxGBufferSize;
@@ -25,7 +31,6 @@ uniform ivec2 fxInputSize;
 uniform int fxStep;          // G-buffer texels per input texel
 uniform int fxRadius;        // taps on each side
 uniform float fxDepthSigma;  // fraction of the depth
-uniform float fxNormalPower;
 
 //VTK::FXNormalCoding::Dec
 
@@ -36,16 +41,21 @@ ivec2 fxGuideTexel(ivec2 inputTexel)
   return min(inputTexel * fxStep, fxGBufferSize - 1);
 }
 
-float fxGuideWeight(float d0, vec3 n0, ivec2 guideTexel)
+// Weight of a tap whose guide (normal, depth) is g, for a pixel (n0, d0).
+float fxGuideWeight(float d0, vec3 n0, vec4 g)
 {
-  float d = texelFetch(fxLinearDepth, guideTexel, 0).r;
-  if (!(d > 0.0))
+  if (!(g.w > 0.0))
   {
     return 0.0; // background never contributes
   }
-  float r = (d - d0) / (fxDepthSigma * d0);
-  float wn = pow(max(dot(n0, fxDecodeNormal(texelFetch(fxNormal, guideTexel, 0).rg)), 0.0), fxNormalPower);
-  return exp(-0.5 * r * r) * wn;
+  float r = (g.w - d0) / (fxDepthSigma * d0);
+  float c = max(dot(n0, g.xyz), 0.0);
+  float wn = 1.0;
+  for (int i = 0; i < FX_NORMAL_POWER; ++i)
+  {
+    wn *= c;
+  }
+  return wn / (1.0 + r * r);
 }
 
 void main()
@@ -55,16 +65,20 @@ void main()
     discard; // never: see the declaration of texCoord
   }
   ivec2 p = ivec2(gl_FragCoord.xy);
-#if FX_MODE < 2
-  ivec2 guide = fxGuideTexel(p);
-  float d0 = texelFetch(fxLinearDepth, guide, 0).r;
+#if FX_MODE == 3
+  ivec2 texel = fxGuideTexel(p);
+  gl_FragData[0] = vec4(fxDecodeNormal(texelFetch(fxNormal, texel, 0).rg),
+    texelFetch(fxLinearDepth, texel, 0).r);
+#elif FX_MODE < 2
+  vec4 g0 = texelFetch(fxGuide, p, 0);
+  float d0 = g0.w;
   vec4 center = texelFetch(fxInput, p, 0);
   if (!(d0 > 0.0))
   {
     gl_FragData[0] = center;
     return;
   }
-  vec3 n0 = fxDecodeNormal(texelFetch(fxNormal, guide, 0).rg);
+  vec3 n0 = g0.xyz;
   ivec2 direction = FX_MODE == 0 ? ivec2(1, 0) : ivec2(0, 1);
   float sigma = max(0.5 * float(fxRadius), 0.5);
   vec4 sum = center;
@@ -76,7 +90,7 @@ void main()
     {
       continue;
     }
-    float w = exp(-0.5 * float(i * i) / (sigma * sigma)) * fxGuideWeight(d0, n0, fxGuideTexel(q));
+    float w = exp(-0.5 * float(i * i) / (sigma * sigma)) * fxGuideWeight(d0, n0, texelFetch(fxGuide, q, 0));
     sum += w * texelFetch(fxInput, q, 0);
     total += w;
   }
@@ -103,11 +117,11 @@ void main()
       ivec2 q = clamp(base + ivec2(i, j), ivec2(0), fxInputSize - 1);
       float bilinear = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
       vec4 v = texelFetch(fxInput, q, 0);
-      ivec2 g = fxGuideTexel(q);
+      vec4 g = texelFetch(fxGuide, q, 0);
       float w = bilinear * fxGuideWeight(d0, n0, g);
       sum += w * v;
       total += w;
-      float gap = abs(texelFetch(fxLinearDepth, g, 0).r - d0);
+      float gap = abs(g.w - d0);
       if (gap < nearestGap)
       {
         nearestGap = gap;

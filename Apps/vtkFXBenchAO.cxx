@@ -1,0 +1,427 @@
+// vtkfx-bench ao: ambient occlusion error against run time.
+//
+// For each scene, every method renders the scene with an ambient-only
+// material (so the image is the visibility term) in a window of its own;
+// frames are interleaved across the windows so all methods see the same
+// machine load. The occlusion a method shows is its image divided by the
+// unoccluded image (per pixel, brightest channel), compared with the
+// ray-traced reference of vtkFXReferenceAO (same radius, same falloff) over
+// the pixels where the reference sees a surface.
+// Methods: no occlusion; vtkFX SSAO at 8/16/32 samples, full and half
+// resolution, with its blur (and once without); VTK's vtkSSAOPass at kernel
+// sizes 16/32/64/128, with and without its blur. All use the radius
+// 0.1 x the diagonal of the data's bounds. The AO part of the time is the
+// median frame time minus that of the same renderer without occlusion.
+// Writes DIR/ao.csv (scene, method, setting, ms, rmse, psnr), a plot of PSNR
+// against milliseconds per scene (DIR/ao-SCENE.png, VTK's charts) and an
+// image strip per scene (DIR/ao-strip-SCENE.png: reference, vtkFX default,
+// best vtkSSAOPass, no occlusion).
+#include "vtkFXBench.h"
+#include "vtkFXBilateralBlurPass.h"
+#include "vtkFXPipelinePass.h"
+#include "vtkFXReferenceAO.h"
+#include "vtkFXSSAOPass.h"
+#include "vtkFXScenes.h"
+
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkAxis.h"
+#include "vtkChartLegend.h"
+#include "vtkChartXY.h"
+#include "vtkContextScene.h"
+#include "vtkContextView.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMapper.h"
+#include "vtkMoleculeMapper.h"
+#include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkPlot.h"
+#include "vtkPlotPoints.h"
+#include "vtkProperty.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSSAOPass.h"
+#include "vtkTable.h"
+#include "vtkTimerLog.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace
+{
+using namespace vtkFXBench;
+
+enum class Kind
+{
+  VTKForward, // VTK without occlusion: the unoccluded image and VTK's time base
+  FXPlain,    // vtkFX without occlusion: vtkFX's time base
+  FX,
+  VTK
+};
+
+struct Method
+{
+  Kind Type;
+  std::string Name;
+  std::string Setting;
+  int Samples = 16;
+  bool HalfResolution = true;
+  bool Blur = true;
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkSmartPointer<vtkRenderer> Renderer;
+  std::vector<double> FrameMs;
+  std::vector<float> Occlusion; // per pixel, -1 where the reference has no surface
+  double Ms = 0.0, RMSE = 0.0, PSNR = 0.0;
+};
+
+std::vector<Method> MakeMethods()
+{
+  std::vector<Method> methods;
+  methods.push_back({ Kind::VTKForward, "no-ao", "vtk forward" });
+  methods.push_back({ Kind::FXPlain, "vtkfx-plain", "no occlusion" });
+  for (int samples : { 8, 16, 32 })
+  {
+    for (bool half : { true, false })
+    {
+      Method m{ Kind::FX, "vtkfx-ssao" };
+      m.Samples = samples;
+      m.HalfResolution = half;
+      m.Setting = std::to_string(samples) + (half ? " half" : " full") + " blur";
+      methods.push_back(m);
+    }
+  }
+  Method raw{ Kind::FX, "vtkfx-ssao", "16 half noblur" };
+  raw.Blur = false;
+  methods.push_back(raw);
+  for (int kernel : { 16, 32, 64, 128 })
+  {
+    for (bool blur : { false, true })
+    {
+      Method m{ Kind::VTK, "vtk-ssao" };
+      m.Samples = kernel;
+      m.Blur = blur;
+      m.Setting = std::to_string(kernel) + (blur ? " blur" : " noblur");
+      methods.push_back(m);
+    }
+  }
+  return methods;
+}
+
+// Ambient-only white materials: the image is the visibility term.
+void UseAmbientOnlyMaterials(vtkRenderer* renderer)
+{
+  vtkActorCollection* actors = renderer->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    vtkProperty* p = actor->GetProperty();
+    p->SetAmbient(1.0);
+    p->SetDiffuse(0.0);
+    p->SetSpecular(0.0);
+    if (!vtkMoleculeMapper::SafeDownCast(actor->GetMapper()))
+    {
+      // (atoms keep their element colours; the ratio to the unoccluded
+      // image removes them)
+      p->SetColor(1.0, 1.0, 1.0);
+      actor->SetTexture(nullptr);
+      if (actor->GetMapper())
+      {
+        actor->GetMapper()->ScalarVisibilityOff();
+      }
+    }
+  }
+}
+
+void Install(Method& m, double radius)
+{
+  switch (m.Type)
+  {
+    case Kind::VTKForward:
+      break;
+    case Kind::FXPlain:
+    case Kind::FX:
+    {
+      vtkNew<vtkFXPipelinePass> pipeline;
+      if (m.Type == Kind::FX)
+      {
+        pipeline->AmbientOcclusionOn();
+        pipeline->GetSSAOPass()->SetRadius(radius);
+        pipeline->GetSSAOPass()->SetNumberOfSamples(m.Samples);
+        pipeline->GetSSAOPass()->SetHalfResolution(m.HalfResolution);
+        pipeline->GetOcclusionBlurPass()->SetEnabled(m.Blur);
+      }
+      m.Renderer->SetPass(pipeline);
+      break;
+    }
+    case Kind::VTK:
+    {
+      // As in VTK's own SSAO example: radius 0.1 x diagonal, bias 1/100 of it.
+      vtkNew<vtkRenderStepsPass> steps;
+      vtkNew<vtkSSAOPass> ssao;
+      ssao->SetDelegatePass(steps);
+      ssao->SetRadius(radius);
+      ssao->SetBias(0.01 * radius);
+      ssao->SetKernelSize(m.Samples);
+      ssao->SetBlur(m.Blur);
+      m.Renderer->SetPass(ssao);
+      break;
+    }
+  }
+}
+
+// Occlusion shown by `image` relative to the unoccluded `base`.
+std::vector<float> OcclusionOf(const std::vector<unsigned char>& image,
+  const std::vector<unsigned char>& base, const std::vector<float>& reference)
+{
+  std::vector<float> ao(reference.size(), -1.0f);
+  for (size_t i = 0; i < reference.size(); ++i)
+  {
+    if (reference[i] < 0.0f)
+    {
+      continue;
+    }
+    int c = 0;
+    for (int k = 1; k < 3; ++k)
+    {
+      c = base[3 * i + k] > base[3 * i + c] ? k : c;
+    }
+    const float denominator = base[3 * i + c];
+    ao[i] = denominator >= 8.0f ? std::min(1.0f, image[3 * i + c] / denominator) : 1.0f;
+  }
+  return ao;
+}
+
+void Compare(const std::vector<float>& ao, const std::vector<float>& reference, double& rmse,
+  double& psnr)
+{
+  double sum = 0.0;
+  size_t n = 0;
+  for (size_t i = 0; i < reference.size(); ++i)
+  {
+    if (reference[i] >= 0.0f)
+    {
+      const double d = ao[i] - reference[i];
+      sum += d * d;
+      ++n;
+    }
+  }
+  rmse = n ? std::sqrt(sum / n) : 0.0;
+  psnr = rmse > 0.0 ? 20.0 * std::log10(1.0 / rmse) : 99.0;
+}
+
+std::string FileTag(const std::string& input)
+{
+  std::string tag = input.substr(input.find_last_of("/:") + 1);
+  tag = tag.substr(0, tag.find('.'));
+  return tag;
+}
+
+void WritePNG(vtkImageData* image, const std::string& path)
+{
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+}
+
+// Reference | vtkFX default | best vtkSSAOPass | none, as grey images.
+void WriteStrip(const std::vector<const std::vector<float>*>& images, int w, int h,
+  const std::string& path)
+{
+  vtkNew<vtkImageData> strip;
+  strip->SetDimensions(w * static_cast<int>(images.size()), h, 1);
+  strip->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  auto* out = static_cast<unsigned char*>(strip->GetScalarPointer());
+  for (size_t k = 0; k < images.size(); ++k)
+  {
+    for (int y = 0; y < h; ++y)
+    {
+      for (int x = 0; x < w; ++x)
+      {
+        const float v = (*images[k])[static_cast<size_t>(y) * w + x];
+        out[static_cast<size_t>(y) * w * images.size() + k * w + x] =
+          v < 0.0f ? 40 : static_cast<unsigned char>(std::lround(255.0 * std::min(1.0f, v)));
+      }
+    }
+  }
+  WritePNG(strip, path);
+}
+
+void WritePlot(const std::vector<Method>& methods, const std::string& title, const std::string& path)
+{
+  vtkNew<vtkContextView> view;
+  view->GetRenderWindow()->SetOffScreenRendering(1);
+  view->GetRenderWindow()->SetSize(640, 480);
+  view->GetRenderer()->SetBackground(1, 1, 1);
+  vtkNew<vtkChartXY> chart;
+  view->GetScene()->AddItem(chart);
+  chart->SetTitle(title);
+  chart->SetShowLegend(true);
+  chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("AO time (ms per frame)");
+  chart->GetAxis(vtkAxis::LEFT)->SetTitle("PSNR against ray-traced AO (dB)");
+  const struct
+  {
+    Kind Type;
+    const char* Label;
+    unsigned char R, G, B;
+    int Marker;
+  } families[] = { { Kind::FX, "vtkFX SSAO", 200, 60, 30, vtkPlotPoints::CIRCLE },
+    { Kind::VTK, "VTK vtkSSAOPass", 30, 80, 200, vtkPlotPoints::SQUARE } };
+  for (const auto& family : families)
+  {
+    vtkNew<vtkTable> table;
+    vtkNew<vtkFloatArray> ms, psnr;
+    ms->SetName("ms");
+    psnr->SetName(family.Label);
+    for (const auto& m : methods)
+    {
+      if (m.Type == family.Type)
+      {
+        ms->InsertNextValue(static_cast<float>(std::max(0.0, m.Ms)));
+        psnr->InsertNextValue(static_cast<float>(m.PSNR));
+      }
+    }
+    table->AddColumn(ms);
+    table->AddColumn(psnr);
+    vtkPlot* points = chart->AddPlot(vtkChart::POINTS);
+    points->SetInputData(table, 0, 1);
+    points->SetColor(family.R, family.G, family.B, 255);
+    vtkPlotPoints::SafeDownCast(points)->SetMarkerStyle(family.Marker);
+    vtkPlotPoints::SafeDownCast(points)->SetMarkerSize(10);
+  }
+  view->GetRenderWindow()->Render();
+  vtkNew<vtkImageData> image;
+  std::vector<unsigned char> pixels = vtkFXScenes::Capture(view->GetRenderWindow());
+  image->SetDimensions(640, 480, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  std::copy(pixels.begin(), pixels.end(), static_cast<unsigned char*>(image->GetScalarPointer()));
+  WritePNG(image, path);
+}
+}
+
+namespace vtkFXBench
+{
+int BenchAO(const Options& o)
+{
+  const int rays = 256;
+  std::ofstream csv((o.Out + "/ao.csv").c_str());
+  std::ofstream notes((o.Out + "/ao-reference.txt").c_str());
+  if (!csv || !notes)
+  {
+    std::cerr << "vtkfx-bench: cannot write into " << o.Out << "\n";
+    return 1;
+  }
+  csv << "scene,method,setting,ms,rmse,psnr\n";
+  std::vector<Method> methods = MakeMethods();
+  for (auto& m : methods)
+  {
+    m.Window = MakeWindow(o);
+  }
+  vtkNew<vtkTimerLog> timer;
+  for (size_t s = 0; s < o.Inputs.size(); ++s)
+  {
+    const std::string& input = o.Inputs[s];
+    std::string error;
+    double bounds[6];
+    for (auto& m : methods)
+    {
+      m.Renderer = Stage(m.Window, input, error, bounds);
+      if (!m.Renderer)
+      {
+        std::cerr << "vtkfx-bench: " << error << "\n";
+        return 1;
+      }
+      UseAmbientOnlyMaterials(m.Renderer);
+      m.FrameMs.clear();
+    }
+    const double radius = 0.1 *
+      std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+        (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+        (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+    for (auto& m : methods)
+    {
+      Install(m, radius);
+      m.Window->Render(); // warm-up: shaders, buffers
+    }
+
+    std::cerr << "[" << s + 1 << "/" << o.Inputs.size() << "] " << input
+              << ": ray-traced reference, " << rays << " rays/pixel..." << std::flush;
+    vtkFXReferenceAO reference;
+    if (!reference.Build(methods[0].Renderer, error))
+    {
+      std::cerr << "\nvtkfx-bench: " << error << "\n";
+      return 1;
+    }
+    const auto truth = reference.Trace(methods[0].Renderer, o.Width, o.Height, radius, rays);
+    std::cerr << " " << truth.Seconds << " s\n";
+    notes << input << ": " << rays << " stratified cosine-weighted rays per pixel, radius "
+          << radius << ", " << truth.CoveredPixels << " pixels; standard error of the reference "
+          << "(RMS over pixels) " << truth.StandardErrorRMS << "; " << truth.Seconds << " s\n";
+
+    for (int f = 0; f < o.Frames; ++f)
+    {
+      std::cerr << "\r[" << s + 1 << "/" << o.Inputs.size() << "] " << input << ": frame "
+                << f + 1 << "/" << o.Frames << std::flush;
+      for (auto& m : methods)
+      {
+        m.FrameMs.push_back(TimedRender(m.Window, timer));
+      }
+    }
+    std::cerr << "\n";
+
+    const auto base = vtkFXScenes::Capture(methods[0].Window);
+    const double vtkBase = Median(methods[0].FrameMs), fxBase = Median(methods[1].FrameMs);
+    const Method* bestVTK = nullptr;
+    const Method* fxDefault = nullptr;
+    for (auto& m : methods)
+    {
+      m.Occlusion = m.Type == Kind::VTKForward || m.Type == Kind::FXPlain
+        ? std::vector<float>(truth.Occlusion.size(), 1.0f)
+        : OcclusionOf(vtkFXScenes::Capture(m.Window), base, truth.Occlusion);
+      Compare(m.Occlusion, truth.Occlusion, m.RMSE, m.PSNR);
+      const double frame = Median(m.FrameMs);
+      m.Ms = m.Type == Kind::VTK ? frame - vtkBase : m.Type == Kind::FX ? frame - fxBase : 0.0;
+      if (m.Type == Kind::FXPlain)
+      {
+        continue; // same image as no-ao
+      }
+      csv << input << "," << m.Name << "," << m.Setting << "," << m.Ms << "," << m.RMSE << ","
+          << m.PSNR << "\n";
+      std::cout << std::fixed << std::setprecision(2) << FileTag(input) << "  " << std::setw(12)
+                << m.Name << "  " << std::setw(16) << m.Setting << "  AO " << std::setw(7) << m.Ms
+                << " ms  frame/plain VTK " << std::setw(5) << frame / vtkBase << "  RMSE "
+                << std::setprecision(4) << m.RMSE << "  PSNR " << std::setprecision(2) << m.PSNR
+                << " dB\n";
+      if (m.Type == Kind::VTK && (!bestVTK || m.PSNR > bestVTK->PSNR))
+      {
+        bestVTK = &m;
+      }
+      if (m.Type == Kind::FX && m.Setting == "16 half blur")
+      {
+        fxDefault = &m;
+      }
+    }
+    std::cout << std::flush;
+    const std::string tag = FileTag(input);
+    WritePlot(methods, tag + ": AO error against time", o.Out + "/ao-" + tag + ".png");
+    if (bestVTK && fxDefault)
+    {
+      WriteStrip({ &truth.Occlusion, &fxDefault->Occlusion, &bestVTK->Occlusion,
+                   &methods[0].Occlusion },
+        o.Width, o.Height, o.Out + "/ao-strip-" + tag + ".png");
+    }
+  }
+  std::cout << "wrote " << o.Out << "/ao.csv, ao-*.png, ao-strip-*.png, ao-reference.txt ("
+            << o.Width << "x" << o.Height << ", median of " << o.Frames
+            << " interleaved frames)\n";
+  return 0;
+}
+}

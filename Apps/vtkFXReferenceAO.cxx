@@ -1,0 +1,411 @@
+#include "vtkFXReferenceAO.h"
+
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkCamera.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkCompositePolyDataMapper2.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkMolecule.h"
+#include "vtkMoleculeMapper.h"
+#include "vtkNew.h"
+#include "vtkPeriodicTable.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkTimerLog.h"
+#include "vtkTriangleFilter.h"
+#include "vtkUnsignedShortArray.h"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+struct vtkFXReferenceAO::Internals
+{
+  RTCDevice Device = nullptr;
+  RTCScene Scene = nullptr;
+
+  ~Internals() { this->Reset(); }
+  void Reset()
+  {
+    if (this->Scene)
+    {
+      rtcReleaseScene(this->Scene);
+      this->Scene = nullptr;
+    }
+    if (this->Device)
+    {
+      rtcReleaseDevice(this->Device);
+      this->Device = nullptr;
+    }
+  }
+
+  // Triangles of `poly` (any cells; strips and polygons are triangulated),
+  // transformed by `matrix` (world from model coordinates).
+  bool AddPolyData(vtkPolyData* poly, vtkMatrix4x4* matrix)
+  {
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputData(poly);
+    triangles->PassVertsOff();
+    triangles->PassLinesOff();
+    triangles->Update();
+    vtkPolyData* tri = triangles->GetOutput();
+    const vtkIdType nPoints = tri->GetNumberOfPoints();
+    const vtkIdType nCells = tri->GetNumberOfPolys();
+    if (nPoints == 0 || nCells == 0)
+    {
+      return false;
+    }
+    RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    float* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry,
+      RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), nPoints));
+    for (vtkIdType i = 0; i < nPoints; ++i)
+    {
+      double p[4] = { 0, 0, 0, 1 }, w[4];
+      tri->GetPoint(i, p);
+      matrix->MultiplyPoint(p, w);
+      for (int c = 0; c < 3; ++c)
+      {
+        vertices[3 * i + c] = static_cast<float>(w[c] / w[3]);
+      }
+    }
+    unsigned int* indices = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(geometry,
+      RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned int), nCells));
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    vtkCellArray* polys = tri->GetPolys();
+    vtkIdType k = 0;
+    for (polys->InitTraversal(); polys->GetNextCell(n, ids); ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        indices[3 * k + c] = static_cast<unsigned int>(n == 3 ? ids[c] : ids[0]);
+      }
+    }
+    this->Attach(geometry);
+    return true;
+  }
+
+  // Ball-and-stick geometry as vtkMoleculeMapper draws it: spheres of radius
+  // scale x (VDW or covalent or unit) radius, and round sticks between
+  // bonded atoms (their ends hide inside the atoms).
+  bool AddMolecule(vtkMoleculeMapper* mapper, vtkMatrix4x4* matrix)
+  {
+    vtkMolecule* molecule = mapper->GetInput();
+    if (!molecule || molecule->GetNumberOfAtoms() == 0)
+    {
+      return false;
+    }
+    // The ray-traced scene uses the matrix's uniform scale for radii.
+    const double scale = std::cbrt(std::fabs(matrix->Determinant()));
+    vtkNew<vtkPeriodicTable> table;
+    auto world = [matrix](const double p[3], float out[3]) {
+      double in[4] = { p[0], p[1], p[2], 1.0 }, w[4];
+      matrix->MultiplyPoint(in, w);
+      for (int c = 0; c < 3; ++c)
+      {
+        out[c] = static_cast<float>(w[c] / w[3]);
+      }
+    };
+    if (mapper->GetRenderAtoms())
+    {
+      const vtkIdType nAtoms = molecule->GetNumberOfAtoms();
+      RTCGeometry spheres = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+      float* data = static_cast<float*>(rtcSetNewGeometryBuffer(spheres, RTC_BUFFER_TYPE_VERTEX,
+        0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), nAtoms));
+      for (vtkIdType a = 0; a < nAtoms; ++a)
+      {
+        double p[3];
+        molecule->GetAtomPosition(a, p);
+        world(p, data + 4 * a);
+        const unsigned short z = molecule->GetAtomAtomicNumber(a);
+        double r = 1.0;
+        switch (mapper->GetAtomicRadiusType())
+        {
+          case vtkMoleculeMapper::VDWRadius:
+            r = table->GetVDWRadius(z);
+            break;
+          case vtkMoleculeMapper::CovalentRadius:
+            r = table->GetCovalentRadius(z);
+            break;
+          default:
+            break;
+        }
+        data[4 * a + 3] = static_cast<float>(r * mapper->GetAtomicRadiusScaleFactor() * scale);
+      }
+      this->Attach(spheres);
+    }
+    const vtkIdType nBonds = molecule->GetNumberOfBonds();
+    if (mapper->GetRenderBonds() && nBonds > 0)
+    {
+      RTCGeometry sticks = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
+      float* data = static_cast<float*>(rtcSetNewGeometryBuffer(sticks, RTC_BUFFER_TYPE_VERTEX, 0,
+        RTC_FORMAT_FLOAT4, 4 * sizeof(float), 2 * nBonds));
+      unsigned int* segments = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(
+        sticks, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned int), nBonds));
+      for (vtkIdType b = 0; b < nBonds; ++b)
+      {
+        vtkBond bond = molecule->GetBond(b);
+        double p0[3], p1[3];
+        molecule->GetAtomPosition(bond.GetBeginAtomId(), p0);
+        molecule->GetAtomPosition(bond.GetEndAtomId(), p1);
+        world(p0, data + 8 * b);
+        world(p1, data + 8 * b + 4);
+        data[8 * b + 3] = data[8 * b + 7] = static_cast<float>(mapper->GetBondRadius() * scale);
+        segments[b] = static_cast<unsigned int>(2 * b);
+      }
+      this->Attach(sticks);
+    }
+    return true;
+  }
+
+  void Attach(RTCGeometry geometry)
+  {
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(this->Scene, geometry);
+    rtcReleaseGeometry(geometry);
+  }
+};
+
+vtkFXReferenceAO::vtkFXReferenceAO()
+  : Impl(new Internals)
+{
+}
+
+vtkFXReferenceAO::~vtkFXReferenceAO() = default;
+
+bool vtkFXReferenceAO::Build(vtkRenderer* renderer, std::string& error)
+{
+  this->Impl->Reset();
+  this->Impl->Device = rtcNewDevice(nullptr);
+  if (!this->Impl->Device)
+  {
+    error = "Embree could not create a device";
+    return false;
+  }
+  this->Impl->Scene = rtcNewScene(this->Impl->Device);
+  rtcSetSceneFlags(this->Impl->Scene, RTC_SCENE_FLAG_ROBUST);
+  int added = 0;
+  vtkActorCollection* actors = renderer->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    if (!actor->GetVisibility() || !actor->GetMapper())
+    {
+      continue;
+    }
+    vtkNew<vtkMatrix4x4> matrix;
+    actor->GetMatrix(matrix);
+    if (auto* molecule = vtkMoleculeMapper::SafeDownCast(actor->GetMapper()))
+    {
+      added += this->Impl->AddMolecule(molecule, matrix) ? 1 : 0;
+    }
+    else if (auto* composite = vtkCompositePolyDataMapper2::SafeDownCast(actor->GetMapper()))
+    {
+      vtkCompositeDataSet* blocks = vtkCompositeDataSet::SafeDownCast(composite->GetInputDataObject(0, 0));
+      if (!blocks)
+      {
+        continue;
+      }
+      vtkSmartPointer<vtkCompositeDataIterator> leaves;
+      leaves.TakeReference(blocks->NewIterator());
+      for (leaves->InitTraversal(); !leaves->IsDoneWithTraversal(); leaves->GoToNextItem())
+      {
+        if (vtkPolyData* poly = vtkPolyData::SafeDownCast(leaves->GetCurrentDataObject()))
+        {
+          added += this->Impl->AddPolyData(poly, matrix) ? 1 : 0;
+        }
+      }
+    }
+    else if (auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper()))
+    {
+      mapper->Update();
+      if (vtkPolyData* poly = mapper->GetInput())
+      {
+        added += this->Impl->AddPolyData(poly, matrix) ? 1 : 0;
+      }
+    }
+  }
+  rtcCommitScene(this->Impl->Scene);
+  if (added == 0)
+  {
+    error = "no geometry the reference can trace";
+    return false;
+  }
+  return true;
+}
+
+void vtkFXReferenceAO::PixelRay(vtkMatrix4x4* inverse, int x, int y, int width, int height,
+  double origin[3], double direction[3])
+{
+  const double ndcX = 2.0 * (x + 0.5) / width - 1.0;
+  const double ndcY = 2.0 * (y + 0.5) / height - 1.0;
+  double p0[4] = { ndcX, ndcY, -1.0, 1.0 }, p1[4] = { ndcX, ndcY, 1.0, 1.0 };
+  double w0[4], w1[4];
+  inverse->MultiplyPoint(p0, w0);
+  inverse->MultiplyPoint(p1, w1);
+  for (int i = 0; i < 3; ++i)
+  {
+    origin[i] = w0[i] / w0[3];
+    direction[i] = w1[i] / w1[3] - origin[i];
+  }
+  vtkMath::Normalize(direction);
+}
+
+namespace
+{
+// Per-pixel, per-ray hash (PCG-style) to [0,1): deterministic jitter.
+double Hash(unsigned int a, unsigned int b)
+{
+  unsigned int h = a * 747796405u + b * 2891336453u + 12345u;
+  h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+  h = (h >> 22u) ^ h;
+  return (h & 0xffffffu) / 16777216.0;
+}
+
+bool Intersect(RTCScene scene, const double o[3], const double d[3], double tnear, double tfar,
+  double& t, double normal[3])
+{
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh;
+  rh.ray.org_x = static_cast<float>(o[0]);
+  rh.ray.org_y = static_cast<float>(o[1]);
+  rh.ray.org_z = static_cast<float>(o[2]);
+  rh.ray.dir_x = static_cast<float>(d[0]);
+  rh.ray.dir_y = static_cast<float>(d[1]);
+  rh.ray.dir_z = static_cast<float>(d[2]);
+  rh.ray.tnear = static_cast<float>(tnear);
+  rh.ray.tfar = static_cast<float>(tfar);
+  rh.ray.mask = 0xffffffffu;
+  rh.ray.flags = 0;
+  rh.ray.time = 0.0f;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene, &context, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+  {
+    return false;
+  }
+  t = rh.ray.tfar;
+  normal[0] = rh.hit.Ng_x;
+  normal[1] = rh.hit.Ng_y;
+  normal[2] = rh.hit.Ng_z;
+  return true;
+}
+}
+
+vtkFXReferenceAO::Result vtkFXReferenceAO::Trace(
+  vtkRenderer* renderer, int width, int height, double radius, int raysPerPixel, int threads) const
+{
+  Result result;
+  result.Width = width;
+  result.Height = height;
+  result.Occlusion.assign(static_cast<size_t>(width) * height, -1.0f);
+  if (!this->Impl->Scene)
+  {
+    return result;
+  }
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  vtkNew<vtkMatrix4x4> inverse;
+  inverse->DeepCopy(renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
+    static_cast<double>(width) / height, -1, 1));
+  inverse->Invert();
+  const int side = std::max(1, static_cast<int>(std::ceil(std::sqrt(raysPerPixel))));
+  const int rays = side * side;
+  std::vector<double> variance(result.Occlusion.size(), 0.0);
+  RTCScene scene = this->Impl->Scene;
+
+  std::atomic<int> nextRow(0);
+  auto work = [&]() {
+    for (int y = nextRow++; y < height; y = nextRow++)
+    {
+      for (int x = 0; x < width; ++x)
+      {
+        double o[3], d[3], t, n[3];
+        PixelRay(inverse, x, y, width, height, o, d);
+        if (!Intersect(scene, o, d, 0.0, 1e30, t, n) || vtkMath::Normalize(n) == 0.0)
+        {
+          continue;
+        }
+        if (vtkMath::Dot(n, d) > 0.0)
+        {
+          n[0] = -n[0], n[1] = -n[1], n[2] = -n[2]; // face the viewer
+        }
+        double p[3] = { o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2] };
+        // Tangent frame of the geometric normal.
+        double helper[3] = { 0, 0, 1 };
+        if (std::fabs(n[2]) > 0.9)
+        {
+          helper[0] = 1, helper[2] = 0;
+        }
+        double tx[3], ty[3];
+        vtkMath::Cross(helper, n, tx);
+        vtkMath::Normalize(tx);
+        vtkMath::Cross(n, tx, ty);
+        // Leave the surface by a hair to avoid hitting it again.
+        const double offset = 1e-4 * radius + 1e-6 * std::max(std::fabs(p[0]),
+          std::max(std::fabs(p[1]), std::fabs(p[2])));
+        const double start[3] = { p[0] + offset * n[0], p[1] + offset * n[1], p[2] + offset * n[2] };
+        const unsigned int pixel = static_cast<unsigned int>(y * width + x);
+        double sum = 0.0, sum2 = 0.0;
+        for (int s = 0; s < rays; ++s)
+        {
+          // Stratified cosine-weighted direction (Malley's method).
+          const double u1 = ((s % side) + Hash(pixel, 2 * s)) / side;
+          const double u2 = ((s / side) + Hash(pixel, 2 * s + 1)) / side;
+          const double r = std::sqrt(u1), phi = 2.0 * vtkMath::Pi() * u2;
+          const double lx = r * std::cos(phi), ly = r * std::sin(phi);
+          const double lz = std::sqrt(std::max(0.0, 1.0 - u1));
+          double w[3];
+          for (int c = 0; c < 3; ++c)
+          {
+            w[c] = lx * tx[c] + ly * ty[c] + lz * n[c];
+          }
+          double hitT, hitN[3];
+          double f = 0.0;
+          if (Intersect(scene, start, w, 0.0, radius, hitT, hitN))
+          {
+            f = 1.0 - std::cbrt(std::min(1.0, std::max(0.0, hitT / radius)));
+          }
+          sum += f;
+          sum2 += f * f;
+        }
+        const double mean = sum / rays;
+        result.Occlusion[pixel] = static_cast<float>(1.0 - mean);
+        variance[pixel] = std::max(0.0, sum2 / rays - mean * mean) / rays;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int i = 0; i < std::max(1, threads); ++i)
+  {
+    pool.emplace_back(work);
+  }
+  for (auto& thread : pool)
+  {
+    thread.join();
+  }
+  double total = 0.0;
+  for (size_t i = 0; i < variance.size(); ++i)
+  {
+    if (result.Occlusion[i] >= 0.0f)
+    {
+      total += variance[i];
+      ++result.CoveredPixels;
+    }
+  }
+  result.StandardErrorRMS = result.CoveredPixels ? std::sqrt(total / result.CoveredPixels) : 0.0;
+  timer->StopTimer();
+  result.Seconds = timer->GetElapsedTime();
+  return result;
+}

@@ -1,0 +1,72 @@
+// vtkFXReferenceAO: ray-traced ambient occlusion (Embree) of a renderer's
+// scene, the ground truth against which vtkfx-bench measures screen-space
+// occlusion.
+//
+// For each pixel, a primary ray through the pixel centre finds the visible
+// surface and its geometric normal (faced towards the viewer); from it,
+// RaysPerPixel cosine-distributed rays (stratified on a square grid, jittered
+// by a per-pixel hash: deterministic) look for the nearest hit within the
+// radius R. The occlusion of a ray that hits at distance t is
+//   f(t) = 1 - (t / R)^(1/3),
+// the falloff whose expectation vtkFXSSAOPass's sample lengths u^3 estimate,
+// and the pixel's value is 1 - mean f. Pixels whose primary ray misses hold
+// -1 (no surface).
+//
+// Geometry: triangles of every visible vtkActor whose mapper is a
+// vtkPolyDataMapper (its input, through the actor's matrix) or a
+// vtkCompositePolyDataMapper2 (its leaves), and the spheres and sticks of a
+// vtkMoleculeMapper (ball-and-stick radii). Other props are left out.
+#ifndef vtkFXReferenceAO_h
+#define vtkFXReferenceAO_h
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkMatrix4x4;
+class vtkRenderer;
+
+class vtkFXReferenceAO
+{
+public:
+  vtkFXReferenceAO();
+  ~vtkFXReferenceAO();
+
+  /**
+   * Builds the ray-tracing scene from the renderer's visible actors, in
+   * world coordinates. Returns false (with a message) when nothing usable
+   * is found or Embree fails.
+   */
+  bool Build(vtkRenderer* renderer, std::string& error);
+
+  struct Result
+  {
+    int Width = 0;
+    int Height = 0;
+    std::vector<float> Occlusion;     // 1 = open, -1 = no surface; rows bottom-up
+    double StandardErrorRMS = 0.0;    // RMS over covered pixels of each pixel's standard error
+    int CoveredPixels = 0;
+    double Seconds = 0.0;
+  };
+
+  /**
+   * Traces the renderer's current view at width x height pixels with the
+   * given radius (world units) and rays per pixel (rounded up to a square).
+   */
+  Result Trace(vtkRenderer* renderer, int width, int height, double radius, int raysPerPixel,
+    int threads = 2) const;
+
+  /**
+   * World-space ray through the centre of pixel (x, y) of a width x height
+   * view, from the inverse of the camera's composite projection (double
+   * precision; any projection). `direction` is unit length.
+   */
+  static void PixelRay(vtkMatrix4x4* inverseProjection, int x, int y, int width, int height,
+    double origin[3], double direction[3]);
+
+private:
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+#endif
