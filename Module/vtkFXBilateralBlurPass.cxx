@@ -2,6 +2,7 @@
 
 #include "vtkFXBilateralBlurFS.h"
 #include "vtkFXGBufferPass.h"
+#include "vtkFXJointUpsample.h"
 #include "vtkFXNormalCoding.h"
 #include "vtkFXRenderUtilities.h"
 
@@ -19,11 +20,20 @@ vtkStandardNewMacro(vtkFXBilateralBlurPass);
 namespace
 {
 using GB = vtkFXGBufferPass;
+void ReleaseTexture(vtkSmartPointer<vtkTextureObject>& texture, vtkWindow* window)
+{
+  if (texture)
+  {
+    texture->ReleaseGraphicsResources(window);
+    texture = nullptr;
+  }
+}
+
 enum Mode
 {
   HorizontalPass = 0,
   VerticalPass = 1,
-  Upsample = 2,
+  UpsamplePass = 2,
   Guide = 3
 };
 }
@@ -55,14 +65,16 @@ int vtkFXBilateralBlurPass::TextureFormat() const
 }
 
 void vtkFXBilateralBlurPass::RunStage(int mode, vtkOpenGLRenderWindow* window,
-  vtkTextureObject* input, vtkTextureObject* output, int step)
+  vtkTextureObject* input, vtkTextureObject* output, int step, bool packed)
 {
   std::string fs = vtkFXBilateralBlurFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
-    "//VTK::System::Dec\n#define FX_MODE " + std::to_string(mode) + "\n#define FX_NORMAL_POWER " +
-      std::to_string(this->NormalPower) + "\n",
+    "//VTK::System::Dec\n#define FX_MODE " + std::to_string(mode) + "\n#define FX_PACKED " +
+      (packed ? "1" : "0") + "\n#define FX_NORMAL_POWER " +
+      std::to_string(packed ? 0 : this->NormalPower) + "\n",
     false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXJointUpsample::Dec", vtkFXJointUpsample, false);
 
   // One framebuffer per stage: its attachment never changes between frames.
   vtkFXRenderUtilities::RenderTargetScope target(window, this->FrameBuffers[mode], output);
@@ -77,7 +89,7 @@ void vtkFXBilateralBlurPass::RunStage(int mode, vtkOpenGLRenderWindow* window,
   input->Activate();
   depth->Activate();
   normal->Activate();
-  if (mode != Guide) // the guide stage writes it
+  if (mode != Guide && !packed) // the guide stage writes it; packed input has none
   {
     this->GuideTexture->Activate();
     program->SetUniformi("fxGuide", this->GuideTexture->GetTextureUnit());
@@ -98,7 +110,7 @@ void vtkFXBilateralBlurPass::RunStage(int mode, vtkOpenGLRenderWindow* window,
   input->Deactivate();
   depth->Deactivate();
   normal->Deactivate();
-  if (mode != Guide)
+  if (mode != Guide && !packed)
   {
     this->GuideTexture->Deactivate();
   }
@@ -123,26 +135,40 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   const int fullWidth = static_cast<int>(depth->GetWidth());
   // The input covers the G-buffer at full resolution or at half of it.
   const int step = width < fullWidth ? 2 : 1;
+  // One value with its depth alongside (vtkFXSSAOPass's output) needs no
+  // guide texture: each tap is one fetch.
+  const bool packed = this->NumberOfComponents == 1 && input->GetComponents() == 2;
   const int format = this->TextureFormat();
-  vtkFXRenderUtilities::EnsureTexture(this->Horizontal, window, width, height, format);
-  vtkFXRenderUtilities::EnsureTexture(this->Blurred, window, width, height, format);
-  vtkFXRenderUtilities::EnsureTexture(
-    this->GuideTexture, window, width, height, vtkFXRenderUtilities::RGBA16F);
-  this->RunStage(Guide, window, input, this->GuideTexture, step);
-  this->RunStage(HorizontalPass, window, input, this->Horizontal, step);
-  this->RunStage(VerticalPass, window, this->Horizontal, this->Blurred, step);
+  const int stageFormat = packed ? vtkFXRenderUtilities::RG16F : format;
+  vtkFXRenderUtilities::EnsureTexture(this->Horizontal, window, width, height, stageFormat);
+  vtkFXRenderUtilities::EnsureTexture(this->Blurred, window, width, height, stageFormat);
+  if (packed)
+  {
+    ReleaseTexture(this->GuideTexture, window);
+  }
+  else
+  {
+    vtkFXRenderUtilities::EnsureTexture(
+      this->GuideTexture, window, width, height, vtkFXRenderUtilities::RGBA16F);
+    this->RunStage(Guide, window, input, this->GuideTexture, step, packed);
+  }
+  this->RunStage(HorizontalPass, window, input, this->Horizontal, step, packed);
+  this->RunStage(VerticalPass, window, this->Horizontal, this->Blurred, step, packed);
+  // Consumers that upsample inline blend neighbours with the hardware.
+  this->Blurred->SetMinificationFilter(vtkTextureObject::Linear);
+  this->Blurred->SetMagnificationFilter(vtkTextureObject::Linear);
   this->Output = this->Blurred;
-  if (step > 1)
+  // Only depth-carrying output can be upsampled by its consumer.
+  if (step > 1 && (this->Upsample || !packed))
   {
     vtkFXRenderUtilities::EnsureTexture(
       this->Upsampled, window, fullWidth, static_cast<int>(depth->GetHeight()), format);
-    this->RunStage(Upsample, window, this->Blurred, this->Upsampled, step);
+    this->RunStage(UpsamplePass, window, this->Blurred, this->Upsampled, step, packed);
     this->Output = this->Upsampled;
   }
-  else if (this->Upsampled)
+  else
   {
-    this->Upsampled->ReleaseGraphicsResources(window);
-    this->Upsampled = nullptr;
+    ReleaseTexture(this->Upsampled, window);
   }
 }
 
@@ -159,11 +185,7 @@ void vtkFXBilateralBlurPass::ReleaseGraphicsResources(vtkWindow* w)
   }
   for (auto* texture : { &this->GuideTexture, &this->Horizontal, &this->Blurred, &this->Upsampled })
   {
-    if (*texture)
-    {
-      (*texture)->ReleaseGraphicsResources(w);
-      *texture = nullptr;
-    }
+    ReleaseTexture(*texture, w);
   }
   this->Output = nullptr;
   for (auto& framebuffer : this->FrameBuffers)

@@ -13,9 +13,12 @@
  * agreement (NormalPower),
  * then, for half-resolution input, a joint-bilateral upsample (4 taps).
  *
- * Cost: one guide pass (normal and depth per input pixel, RGBA16F), then
- * 2 x (2 Radius + 1) taps per input pixel, plus 4 taps per output pixel
- * when upsampling.
+ * A one-value input that carries its linear depth in its second channel
+ * (what vtkFXSSAOPass writes) is blurred by depth alone, one fetch per tap;
+ * other inputs first get a guide texture (normal and depth per input pixel).
+ *
+ * Cost: 2 x (2 Radius + 1) taps per input pixel, plus 4 taps per output
+ * pixel when upsampling, plus the guide pass for multi-value inputs.
  */
 #ifndef vtkFXBilateralBlurPass_h
 #define vtkFXBilateralBlurPass_h
@@ -67,6 +70,17 @@ public:
   vtkSetClampMacro(NumberOfComponents, int, 1, 4);
   vtkGetMacro(NumberOfComponents, int);
 
+  /**
+   * Upsample a half-resolution input to full resolution (default on). Off,
+   * a one-value input that carries its depth (see above) stays at its
+   * resolution with the depth in the output's second channel, for a
+   * consumer that upsamples inline (vtkFXCompositePass does: it saves a
+   * full-resolution pass); other inputs are always upsampled.
+   */
+  vtkSetMacro(Upsample, bool);
+  vtkGetMacro(Upsample, bool);
+  vtkBooleanMacro(Upsample, bool);
+
   unsigned int GetRequiredChannels() override;
   vtkTextureObject* GetOutputTexture() override;
 
@@ -78,13 +92,14 @@ protected:
   ~vtkFXBilateralBlurPass() override;
 
   void RunStage(int mode, vtkOpenGLRenderWindow* window, vtkTextureObject* input,
-    vtkTextureObject* output, int step);
+    vtkTextureObject* output, int step, bool packed);
   int TextureFormat() const;
 
   int Radius = 4;
   double DepthSigma = 0.05;
   int NormalPower = 8;
   int NumberOfComponents = 1;
+  bool Upsample = true;
 
   vtkSmartPointer<vtkTextureObject> GuideTexture; // (normal, depth) at input resolution
   vtkSmartPointer<vtkTextureObject> Horizontal;

@@ -12,10 +12,14 @@
 //                                          near 0 and cheaper than exp)
 //   max(0, n . n0)^p                      (no bleeding across creases; p is
 //                                          a compile-time integer, FX_NORMAL_POWER)
+// The upsample is vtkFXJointUpsample.glsl's.
 // FX_MODE: 3 guide: normal and depth of each input texel, once, so that the
 //            taps below fetch one texel instead of two and decode nothing;
 //          0 horizontal pass, 1 vertical pass (input resolution),
 //          2 upsample from input to G-buffer resolution.
+// FX_PACKED: one value whose linear depth rides in .g (vtkFXSSAOPass's
+//            output): every tap is a single fetch, weighted by depth only,
+//            and no guide stage runs. A software rasteriser pays per fetch.
 
 // Texels are addressed through gl_FragCoord; texCoord is read once only so
 // that the quad's texture-coordinate attribute stays in the program
@@ -34,11 +38,23 @@ uniform float fxDepthSigma;  // fraction of the depth
 
 //VTK::FXNormalCoding::Dec
 
+//VTK::FXJointUpsample::Dec
+
 //VTK::Output::Dec
 
 ivec2 fxGuideTexel(ivec2 inputTexel)
 {
   return min(inputTexel * fxStep, fxGBufferSize - 1);
+}
+
+// Guide (normal, depth) of input texel q whose value is `tap`.
+vec4 fxTapGuide(ivec2 q, vec4 tap, vec3 n0)
+{
+#if FX_PACKED
+  return vec4(n0, tap.g);
+#else
+  return texelFetch(fxGuide, q, 0);
+#endif
 }
 
 // Weight of a tap whose guide (normal, depth) is g, for a pixel (n0, d0).
@@ -70,9 +86,9 @@ void main()
   gl_FragData[0] = vec4(fxDecodeNormal(texelFetch(fxNormal, texel, 0).rg),
     texelFetch(fxLinearDepth, texel, 0).r);
 #elif FX_MODE < 2
-  vec4 g0 = texelFetch(fxGuide, p, 0);
-  float d0 = g0.w;
   vec4 center = texelFetch(fxInput, p, 0);
+  vec4 g0 = fxTapGuide(p, center, vec3(0.0, 0.0, 1.0));
+  float d0 = g0.w;
   if (!(d0 > 0.0))
   {
     gl_FragData[0] = center;
@@ -90,46 +106,26 @@ void main()
     {
       continue;
     }
-    float w = exp(-0.5 * float(i * i) / (sigma * sigma)) * fxGuideWeight(d0, n0, texelFetch(fxGuide, q, 0));
-    sum += w * texelFetch(fxInput, q, 0);
+    vec4 tap = texelFetch(fxInput, q, 0);
+    float w = exp(-0.5 * float(i * i) / (sigma * sigma)) * fxGuideWeight(d0, n0, fxTapGuide(q, tap, n0));
+    sum += w * tap;
     total += w;
   }
   gl_FragData[0] = sum / total;
+#if FX_PACKED
+  gl_FragData[0].g = d0; // the depth travels on to the next stage
+#endif
 #else
   float d0 = texelFetch(fxLinearDepth, p, 0).r;
-  vec2 x = (vec2(p) + 0.5) / float(fxStep) - 0.5;
-  ivec2 base = ivec2(floor(x));
-  vec2 f = x - vec2(base);
   if (!(d0 > 0.0))
   {
-    gl_FragData[0] = texelFetch(fxInput, clamp(base, ivec2(0), fxInputSize - 1), 0);
+    gl_FragData[0] = texelFetch(fxInput, clamp(p / fxStep, ivec2(0), fxInputSize - 1), 0);
     return;
   }
-  vec3 n0 = fxDecodeNormal(texelFetch(fxNormal, p, 0).rg);
-  vec4 sum = vec4(0.0);
-  float total = 0.0;
-  vec4 nearest = vec4(1.0);
-  float nearestGap = 1e30;
-  for (int j = 0; j < 2; ++j)
-  {
-    for (int i = 0; i < 2; ++i)
-    {
-      ivec2 q = clamp(base + ivec2(i, j), ivec2(0), fxInputSize - 1);
-      float bilinear = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
-      vec4 v = texelFetch(fxInput, q, 0);
-      vec4 g = texelFetch(fxGuide, q, 0);
-      float w = bilinear * fxGuideWeight(d0, n0, g);
-      sum += w * v;
-      total += w;
-      float gap = abs(g.w - d0);
-      if (gap < nearestGap)
-      {
-        nearestGap = gap;
-        nearest = v;
-      }
-    }
-  }
-  // No similar neighbour (a thin feature): take the closest in depth.
-  gl_FragData[0] = total > 1e-4 ? sum / total : nearest;
+#if FX_PACKED
+  gl_FragData[0] = fxJointUpsample(fxInput, true, fxInput, 1, fxInputSize, fxStep, p, d0, fxDepthSigma);
+#else
+  gl_FragData[0] = fxJointUpsample(fxInput, false, fxGuide, 3, fxInputSize, fxStep, p, d0, fxDepthSigma);
+#endif
 #endif
 }

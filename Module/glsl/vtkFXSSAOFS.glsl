@@ -58,7 +58,7 @@ void main()
   vec2 code = texelFetch(fxNormal, texel, 0).rg;
   if (!(depth > 0.0) || fxIsUnlit(code))
   {
-    gl_FragData[0] = vec4(1.0); // no surface, or one VTK does not light
+    gl_FragData[0] = vec4(1.0, depth, 0.0, 1.0); // no surface, or one VTK does not light
     return;
   }
   vec2 ndc = (vec2(texel) + 0.5) / vec2(fxGBufferSize) * 2.0 - 1.0;
@@ -101,5 +101,7 @@ void main()
     }
   }
   float ao = clamp(1.0 - occlusion / float(FX_SAMPLES), 0.0, 1.0);
-  gl_FragData[0] = vec4(ao, ao, ao, 1.0);
+  // The depth rides along as the blur's guide (RG16F: ~1e-3 relative,
+  // finer than the blur's depth tolerance).
+  gl_FragData[0] = vec4(ao, depth, 0.0, 1.0);
 }

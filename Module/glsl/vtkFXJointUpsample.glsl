@@ -1,0 +1,42 @@
+// Joint-bilateral upsampling (Kopf, Cohen, Lischinski, Uyttendaele 2007):
+// the value at a full-resolution pixel of linear depth d0 is the bilinear
+// blend of the 4 nearest low-resolution texels, each weighted also by
+// 1 / (1 + ((d - d0) / (sigma d0))^2), its depth agreement (relative to the
+// depth: scale-free). The texels' linear depths are component
+// `depthComponent` of `depths`, or, when `depthInG` (a constant at every call,
+// so the branch compiles away), the values' own .g as vtkFXSSAOPass writes
+// them, saving a fetch per texel; with no agreeing texel (a feature
+// thinner than a low-resolution texel) the texel closest in depth wins.
+// Used by vtkFXBilateralBlurFS.
+vec4 fxJointUpsample(sampler2D lowResolution, bool depthInG, sampler2D depths, int depthComponent,
+  ivec2 lowSize, int step, ivec2 pixel, float d0, float depthSigma)
+{
+  vec2 x = (vec2(pixel) + 0.5) / float(step) - 0.5;
+  ivec2 base = ivec2(floor(x));
+  vec2 f = x - vec2(base);
+  vec4 sum = vec4(0.0);
+  float total = 0.0;
+  vec4 nearest = vec4(1.0);
+  float nearestGap = 1e30;
+  for (int j = 0; j < 2; ++j)
+  {
+    for (int i = 0; i < 2; ++i)
+    {
+      ivec2 q = clamp(base + ivec2(i, j), ivec2(0), lowSize - 1);
+      vec4 v = texelFetch(lowResolution, q, 0);
+      float d = depthInG ? v.g : texelFetch(depths, q, 0)[depthComponent];
+      float bilinear = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
+      float r = (d - d0) / (depthSigma * d0);
+      float w = d > 0.0 ? bilinear / (1.0 + r * r) : 0.0;
+      sum += w * v;
+      total += w;
+      float gap = abs(d - d0);
+      if (gap < nearestGap)
+      {
+        nearestGap = gap;
+        nearest = v;
+      }
+    }
+  }
+  return total > 1e-4 ? sum / total : nearest;
+}
