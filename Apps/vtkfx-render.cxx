@@ -7,6 +7,7 @@
 #include "vtkFXScenes.h"
 
 #include "vtkFXBilateralBlurPass.h"
+#include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
 
@@ -50,7 +51,8 @@ void Usage(std::ostream& os)
 {
   os << "usage: vtkfx-render INPUT [--size WxH] [--effects none|LIST] [--plain-vtk]\n"
         "                    [--frames N] [--out FILE.png] [--stats FILE.json]\n"
-        "                    [--debug-channel normal|depth|albedo|specular|ambient|emission]\n"
+        "                    [--debug-channel normal|depth|albedo|specular|ambient|emission|\n"
+        "                                     occlusion]\n"
         "                    [--no-ground]\n"
         "INPUT: a .obj, .ply, .stl, .vtp, .vtk or .pdb file, or one of:";
   for (const auto& name : vtkFXScenes::BuiltInSceneNames())
@@ -166,7 +168,8 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
     {
       if (!value(args.DebugChannel))
         return false;
-      if (vtkFXGBufferPass::GetChannelFromName(args.DebugChannel.c_str()) < 0)
+      if (args.DebugChannel != "occlusion" &&
+        vtkFXGBufferPass::GetChannelFromName(args.DebugChannel.c_str()) < 0)
       {
         error = "unknown G-buffer channel '" + args.DebugChannel + "'";
         return false;
@@ -196,6 +199,11 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
   if (has("blur") && !has("ssao"))
   {
     error = "effect 'blur' blurs an occlusion effect: use --effects ssao,blur";
+    return false;
+  }
+  if (args.DebugChannel == "occlusion" && !has("ssao"))
+  {
+    error = "--debug-channel occlusion shows an occlusion effect: add --effects ssao";
     return false;
   }
   if (args.PlainVTK && !args.Effects.empty())
@@ -264,7 +272,11 @@ int main(int argc, char* argv[])
     };
     pipeline->SetAmbientOcclusion(has("ssao"));
     pipeline->GetOcclusionBlurPass()->SetEnabled(has("blur"));
-    if (!args.DebugChannel.empty())
+    if (args.DebugChannel == "occlusion")
+    {
+      pipeline->GetCompositePass()->DebugOcclusionOn();
+    }
+    else if (!args.DebugChannel.empty())
     {
       pipeline->SetDebugChannel(vtkFXGBufferPass::GetChannelFromName(args.DebugChannel.c_str()));
     }

@@ -139,7 +139,7 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   // guide texture: each tap is one fetch.
   const bool packed = this->NumberOfComponents == 1 && input->GetComponents() == 2;
   const int format = this->TextureFormat();
-  const int stageFormat = packed ? vtkFXRenderUtilities::RG16F : format;
+  const int stageFormat = packed ? vtkFXRenderUtilities::RG32F : format;
   vtkFXRenderUtilities::EnsureTexture(this->Horizontal, window, width, height, stageFormat);
   vtkFXRenderUtilities::EnsureTexture(this->Blurred, window, width, height, stageFormat);
   if (packed)

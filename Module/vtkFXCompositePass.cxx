@@ -138,6 +138,7 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
           << "\n"
           << "#define FX_CHANNEL_NORMAL " << GB::Normal << "\n"
           << "#define FX_CHANNEL_DEPTH " << GB::LinearDepth << "\n"
+          << "#define FX_DEBUG_OCCLUSION " << (this->DebugOcclusion ? 1 : 0) << "\n"
           << "#define FX_DEBUG_CHANNEL "
           << (gb->GetChannelTexture(this->DebugChannel) ? this->DebugChannel : -1) << "\n";
 
@@ -259,6 +260,8 @@ void vtkFXCompositePass::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "GBuffer: " << this->GBuffer << "\n";
   os << indent << "DebugChannel: " << this->DebugChannel << "\n";
+  os << indent << "DebugOcclusion: " << this->DebugOcclusion << "\n";
+  os << indent << "OcclusionDiffuseStrength: " << this->OcclusionDiffuseStrength << "\n";
   os << indent << "UseSpecular: " << this->UseSpecular << "\n";
   os << indent << "UseAmbient: " << this->UseAmbient << "\n";
 }

@@ -58,6 +58,14 @@ public:
   vtkSetClampMacro(DebugChannel, int, -1, vtkFXGBufferPass::NumberOfChannels - 1);
   vtkGetMacro(DebugChannel, int);
 
+  /**
+   * Show the occlusion input (grey, 1 = open) instead of the lit image
+   * where surfaces are lit (default off).
+   */
+  vtkSetMacro(DebugOcclusion, bool);
+  vtkGetMacro(DebugOcclusion, bool);
+  vtkBooleanMacro(DebugOcclusion, bool);
+
   ///@{
   /**
    * Material terms the scene has, decided by whoever knows the scene
@@ -111,6 +119,7 @@ protected:
   vtkFXEffectPass* OcclusionEffect = nullptr;
   double OcclusionDiffuseStrength = 1.0;
   int DebugChannel = -1;
+  bool DebugOcclusion = false;
   bool UseSpecular = true;
   bool UseAmbient = true;
 

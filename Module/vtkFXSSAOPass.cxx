@@ -121,7 +121,7 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   const int fullHeight = static_cast<int>(depth->GetHeight());
   const int step = this->HalfResolution ? 2 : 1;
   vtkFXRenderUtilities::EnsureTexture(this->Occlusion, window, (fullWidth + step - 1) / step,
-    (fullHeight + step - 1) / step, vtkFXRenderUtilities::RG16F);
+    (fullHeight + step - 1) / step, vtkFXRenderUtilities::RG32F);
   this->Occlusion->SetMinificationFilter(vtkTextureObject::Linear);
   this->Occlusion->SetMagnificationFilter(vtkTextureObject::Linear);
 

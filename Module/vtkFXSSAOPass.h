@@ -3,8 +3,9 @@
  * @brief   Screen-space ambient occlusion from the vtkFX G-buffer.
  *
  * Reads the G-buffer's normal and linear depth channels; writes an
- * occlusion texture (RG16F: R = occlusion, 1 = open, 0 = fully occluded;
- * G = the texel's linear depth, the guide of vtkFXBilateralBlurPass) at
+ * occlusion texture (RG32F: R = occlusion, 1 = open, 0 = fully occluded;
+ * G = the texel's linear depth, the guide of vtkFXBilateralBlurPass; 32-bit
+ * because a 16-bit float overflows at 65504 world units) at
  * full or half resolution (GetOutputTexture). Normal-oriented hemisphere of
  * NumberOfSamples points, cosine-distributed with lengths u^3 (seed 000),
  * rotated per pixel by a 4x4 tile, with a range check: an unbiased estimate

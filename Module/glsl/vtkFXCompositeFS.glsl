@@ -8,7 +8,8 @@
 // "frustum corner ray" of seed 001), so no world-space position is stored.
 //
 // Defines set by vtkFXCompositePass: FX_LIGHTING (0..3), FX_HAS_SPECULAR,
-// FX_HAS_AMBIENT, FX_HAS_OCCLUSION, FX_NEEDS_POSITION, FX_DEBUG_CHANNEL, and the channel
+// FX_HAS_AMBIENT, FX_HAS_OCCLUSION, FX_NEEDS_POSITION, FX_DEBUG_CHANNEL,
+// FX_DEBUG_OCCLUSION, and the channel
 // numbers FX_CHANNEL_NORMAL, FX_CHANNEL_DEPTH (vtkFXGBufferPass::Channel).
 
 in vec2 texCoord;
@@ -138,6 +139,10 @@ void main()
 #endif
     color = ambientColor + diffuseLight * diffuseColor + specularLight * specularColor;
   }
+#endif
+#if FX_DEBUG_OCCLUSION && FX_HAS_OCCLUSION
+  color = vec3(clamp(texture(fxOcclusion, texCoord).r, 0.0, 1.0));
+  albedo.a = 1.0;
 #endif
   gl_FragData[0] = vec4(fxSanitize(color), clamp(albedo.a, 0.0, 1.0));
 }

@@ -13,8 +13,9 @@
 //   A(p) = 1 - (1/pi) Int f(t(w)) cos(theta) dw,  f(t) = 1 - (t/R)^(1/3),
 // because P(l < t/R) = (t/R)^(1/3): the reference vtkfx-bench traces.
 // The kernel is rotated per pixel by a 4x4 tile of angles (seed 001's noise
-// texture), and a range check fades out occluders more than R in front of
-// the receiver. Positions come from linear depth and the per-pixel frustum
+// texture), a range check fades out occluders more than R in front of the
+// receiver, and only surfaces in front of the receiver's tangent plane can
+// occlude (a surface never occludes itself, at any viewing angle). Positions come from linear depth and the per-pixel frustum
 // ray (seed 001), radii are world units, biases fractions of R: scaling the
 // scene changes nothing.
 
@@ -90,9 +91,23 @@ void main()
     {
       continue; // off screen: unknown, counted as open
     }
-    float sceneDepth = texelFetch(fxLinearDepth, ivec2(uv * vec2(fxGBufferSize)), 0).r;
+    ivec2 texelQ = ivec2(uv * vec2(fxGBufferSize));
+    float sceneDepth = texelFetch(fxLinearDepth, texelQ, 0).r;
     float sampleDepth = -q.z;
-    if (sceneDepth > 0.0 && sceneDepth < sampleDepth - fxBias)
+    // The texel may show the receiver's own surface: at a grazing angle its
+    // depth changes a lot across the texel, and a sample just above the
+    // surface would look occluded by it. What occludes lies in front of the
+    // receiver's tangent plane, so compare with where that plane crosses
+    // this texel's ray (exact for planes, conservative for convex surfaces;
+    // a relative tolerance, as the receiver's own plane sits exactly on it
+    // up to rounding).
+    vec2 ndcQ = (vec2(texelQ) + 0.5) / vec2(fxGBufferSize) * 2.0 - 1.0;
+    vec3 rayOrigin = fxRayOrigin[0] + ndcQ.x * fxRayOrigin[1] + ndcQ.y * fxRayOrigin[2];
+    vec3 rayDirection = fxRayDirection[0] + ndcQ.x * fxRayDirection[1] + ndcQ.y * fxRayDirection[2];
+    float facing = dot(n, rayDirection);
+    float planeDepth = abs(facing) > 1e-8 ? dot(n, p - rayOrigin) / facing : -1.0;
+    bool beforePlane = planeDepth <= 0.0 || sceneDepth < planeDepth * (1.0 - 1e-3);
+    if (sceneDepth > 0.0 && sceneDepth < sampleDepth && beforePlane)
     {
       // Range check: a surface far in front of the receiver is not between
       // the receiver and the sample.
@@ -101,7 +116,6 @@ void main()
     }
   }
   float ao = clamp(1.0 - occlusion / float(FX_SAMPLES), 0.0, 1.0);
-  // The depth rides along as the blur's guide (RG16F: ~1e-3 relative,
-  // finer than the blur's depth tolerance).
+  // The depth rides along as the blur's guide.
   gl_FragData[0] = vec4(ao, depth, 0.0, 1.0);
 }

@@ -1,8 +1,12 @@
 // Baseline image test of the pipeline: renders INPUT (a built-in scene or a
 // file) at 400x300 through vtkFXPipelinePass and compares with the baseline
-// given by -V, either the lit image ("lit") or one G-buffer channel shown by
-// the pipeline's debug view ("normal", "depth", "albedo", ...).
-//   TestBaselineImage INPUT lit|CHANNEL -V baseline.png -T outdir
+// given by -V, either the lit image ("lit"), one G-buffer channel shown by
+// the pipeline's debug view ("normal", "depth", "albedo", ...), or ambient
+// occlusion: "ssao-raw" (the occlusion view without the blur), "ssao-blur"
+// (the occlusion view after it) and "ssao-lit" (the lit image with it).
+//   TestBaselineImage INPUT lit|CHANNEL|ssao-raw|ssao-blur|ssao-lit -V baseline.png -T outdir
+#include "vtkFXBilateralBlurPass.h"
+#include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
@@ -21,7 +25,13 @@ int TestBaselineImage(int argc, char* argv[])
   std::string error;
   FX_CHECK(vtkFXScenes::Populate(renderer, input, vtkFXScenes::Options(), error), error);
   vtkNew<vtkFXPipelinePass> pipeline;
-  if (view != "lit")
+  if (view.rfind("ssao-", 0) == 0)
+  {
+    pipeline->AmbientOcclusionOn();
+    pipeline->GetOcclusionBlurPass()->SetEnabled(view != "ssao-raw");
+    pipeline->GetCompositePass()->SetDebugOcclusion(view != "ssao-lit");
+  }
+  else if (view != "lit")
   {
     const int channel = vtkFXGBufferPass::GetChannelFromName(view.c_str());
     FX_CHECK(channel >= 0, "unknown channel " << view);

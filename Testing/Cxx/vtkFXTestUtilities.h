@@ -74,6 +74,32 @@ inline double Angle(const double a[3], const double b[3])
   return std::acos(std::min(1.0, std::max(-1.0, cosine)));
 }
 
+// Ambient occlusion, as vtkFX defines it, of a point on a floor at distance h
+// from an infinite perpendicular wall: a cosine-distributed ray w hits the
+// wall at t = h / w.x (w.x > 0); with the falloff f(t) = 1 - (t/R)^(1/3),
+//   A(h) = 1 - (1/pi) Int_{w.x > 0, t < R} f(t) cos(theta) dw,
+// by the midpoint rule on (theta, phi). A(0) = 1/2: the wall takes half of
+// the cosine-weighted hemisphere.
+inline double CreaseOcclusion(double h, double R)
+{
+  const int n = 600;
+  const double pi = 3.14159265358979323846;
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i)
+  {
+    const double theta = (i + 0.5) / n * pi / 2;
+    for (int j = 0; j < n; ++j)
+    {
+      const double wx = std::sin(theta) * std::cos((j + 0.5) / n * 2 * pi);
+      if (wx > 0.0 && h / wx < R)
+      {
+        sum += (1.0 - std::cbrt(h / wx / R)) * std::cos(theta) * std::sin(theta);
+      }
+    }
+  }
+  return 1.0 - sum * (pi / 2 / n) * (2 * pi / n) / pi;
+}
+
 // The value of "-X value" in argv, or "" when absent.
 inline std::string Argument(int argc, char* argv[], const char* flag)
 {

@@ -1,0 +1,294 @@
+// vtkFXSSAOPass against analytic cases, read back from its textures:
+// - a flat plane seen from steep to grazing angles is unoccluded: the raw
+//   occlusion is >= 0.98 at every pixel more than one radius from the
+//   plane's border;
+// - near the inner crease of two perpendicular planes, the blurred
+//   estimate follows the closed form A(h) of the occlusion at distance h
+//   from the wall (vtkFXTest::CreaseOcclusion; A(0) = 0.5, half the
+//   cosine-weighted hemisphere inside the wall): within 0.05 on average
+//   over the floor pixels 0.03 R to R from the wall (closer pixels, within
+//   1.5 pixels of the crease, cannot resolve the wall), within 0.03 on
+//   average in every band of (h/R)^(1/3) from 0.4, and 0.1 at every pixel;
+//   A itself tends to 0.5 at the crease;
+// - every value of every read-back texture is finite and within [0, 1],
+//   at full and half resolution, blurred or not.
+#include "vtkFXBilateralBlurPass.h"
+#include "vtkFXGBufferPass.h"
+#include "vtkFXPipelinePass.h"
+#include "vtkFXRenderUtilities.h"
+#include "vtkFXSSAOPass.h"
+#include "vtkFXTestUtilities.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
+#include "vtkPlaneSource.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkRendererCollection.h"
+
+#include <functional>
+
+namespace
+{
+using GB = vtkFXGBufferPass;
+const int Width = 320, Height = 240;
+
+vtkSmartPointer<vtkActor> Plane(const double o[3], const double p1[3], const double p2[3])
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(o[0], o[1], o[2]);
+  plane->SetPoint1(p1[0], p1[1], p1[2]);
+  plane->SetPoint2(p2[0], p2[1], p2[2]);
+  plane->SetResolution(8, 8);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(plane->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
+// World positions of the G-buffer's pixels (w = 0 where there is no surface).
+std::vector<std::array<double, 4>> WorldPositions(vtkRenderer* ren, vtkFXGBufferPass* gbuffer)
+{
+  const auto depth = vtkFXTest::Download(gbuffer->GetChannelTexture(GB::LinearDepth), 1);
+  double origin[3][3], direction[3][3];
+  vtkFXRenderUtilities::ComputeFrustumRay(ren, origin, direction);
+  vtkNew<vtkMatrix4x4> toWorld;
+  toWorld->DeepCopy(ren->GetActiveCamera()->GetViewTransformMatrix());
+  toWorld->Invert();
+  std::vector<std::array<double, 4>> world(depth.size());
+  for (int y = 0; y < Height; ++y)
+  {
+    for (int x = 0; x < Width; ++x)
+    {
+      const size_t i = static_cast<size_t>(y) * Width + x;
+      const double ndc[2] = { 2.0 * (x + 0.5) / Width - 1.0, 2.0 * (y + 0.5) / Height - 1.0 };
+      double view[4] = { 0, 0, 0, 1 };
+      for (int c = 0; c < 3; ++c)
+      {
+        view[c] = origin[0][c] + ndc[0] * origin[1][c] + ndc[1] * origin[2][c] +
+          depth[i] * (direction[0][c] + ndc[0] * direction[1][c] + ndc[1] * direction[2][c]);
+      }
+      double w[4];
+      toWorld->MultiplyPoint(view, w);
+      world[i] = { w[0], w[1], w[2], depth[i] > 0.0f ? 1.0 : 0.0 };
+    }
+  }
+  return world;
+}
+
+// The occlusion texture at full resolution: R of the texture, which is
+// either full resolution or read at the G-buffer pixel's half-res texel.
+std::vector<float> OcclusionAtPixels(vtkTextureObject* texture)
+{
+  const int comps = texture->GetComponents();
+  const auto values = vtkFXTest::Download(texture, comps);
+  const int w = static_cast<int>(texture->GetWidth());
+  const int step = Width / w >= 2 ? 2 : 1;
+  std::vector<float> out(static_cast<size_t>(Width) * Height);
+  for (int y = 0; y < Height; ++y)
+  {
+    for (int x = 0; x < Width; ++x)
+    {
+      out[static_cast<size_t>(y) * Width + x] =
+        values[comps * (static_cast<size_t>(y / step) * w + x / step)];
+    }
+  }
+  return out;
+}
+
+int CheckRange(vtkTextureObject* texture, const char* what)
+{
+  const int comps = texture->GetComponents();
+  const auto values = vtkFXTest::Download(texture, comps);
+  for (size_t i = 0; i < values.size(); i += comps)
+  {
+    FX_CHECK(std::isfinite(values[i]) && values[i] >= 0.0f && values[i] <= 1.0f,
+      what << ": occlusion " << values[i] << " at texel " << i / comps);
+  }
+  return EXIT_SUCCESS;
+}
+
+// vtkFXTest::CreaseOcclusion tabulated in (h/R)^(1/3), where it is smooth,
+// and interpolated: the closed form costs a quadrature per call.
+double CreaseOcclusionAt(double h, double R)
+{
+  static std::vector<double> table;
+  const int n = 256;
+  if (table.empty())
+  {
+    for (int i = 0; i <= n; ++i)
+    {
+      const double x = double(i) / n;
+      table.push_back(vtkFXTest::CreaseOcclusion(x * x * x * R, R));
+    }
+  }
+  const double x = std::min(1.0, std::cbrt(std::max(0.0, h / R))) * n;
+  const int i = std::min(n - 1, static_cast<int>(x));
+  return table[i] + (x - i) * (table[i + 1] - table[i]);
+}
+
+struct Setup
+{
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkSmartPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkFXPipelinePass> Pipeline;
+};
+
+Setup MakeSetup(vtkRenderWindow* window)
+{
+  Setup s;
+  s.Window = window;
+  window->GetRenderers()->RemoveAllItems();
+  s.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  window->AddRenderer(s.Renderer);
+  s.Pipeline = vtkSmartPointer<vtkFXPipelinePass>::New();
+  s.Pipeline->AmbientOcclusionOn();
+  s.Pipeline->GetOcclusionBlurPass()->UpsampleOn();
+  s.Renderer->SetPass(s.Pipeline);
+  return s;
+}
+}
+
+int TestSSAO(int, char*[])
+{
+  auto window = vtkFXTest::MakeWindow(Width, Height);
+  const double radius = 0.5;
+
+  // 1. A flat plane, 40 x 40 units, seen from 70 to 4 degrees above it.
+  for (double elevation : { 70.0, 30.0, 10.0, 4.0 })
+  {
+    for (bool half : { false, true })
+    {
+      Setup s = MakeSetup(window);
+      const double o[3] = { -20, 0, -20 }, p1[3] = { 20, 0, -20 }, p2[3] = { -20, 0, 20 };
+      s.Renderer->AddActor(Plane(o, p1, p2));
+      vtkCamera* camera = s.Renderer->GetActiveCamera();
+      const double a = vtkMath::RadiansFromDegrees(elevation);
+      camera->SetFocalPoint(0, 0, 0);
+      camera->SetPosition(0, 6 * std::sin(a), 6 * std::cos(a));
+      camera->SetViewUp(0, 1, 0);
+      s.Renderer->ResetCameraClippingRange();
+      vtkFXSSAOPass* ssao = s.Pipeline->GetSSAOPass();
+      ssao->SetRadius(radius);
+      ssao->SetNumberOfSamples(16);
+      ssao->SetHalfResolution(half);
+      s.Pipeline->GetOcclusionBlurPass()->EnabledOff();
+      window->Render();
+      vtkTextureObject* raw = ssao->GetOutputTexture();
+      FX_CHECK(raw, "SSAO wrote its texture");
+      if (CheckRange(raw, "plane") != EXIT_SUCCESS)
+      {
+        return EXIT_FAILURE;
+      }
+      const auto ao = OcclusionAtPixels(raw);
+      const auto world = WorldPositions(s.Renderer, s.Pipeline->GetGBufferPass());
+      float lowest = 1.0f;
+      int inside = 0;
+      for (size_t i = 0; i < ao.size(); ++i)
+      {
+        const auto& p = world[i];
+        if (p[3] > 0.0 && std::fabs(p[0]) < 20 - radius && std::fabs(p[2]) < 20 - radius)
+        {
+          lowest = std::min(lowest, ao[i]);
+          ++inside;
+        }
+      }
+      std::cout << "plane at " << elevation << " degrees (" << (half ? "half" : "full")
+                << " resolution): lowest occlusion " << lowest << " over " << inside << " pixels"
+                << std::endl;
+      FX_CHECK(inside > 1000 && lowest >= 0.98f, "a flat plane is unoccluded");
+    }
+  }
+
+  // 2. The inner crease of a floor (y = 0) and a wall (z = 0), seen from
+  // close by so that 0.02 R spans many pixels.
+  const double creaseRadius = radius;
+  for (bool half : { false, true })
+  {
+    Setup s = MakeSetup(window);
+    const double fo[3] = { -10, 0, 0 }, f1[3] = { 10, 0, 0 }, f2[3] = { -10, 0, 10 };
+    const double wo[3] = { -10, 0, 0 }, w1[3] = { 10, 0, 0 }, w2[3] = { -10, 10, 0 };
+    s.Renderer->AddActor(Plane(fo, f1, f2));
+    s.Renderer->AddActor(Plane(wo, w1, w2));
+    vtkCamera* camera = s.Renderer->GetActiveCamera();
+    camera->SetFocalPoint(0, 0.5, 0.5);
+    camera->SetPosition(0.5, 3.0, 4.0);
+    camera->SetViewUp(0, 1, 0);
+    s.Renderer->ResetCameraClippingRange();
+    vtkFXSSAOPass* ssao = s.Pipeline->GetSSAOPass();
+    ssao->SetRadius(creaseRadius);
+    ssao->SetNumberOfSamples(64);
+    ssao->SetHalfResolution(half);
+    window->Render();
+    vtkTextureObject* blurred = s.Pipeline->GetOcclusionBlurPass()->GetOutputTexture();
+    FX_CHECK(blurred && static_cast<int>(blurred->GetWidth()) == Width,
+      "the blur upsampled to full resolution");
+    if (CheckRange(ssao->GetOutputTexture(), "crease, raw") != EXIT_SUCCESS ||
+      CheckRange(blurred, "crease, blurred") != EXIT_SUCCESS)
+    {
+      return EXIT_FAILURE;
+    }
+    const auto ao = OcclusionAtPixels(blurred);
+    const auto world = WorldPositions(s.Renderer, s.Pipeline->GetGBufferPass());
+    // A sample near the crease projects a texel or two from it; pixels
+    // closer than that (h < 0.03 R here, 1.5 pixels) cannot resolve the wall
+    // and read about 0.75: compare from there on, bin by bin in
+    // (h/R)^(1/3), the variable in which A(h) starts linearly from 0.5.
+    double sumError = 0.0, worstError = 0.0, open = 1.0;
+    double binSSAO[10] = {}, binA[10] = {};
+    int binCount[10] = {};
+    int n = 0;
+    for (size_t i = 0; i < ao.size(); ++i)
+    {
+      const auto& p = world[i];
+      const bool onFloor = p[3] > 0.0 && std::fabs(p[1]) < 1e-4 && std::fabs(p[0]) < 2.0;
+      if (onFloor && p[2] < creaseRadius)
+      {
+        const double expected = CreaseOcclusionAt(p[2], creaseRadius);
+        const int bin = std::min(9, static_cast<int>(std::cbrt(p[2] / creaseRadius) * 10));
+        binSSAO[bin] += ao[i];
+        binA[bin] += expected;
+        ++binCount[bin];
+        // (twice that at half resolution, whose texels are twice as large)
+        if (p[2] >= (half ? 0.06 : 0.03) * creaseRadius)
+        {
+          const double error = std::fabs(ao[i] - expected);
+          sumError += error;
+          worstError = std::max(worstError, error);
+          ++n;
+        }
+      }
+      if (onFloor && p[2] > 2.5 * creaseRadius)
+      {
+        open = std::min(open, static_cast<double>(ao[i]));
+      }
+    }
+    double worstBin = 0.0;
+    for (int k = 0; k < 10; ++k)
+    {
+      if (binCount[k])
+      {
+        std::cout << "  (h/R)^(1/3) in [" << k / 10.0 << ", " << (k + 1) / 10.0 << "): SSAO "
+                  << binSSAO[k] / binCount[k] << ", closed form " << binA[k] / binCount[k]
+                  << " (" << binCount[k] << " pixels)" << std::endl;
+        if (k >= 4) // h >= 0.064 R: every pixel of the bin resolves the wall
+        {
+          worstBin = std::max(worstBin, std::fabs(binSSAO[k] - binA[k]) / binCount[k]);
+        }
+      }
+    }
+    const double meanError = n ? sumError / n : 1.0;
+    std::cout << "crease (" << (half ? "half" : "full") << " resolution): " << n
+              << " floor pixels from 1.5 texels to R from the wall, mean |SSAO - A(h)| " << meanError
+              << ", worst pixel " << worstError << ", worst bin " << worstBin
+              << "; lowest far from it " << open << std::endl;
+    FX_CHECK(n >= 100, "pixels near the crease");
+    FX_CHECK(meanError <= 0.03 && worstError <= 0.1 && worstBin <= 0.03,
+      "the estimate follows the closed form");
+    FX_CHECK(std::fabs(vtkFXTest::CreaseOcclusion(1e-9 * creaseRadius, creaseRadius) - 0.5) <= 0.01,
+      "at the crease itself the occlusion is 0.5");
+    FX_CHECK(open >= 0.97, "far from the crease nothing occludes");
+  }
+  return EXIT_SUCCESS;
+}

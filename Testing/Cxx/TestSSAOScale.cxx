@@ -1,0 +1,114 @@
+// Scale invariance of the occlusion: scene:corner and the bunny scaled by
+// 1e-6 and by 1e6, translated 1e6 units from the origin (camera following),
+// seen in parallel projection, and with a near/far ratio of 1e-6, give an
+// occlusion image (the pipeline's occlusion view) within PSNR >= 40 dB of the
+// unchanged one over the pixels that show data. Radii, biases and blur
+// tolerances are world units or fractions of depth, and positions come from
+// linear depth: nothing depends on the scene's size or place.
+#include "vtkFXCompositePass.h"
+#include "vtkFXPipelinePass.h"
+#include "vtkFXScenes.h"
+#include "vtkFXTestUtilities.h"
+
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
+#include "vtkRendererCollection.h"
+#include "vtkTransform.h"
+
+namespace
+{
+struct Variant
+{
+  const char* Name;
+  double Scale;
+  double Offset;
+  double NearRatio; // 0: automatic clipping range
+};
+
+std::vector<unsigned char> Render(vtkRenderWindow* window, const std::string& input, bool parallel,
+  const Variant& v, unsigned char background[3])
+{
+  window->GetRenderers()->RemoveAllItems();
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  std::string error;
+  vtkFXScenes::Populate(renderer, input, vtkFXScenes::Options(), error);
+  vtkNew<vtkTransform> transform;
+  transform->Translate(v.Offset, v.Offset, v.Offset);
+  transform->Scale(v.Scale, v.Scale, v.Scale);
+  vtkActorCollection* actors = renderer->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    actor->SetUserMatrix(transform->GetMatrix());
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  // The clipping range scales with the scene (VTK's automatic range is not
+  // exactly proportional: it would clip the far ground differently).
+  double range[2];
+  camera->GetClippingRange(range);
+  double position[3], focal[3];
+  camera->GetPosition(position);
+  camera->GetFocalPoint(focal);
+  transform->TransformPoint(position, position);
+  transform->TransformPoint(focal, focal);
+  camera->SetPosition(position);
+  camera->SetFocalPoint(focal);
+  camera->SetParallelProjection(parallel);
+  camera->SetParallelScale(camera->GetParallelScale() * v.Scale);
+  if (v.NearRatio > 0.0)
+  {
+    const double d = camera->GetDistance();
+    camera->SetClippingRange(1e-4 * d, 1e-4 * d / v.NearRatio);
+  }
+  else
+  {
+    camera->SetClippingRange(range[0] * v.Scale, range[1] * v.Scale);
+  }
+  vtkNew<vtkFXPipelinePass> pipeline;
+  pipeline->AmbientOcclusionOn();
+  pipeline->GetCompositePass()->DebugOcclusionOn();
+  renderer->SetPass(pipeline);
+  window->Render();
+  vtkFXScenes::BackgroundBytes(renderer, background);
+  return vtkFXScenes::Capture(window);
+}
+}
+
+int TestSSAOScale(int, char*[])
+{
+  auto window = vtkFXTest::MakeWindow(320, 240);
+  const Variant reference{ "unchanged", 1.0, 0.0, 0.0 };
+  const Variant variants[] = {
+    { "scaled 1e-6", 1e-6, 0.0, 0.0 },
+    { "scaled 1e6", 1e6, 0.0, 0.0 },
+    { "scaled 2^-20", std::ldexp(1.0, -20), 0.0, 0.0 },
+    { "scaled 2^20", std::ldexp(1.0, 20), 0.0, 0.0 },
+    { "translated 1e6", 1.0, 1e6, 0.0 },
+    { "near/far 1e-6", 1.0, 0.0, 1e-6 },
+  };
+  int failures = 0;
+  for (const std::string input :
+    { std::string("scene:corner"), vtkFXScenes::DataDirectory() + "/stanford-bunny.obj" })
+  {
+    for (bool parallel : { false, true })
+    {
+      unsigned char background[3];
+      const auto base = Render(window, input, parallel, reference, background);
+      for (const Variant& v : variants)
+      {
+        unsigned char bg[3];
+        const auto image = Render(window, input, parallel, v, bg);
+        const double psnr = vtkFXScenes::PSNR(base, image, background);
+        std::cout << input << (parallel ? " parallel" : " perspective") << ", " << v.Name
+                  << ": PSNR " << psnr << " dB" << std::endl;
+        failures += psnr >= 40.0 ? 0 : 1;
+      }
+    }
+  }
+  FX_CHECK(failures == 0, failures << " variant(s) below 40 dB");
+  return EXIT_SUCCESS;
+}
