@@ -8,7 +8,8 @@
 // ray-traced reference of vtkFXReferenceAO (same radius, same falloff) over
 // the pixels where the reference sees a surface.
 // Methods: no occlusion; vtkFX SSAO at 8/16/32 samples, full and half
-// resolution, with its blur (and once without); VTK's vtkSSAOPass at kernel
+// resolution, with its blur (and once without); vtkFX's horizon-based
+// variant (GTAO) at 8 and 16 depth fetches; VTK's vtkSSAOPass at kernel
 // sizes 16/32/64/128, with and without its blur. All use the radius
 // 0.1 x the diagonal of the data's bounds. The AO part of the time is the
 // median frame time minus that of the same renderer without occlusion.
@@ -72,6 +73,7 @@ struct Method
   std::string Name;
   std::string Setting;
   int Samples = 16;
+  int Method = 0; // vtkFXSSAOPass::Method
   bool HalfResolution = true;
   bool Blur = true;
   vtkSmartPointer<vtkRenderWindow> Window;
@@ -108,6 +110,15 @@ std::vector<Method> MakeMethods()
   }
   fx(standard, false, true);
   fx(standard, true, false);
+  // The horizon-based estimator (GTAO) at the same fetch budgets.
+  for (int samples : { 8, 16 })
+  {
+    Method m{ Kind::FX, "vtkfx-gtao" };
+    m.Samples = samples;
+    m.Method = vtkFXSSAOPass::Horizon;
+    m.Setting = std::to_string(samples) + " half blur";
+    methods.push_back(m);
+  }
   for (int kernel : { 16, 32, 64, 128 })
   {
     for (bool blur : { false, true })
@@ -164,6 +175,7 @@ void Install(Method& m, double radius)
         pipeline->GetSSAOPass()->SetRadius(radius);
         pipeline->GetSSAOPass()->SetNumberOfSamples(m.Samples);
         pipeline->GetSSAOPass()->SetHalfResolution(m.HalfResolution);
+        pipeline->GetSSAOPass()->SetMethod(m.Method);
         pipeline->GetOcclusionBlurPass()->SetEnabled(m.Blur);
       }
       m.Renderer->SetPass(pipeline);

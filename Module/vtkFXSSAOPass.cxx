@@ -18,6 +18,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -72,7 +73,7 @@ double vtkFXSSAOPass::ComputeRadius(vtkRenderer* ren) const
   return diagonal > 0.0 ? this->RadiusFraction * diagonal : 1.0;
 }
 
-void vtkFXSSAOPass::SetKernelUniforms(vtkShaderProgram* program) const
+void vtkFXSSAOPass::SetHemisphereKernel(vtkShaderProgram* program) const
 {
   // Seed 000's distribution: cosine-weighted directions (z = sqrt(r2)) and
   // lengths u^3. Azimuths are stratified over [0, 2 pi); r2 and u follow
@@ -91,6 +92,15 @@ void vtkFXSSAOPass::SetKernelUniforms(vtkShaderProgram* program) const
     kernel[4 * i + 3] = static_cast<float>(u * u * u);
   }
   program->SetUniform4fv("fxKernel", n, reinterpret_cast<const float(*)[4]>(kernel.data()));
+}
+
+void vtkFXSSAOPass::SetKernelUniforms(vtkShaderProgram* program) const
+{
+  const int n = this->NumberOfSamples;
+  if (this->Method == Hemisphere)
+  {
+    this->SetHemisphereKernel(program);
+  }
 
   // 4x4 tile of rotations within one azimuth stratum (2 pi / n), in the
   // order of a 4x4 ordered-dither matrix so that neighbours differ most.
@@ -126,7 +136,10 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   this->Occlusion->SetMagnificationFilter(vtkTextureObject::Linear);
 
   std::ostringstream defines;
-  defines << "//VTK::System::Dec\n#define FX_SAMPLES " << this->NumberOfSamples << "\n";
+  const int slices = 2;
+  defines << "//VTK::System::Dec\n#define FX_SAMPLES " << this->NumberOfSamples
+          << "\n#define FX_METHOD " << this->Method << "\n#define FX_SLICES " << slices
+          << "\n#define FX_STEPS " << std::max(1, this->NumberOfSamples / (2 * slices)) << "\n";
   std::string fs = vtkFXSSAOFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str(), false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
@@ -188,6 +201,7 @@ void vtkFXSSAOPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Radius: " << this->Radius << " (effective " << this->EffectiveRadius << ")\n";
   os << indent << "RadiusFraction: " << this->RadiusFraction << "\n";
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
+  os << indent << "Method: " << (this->Method == Hemisphere ? "Hemisphere" : "Horizon") << "\n";
   os << indent << "Bias: " << this->Bias << "\n";
   os << indent << "HalfResolution: " << this->HalfResolution << "\n";
 }

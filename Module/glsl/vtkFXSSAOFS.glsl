@@ -1,5 +1,7 @@
 //VTK::System::Dec
 // vtkFXSSAOFS: screen-space ambient occlusion from the vtkFX G-buffer.
+// FX_METHOD 0: hemisphere sampling (below); 1: horizon-based (GTAO, further
+// down).
 //
 // Normal-oriented hemisphere sampling (Crytek's SSAO with the normal-aligned
 // kernel of later practice): FX_SAMPLES points around the receiver p,
@@ -31,10 +33,13 @@ uniform int fxStep;           // G-buffer texels per occlusion texel (1 or 2)
 uniform vec3 fxRayOrigin[3];
 uniform vec3 fxRayDirection[3];
 uniform mat4 fxProjection;    // view -> clip coordinates
+#if FX_METHOD == 0
 uniform vec4 fxKernel[FX_SAMPLES];
+#endif
 uniform vec2 fxNoise[16];
 uniform float fxRadius;       // world units
 uniform float fxBias;         // world units
+const float fxPi = 3.14159265358979;
 
 //VTK::FXNormalCoding::Dec
 
@@ -47,27 +52,19 @@ vec3 fxViewPosition(vec2 ndc, float depth)
   return origin + depth * direction;
 }
 
-void main()
+// Ray through the centre of G-buffer texel `texel`: origin and direction,
+// so that the surface there is at origin + depth * direction.
+void fxTexelRay(ivec2 texel, out vec3 origin, out vec3 direction)
 {
-  if (texCoord.x < -1.0)
-  {
-    discard; // never: see the declaration of texCoord
-  }
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
-  ivec2 texel = min(pixel * fxStep, fxGBufferSize - 1);
-  float depth = texelFetch(fxLinearDepth, texel, 0).r;
-  vec2 code = texelFetch(fxNormal, texel, 0).rg;
-  if (!(depth > 0.0) || fxIsUnlit(code))
-  {
-    gl_FragData[0] = vec4(1.0, depth, 0.0, 1.0); // no surface, or one VTK does not light
-    return;
-  }
   vec2 ndc = (vec2(texel) + 0.5) / vec2(fxGBufferSize) * 2.0 - 1.0;
-  vec3 p = fxViewPosition(ndc, depth);
-  vec3 n = fxDecodeNormal(code);
+  origin = fxRayOrigin[0] + ndc.x * fxRayOrigin[1] + ndc.y * fxRayOrigin[2];
+  direction = fxRayDirection[0] + ndc.x * fxRayDirection[1] + ndc.y * fxRayDirection[2];
+}
 
-  // Tangent frame rotated by this pixel's entry of the 4x4 noise tile.
-  vec2 rotation = fxNoise[(pixel.x & 3) + 4 * (pixel.y & 3)];
+#if FX_METHOD == 0
+// Hemisphere sampling (see the top of this file).
+float fxHemisphereOcclusion(vec3 p, vec3 n, float depth, vec2 rotation)
+{
   vec3 helper = abs(n.z) < 0.999 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
   vec3 t0 = normalize(cross(helper, n));
   vec3 b0 = cross(n, t0);
@@ -101,9 +98,8 @@ void main()
     // this texel's ray (exact for planes, conservative for convex surfaces;
     // a relative tolerance, as the receiver's own plane sits exactly on it
     // up to rounding).
-    vec2 ndcQ = (vec2(texelQ) + 0.5) / vec2(fxGBufferSize) * 2.0 - 1.0;
-    vec3 rayOrigin = fxRayOrigin[0] + ndcQ.x * fxRayOrigin[1] + ndcQ.y * fxRayOrigin[2];
-    vec3 rayDirection = fxRayDirection[0] + ndcQ.x * fxRayDirection[1] + ndcQ.y * fxRayDirection[2];
+    vec3 rayOrigin, rayDirection;
+    fxTexelRay(texelQ, rayOrigin, rayDirection);
     float facing = dot(n, rayDirection);
     float planeDepth = abs(facing) > 1e-8 ? dot(n, p - rayOrigin) / facing : -1.0;
     bool beforePlane = planeDepth <= 0.0 || sceneDepth < planeDepth * (1.0 - 1e-3);
@@ -115,7 +111,121 @@ void main()
       occlusion += gap < fxRadius ? 1.0 : max(0.0, 2.0 - gap / fxRadius);
     }
   }
-  float ao = clamp(1.0 - occlusion / float(FX_SAMPLES), 0.0, 1.0);
+  return clamp(1.0 - occlusion / float(FX_SAMPLES), 0.0, 1.0);
+}
+#else
+// Horizon-based, cosine-weighted visibility: Jimenez, Wu, Pesce, Jarabo,
+// "Practical Realtime Strategies for Accurate Indirect Occlusion" (GTAO,
+// 2016), in the formulation of Intel's XeGTAO. FX_SLICES screen-space
+// slices through the pixel, FX_STEPS depth samples on each side of it find
+// the two horizons; the visible arc between them, cosine-weighted around the
+// normal projected into the slice, integrates in closed form. A horizon
+// sample fades out (towards the lowest horizon) from 0.385 R to R.
+float fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec2 rotation)
+{
+  vec3 rayOrigin, rayDirection;
+  fxTexelRay(texel, rayOrigin, rayDirection);
+  vec3 view = normalize(-rayDirection); // towards the eye, any projection
+  // Texels per world unit at this depth, along x.
+  float worldPerNdc = length(fxRayOrigin[1] + depth * fxRayDirection[1]);
+  float radiusTexels = clamp(fxRadius / worldPerNdc * 0.5 * float(fxGBufferSize.x), 1.0, 512.0);
+  float falloffRange = 0.615 * fxRadius;
+  float falloffMul = -1.0 / falloffRange;
+  float falloffAdd = (fxRadius - falloffRange) / falloffRange + 1.0;
+  // The tile's rotation, within one stratum of 2 pi / FX_SAMPLES, as [0, 1).
+  float jitter = fract(atan(rotation.y, rotation.x) * float(FX_SAMPLES) / (2.0 * fxPi));
+  float visibility = 0.0;
+  for (int slice = 0; slice < FX_SLICES; ++slice)
+  {
+    float phi = (float(slice) + jitter) / float(FX_SLICES) * fxPi;
+    vec3 direction = vec3(cos(phi), sin(phi), 0.0);
+    vec3 orthoDirection = direction - dot(direction, view) * view;
+    vec3 axis = normalize(cross(orthoDirection, view));
+    vec3 projectedNormal = n - axis * dot(n, axis);
+    float projectedLength = length(projectedNormal);
+    float cosNormal = clamp(dot(projectedNormal, view) / max(projectedLength, 1e-8), -1.0, 1.0);
+    float normalAngle = sign(dot(orthoDirection, projectedNormal)) * acos(cosNormal);
+    float lowest0 = cos(normalAngle + 0.5 * fxPi);
+    float lowest1 = cos(normalAngle - 0.5 * fxPi);
+    float horizon0 = lowest0, horizon1 = lowest1;
+    for (int step = 0; step < FX_STEPS; ++step)
+    {
+      // Quadratic spacing: more samples near the pixel, as in XeGTAO.
+      float s = (float(step) + 0.5 + 0.5 * jitter) / float(FX_STEPS);
+      vec2 offset = direction.xy * (s * s * radiusTexels);
+      for (int side = 0; side < 2; ++side)
+      {
+        ivec2 q = texel + ivec2(round(side == 0 ? offset : -offset));
+        if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, fxGBufferSize)) || q == texel)
+        {
+          continue;
+        }
+        float sampleDepth = texelFetch(fxLinearDepth, q, 0).r;
+        if (!(sampleDepth > 0.0))
+        {
+          continue;
+        }
+        vec3 o, d;
+        fxTexelRay(q, o, d);
+        vec3 delta = o + sampleDepth * d - p;
+        float distance = length(delta);
+        // The texel is off the slice by up to half a texel: measure its
+        // elevation within the slice plane, or a flat receiver's own
+        // texels would rise above its tangent line.
+        delta -= axis * dot(delta, axis);
+        float weight = clamp(distance * falloffMul + falloffAdd, 0.0, 1.0);
+        float c = dot(normalize(delta), view);
+        if (side == 0)
+        {
+          horizon0 = max(horizon0, mix(lowest0, c, weight));
+        }
+        else
+        {
+          horizon1 = max(horizon1, mix(lowest1, c, weight));
+        }
+      }
+    }
+    float h0 = -acos(clamp(horizon1, -1.0, 1.0));
+    float h1 = acos(clamp(horizon0, -1.0, 1.0));
+    h0 = normalAngle + clamp(h0 - normalAngle, -0.5 * fxPi, 0.5 * fxPi);
+    h1 = normalAngle + clamp(h1 - normalAngle, -0.5 * fxPi, 0.5 * fxPi);
+    float arc0 = (cosNormal + 2.0 * h0 * sin(normalAngle) - cos(2.0 * h0 - normalAngle)) / 4.0;
+    float arc1 = (cosNormal + 2.0 * h1 * sin(normalAngle) - cos(2.0 * h1 - normalAngle)) / 4.0;
+    visibility += projectedLength * (arc0 + arc1);
+  }
+  // Two slices see a tilted receiver's open hemisphere as 0.77 to 1.2
+  // depending on their direction; only the average over directions (the
+  // noise tile, then the blur) is 1. Clamping here would bias it low: the
+  // consumer clamps the blurred result instead.
+  return max(visibility / float(FX_SLICES), 0.0);
+}
+#endif
+
+void main()
+{
+  if (texCoord.x < -1.0)
+  {
+    discard; // never: see the declaration of texCoord
+  }
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  ivec2 texel = min(pixel * fxStep, fxGBufferSize - 1);
+  float depth = texelFetch(fxLinearDepth, texel, 0).r;
+  vec2 code = texelFetch(fxNormal, texel, 0).rg;
+  if (!(depth > 0.0) || fxIsUnlit(code))
+  {
+    gl_FragData[0] = vec4(1.0, depth, 0.0, 1.0); // no surface, or one VTK does not light
+    return;
+  }
+  vec2 ndc = (vec2(texel) + 0.5) / vec2(fxGBufferSize) * 2.0 - 1.0;
+  vec3 p = fxViewPosition(ndc, depth);
+  vec3 n = fxDecodeNormal(code);
+
+  vec2 rotation = fxNoise[(pixel.x & 3) + 4 * (pixel.y & 3)];
+#if FX_METHOD == 0
+  float ao = fxHemisphereOcclusion(p, n, depth, rotation);
+#else
+  float ao = fxHorizonOcclusion(texel, p, n, depth, rotation);
+#endif
   // The depth rides along as the blur's guide.
   gl_FragData[0] = vec4(ao, depth, 0.0, 1.0);
 }
