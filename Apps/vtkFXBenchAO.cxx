@@ -383,7 +383,7 @@ int BenchAO(const Options& o)
     const auto truth = reference.Trace(methods[0].Renderer, o.Width, o.Height, radius, rays);
     std::cerr << " " << truth.Seconds << " s\n";
     notes << input << ": " << rays << " stratified cosine-weighted rays per pixel, radius "
-          << radius << ", " << truth.CoveredPixels << " pixels; standard error of the reference "
+          << radius << ", " << truth.CoveredPixels << " pixels; standard error bound of the reference "
           << "(RMS over pixels) " << truth.StandardErrorRMS << "; " << truth.Seconds << " s\n";
 
     for (int f = 0; f < o.Frames; ++f)

@@ -64,6 +64,10 @@ struct vtkFXReferenceAO::Internals
       return false;
     }
     RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    if (!geometry)
+    {
+      return false;
+    }
     float* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry,
       RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), nPoints));
     for (vtkIdType i = 0; i < nPoints; ++i)
@@ -118,6 +122,10 @@ struct vtkFXReferenceAO::Internals
     {
       const vtkIdType nAtoms = molecule->GetNumberOfAtoms();
       RTCGeometry spheres = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+      if (!spheres)
+      {
+        return false; // an Embree built without point geometry
+      }
       float* data = static_cast<float*>(rtcSetNewGeometryBuffer(spheres, RTC_BUFFER_TYPE_VERTEX,
         0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), nAtoms));
       for (vtkIdType a = 0; a < nAtoms; ++a)
@@ -146,6 +154,10 @@ struct vtkFXReferenceAO::Internals
     if (mapper->GetRenderBonds() && nBonds > 0)
     {
       RTCGeometry sticks = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
+      if (!sticks)
+      {
+        return false; // an Embree built without curve geometry
+      }
       float* data = static_cast<float*>(rtcSetNewGeometryBuffer(sticks, RTC_BUFFER_TYPE_VERTEX, 0,
         RTC_FORMAT_FLOAT4, 4 * sizeof(float), 2 * nBonds));
       unsigned int* segments = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(
@@ -210,6 +222,7 @@ bool vtkFXReferenceAO::Build(vtkRenderer* renderer, std::string& error)
     }
     else if (auto* composite = vtkCompositePolyDataMapper2::SafeDownCast(actor->GetMapper()))
     {
+      composite->Update();
       vtkCompositeDataSet* blocks = vtkCompositeDataSet::SafeDownCast(composite->GetInputDataObject(0, 0));
       if (!blocks)
       {
@@ -235,6 +248,11 @@ bool vtkFXReferenceAO::Build(vtkRenderer* renderer, std::string& error)
     }
   }
   rtcCommitScene(this->Impl->Scene);
+  if (rtcGetDeviceError(this->Impl->Device) != RTC_ERROR_NONE)
+  {
+    error = "Embree failed to build the scene";
+    return false;
+  }
   if (added == 0)
   {
     error = "no geometry the reference can trace";
@@ -310,6 +328,7 @@ vtkFXReferenceAO::Result vtkFXReferenceAO::Trace(
   result.Width = width;
   result.Height = height;
   result.Occlusion.assign(static_cast<size_t>(width) * height, -1.0f);
+  result.StandardError.assign(result.Occlusion.size(), 0.0f);
   if (!this->Impl->Scene)
   {
     return result;
@@ -352,9 +371,11 @@ vtkFXReferenceAO::Result vtkFXReferenceAO::Trace(
         vtkMath::Cross(helper, n, tx);
         vtkMath::Normalize(tx);
         vtkMath::Cross(n, tx, ty);
-        // Leave the surface by a hair to avoid hitting it again.
-        const double offset = 1e-4 * radius + 1e-6 * std::max(std::fabs(p[0]),
-          std::max(std::fabs(p[1]), std::fabs(p[2])));
+        // Leave the surface by a hair to avoid hitting it again: the hit
+        // point carries float error growing with its coordinates and with
+        // the distance travelled.
+        const double offset = 1e-4 * radius + 1e-6 * (t + std::max(std::fabs(p[0]),
+          std::max(std::fabs(p[1]), std::fabs(p[2]))));
         const double start[3] = { p[0] + offset * n[0], p[1] + offset * n[1], p[2] + offset * n[2] };
         const unsigned int pixel = static_cast<unsigned int>(y * width + x);
         double sum = 0.0, sum2 = 0.0;
@@ -383,6 +404,7 @@ vtkFXReferenceAO::Result vtkFXReferenceAO::Trace(
         const double mean = sum / rays;
         result.Occlusion[pixel] = static_cast<float>(1.0 - mean);
         variance[pixel] = std::max(0.0, sum2 / rays - mean * mean) / rays;
+        result.StandardError[pixel] = static_cast<float>(std::sqrt(variance[pixel]));
       }
     }
   };

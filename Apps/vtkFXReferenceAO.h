@@ -44,7 +44,10 @@ public:
     int Width = 0;
     int Height = 0;
     std::vector<float> Occlusion;     // 1 = open, -1 = no surface; rows bottom-up
-    double StandardErrorRMS = 0.0;    // RMS over covered pixels of each pixel's standard error
+    // Per pixel, sqrt(sample variance / rays): the standard error of an
+    // unstratified mean, an upper bound for the stratified one traced here.
+    std::vector<float> StandardError;
+    double StandardErrorRMS = 0.0;    // RMS over covered pixels of StandardError
     int CoveredPixels = 0;
     double Seconds = 0.0;
   };

@@ -133,13 +133,16 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   const int width = static_cast<int>(input->GetWidth());
   const int height = static_cast<int>(input->GetHeight());
   const int fullWidth = static_cast<int>(depth->GetWidth());
+  const int fullHeight = static_cast<int>(depth->GetHeight());
   // The input covers the G-buffer at full resolution or at half of it.
-  const int step = width < fullWidth ? 2 : 1;
+  const int step = (width < fullWidth || height < fullHeight) ? 2 : 1;
   // One value with its depth alongside (vtkFXSSAOPass's output) needs no
   // guide texture: each tap is one fetch.
   const bool packed = this->NumberOfComponents == 1 && input->GetComponents() == 2;
   const int format = this->TextureFormat();
-  const int stageFormat = packed ? vtkFXRenderUtilities::RG32F : format;
+  // Intermediate stages keep full precision and values above 1 (the
+  // horizon-based occlusion averages to 1 only after the blur).
+  const int stageFormat = packed ? vtkFXRenderUtilities::RG32F : vtkFXRenderUtilities::RGBA16F;
   vtkFXRenderUtilities::EnsureTexture(this->Horizontal, window, width, height, stageFormat);
   vtkFXRenderUtilities::EnsureTexture(this->Blurred, window, width, height, stageFormat);
   if (packed)
@@ -149,7 +152,7 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   else
   {
     vtkFXRenderUtilities::EnsureTexture(
-      this->GuideTexture, window, width, height, vtkFXRenderUtilities::RGBA16F);
+      this->GuideTexture, window, width, height, vtkFXRenderUtilities::RGBA32F);
     this->RunStage(Guide, window, input, this->GuideTexture, step, packed);
   }
   this->RunStage(HorizontalPass, window, input, this->Horizontal, step, packed);
@@ -162,7 +165,7 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   if (step > 1 && (this->Upsample || !packed))
   {
     vtkFXRenderUtilities::EnsureTexture(
-      this->Upsampled, window, fullWidth, static_cast<int>(depth->GetHeight()), format);
+      this->Upsampled, window, fullWidth, fullHeight, format);
     this->RunStage(UpsamplePass, window, this->Blurred, this->Upsampled, step, packed);
     this->Output = this->Upsampled;
   }

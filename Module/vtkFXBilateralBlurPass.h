@@ -19,6 +19,9 @@
  *
  * Cost: 2 x (2 Radius + 1) taps per input pixel, plus 4 taps per output
  * pixel when upsampling, plus the guide pass for multi-value inputs.
+ *
+ * Half-resolution inputs follow vtkFXSSAOPass's layout: input texel i
+ * holds the value of G-buffer texel 2 i.
  */
 #ifndef vtkFXBilateralBlurPass_h
 #define vtkFXBilateralBlurPass_h
@@ -101,7 +104,7 @@ protected:
   int NumberOfComponents = 1;
   bool Upsample = true;
 
-  vtkSmartPointer<vtkTextureObject> GuideTexture; // (normal, depth) at input resolution
+  vtkSmartPointer<vtkTextureObject> GuideTexture; // (normal, depth), RGBA32F, input resolution
   vtkSmartPointer<vtkTextureObject> Horizontal;
   vtkSmartPointer<vtkTextureObject> Blurred;
   vtkSmartPointer<vtkTextureObject> Upsampled;

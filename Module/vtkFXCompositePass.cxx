@@ -193,6 +193,28 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
   BindSampler(program, "fxLinearDepth", gb->GetChannelTexture(GB::LinearDepth));
   BindSampler(program, "fxDebugTexture", gb->GetChannelTexture(this->DebugChannel));
   BindSampler(program, "fxOcclusion", this->OcclusionTexture());
+  if (vtkTextureObject* occlusion = this->OcclusionTexture())
+  {
+    // Pixel p (texture coordinate (p + 0.5) / W) reads occlusion texel
+    // p / step, i.e. coordinate (p / step + 0.5) / lowSize.
+    vtkTextureObject* reference = gb->GetChannelTexture(GB::Albedo);
+    float scale[2], offset[2];
+    const int full[2] = { static_cast<int>(reference->GetWidth()),
+      static_cast<int>(reference->GetHeight()) };
+    const int low[2] = { static_cast<int>(occlusion->GetWidth()),
+      static_cast<int>(occlusion->GetHeight()) };
+    for (int i = 0; i < 2; ++i)
+    {
+      const double step = low[i] < full[i] ? 2.0 : 1.0;
+      scale[i] = static_cast<float>(full[i] / (step * low[i]));
+      offset[i] = static_cast<float>((0.5 - 0.5 / step) / low[i]);
+    }
+    if (program->IsUniformUsed("fxOcclusionScale"))
+    {
+      program->SetUniform2f("fxOcclusionScale", scale);
+      program->SetUniform2f("fxOcclusionOffset", offset);
+    }
+  }
   if (program->IsUniformUsed("fxOcclusionDiffuseStrength"))
   {
     program->SetUniformf(

@@ -176,14 +176,22 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const SceneInfo& scene, vtkWindow*
     composite->SetUseAmbient(scene.AnyAmbient);
     composite->SetUseSpecular(scene.AnySpecular);
     unsigned int channels = composite->GetRequiredChannels(scene.LightingComplexity);
+    std::vector<bool> wasActive;
     for (EffectSlot& slot : this->Effects)
     {
-      // An effect that reads another's output runs only after that one ran.
+      wasActive.push_back(slot.Active);
+      slot.Active = false;
+    }
+    for (size_t i = 0; i < this->Effects.size(); ++i)
+    {
+      EffectSlot& slot = this->Effects[i];
+      // An effect that reads another's output runs only if that one runs
+      // earlier in this frame (slots run in the order they were added).
       vtkFXEffectPass* input = slot.Effect->GetInputEffect();
       const bool active = slot.Effect->GetEnabled() &&
         slot.Effect->HasWork(scene.OpaqueProps, scene.TranslucentProps) &&
         (!input || this->RanEffect(input));
-      if (slot.Active && !active)
+      if (wasActive[i] && !active)
       {
         slot.Effect->ReleaseGraphicsResources(window);
       }

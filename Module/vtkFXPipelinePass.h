@@ -135,9 +135,10 @@ public:
   /**
    * Effect slots. An effect runs at its stage (vtkFXEffectPass::Stage), in
    * the order added, under `name` (its name in timings and in the passes that
-   * ran), when it is enabled and the scene gives it work; the G-buffer then
-   * also holds the channels it reads. Adding a name again replaces the
-   * effect of that name.
+   * ran), when it is enabled and the scene gives it work, and, if it reads
+   * another effect's output (vtkFXEffectPass::SetInputEffect), when that one
+   * runs before it; the G-buffer then also holds the channels it reads.
+   * Adding a name again replaces the effect of that name.
    */
   void AddEffect(const char* name, vtkFXEffectPass* effect);
   void RemoveEffect(const char* name);

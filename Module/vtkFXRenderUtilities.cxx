@@ -36,6 +36,7 @@ const FormatInfo& Info(int format)
     { GL_R8, GL_RED, 1, VTK_UNSIGNED_CHAR, 1 },
     { GL_RG8, GL_RG, 2, VTK_UNSIGNED_CHAR, 2 },
     { GL_RG32F, GL_RG, 2, VTK_FLOAT, 8 },
+    { GL_RGBA32F, GL_RGBA, 4, VTK_FLOAT, 16 },
     { GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, 1, VTK_FLOAT, 4 },
   };
   return table[format];

@@ -45,6 +45,7 @@ public:
     R8,        // 1 byte:  occlusion in [0,1]
     RG8,       // 2 bytes: two values in [0,1]
     RG32F,     // 8 bytes: a value and a linear depth (any scene scale)
+    RGBA32F,   // 16 bytes: a normal and a linear depth (any scene scale)
     Depth32F,  // 4 bytes: hardware depth
     NumberOfTextureFormats
   };

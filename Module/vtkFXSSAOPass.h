@@ -8,10 +8,11 @@
  * because a 16-bit float overflows at 65504 world units) at
  * full or half resolution (GetOutputTexture). Normal-oriented hemisphere of
  * NumberOfSamples points, cosine-distributed with lengths u^3 (seed 000),
- * rotated per pixel by a 4x4 tile, with a range check: an unbiased estimate
- * of cosine-weighted obscurance with falloff 1 - (t/R)^(1/3) for solid
- * occluders (see vtkFXSSAOFS.glsl), which is what vtkfx-bench's ray-traced
- * reference computes.
+ * rotated per pixel by a 4x4 tile, with a range check: with solid occluders
+ * its expectation over that distribution is the cosine-weighted obscurance
+ * with falloff 1 - (t/R)^(1/3) (see vtkFXSSAOFS.glsl) that vtkfx-bench's
+ * ray-traced reference computes; the fixed low-discrepancy set (only the
+ * azimuth is rotated per pixel) approximates that expectation.
  *
  * Radius is in world units; 0 (default) means 0.1 x the diagonal of the
  * visible props' bounds, so any dataset scale works unchanged. Bias is a

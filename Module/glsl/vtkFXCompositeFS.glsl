@@ -37,6 +37,11 @@ uniform vec3 fxRayDirection[3];
 // measurable gain against the ray-traced reference: vtkfx-bench ao.)
 uniform sampler2D fxOcclusion;
 uniform float fxOcclusionDiffuseStrength;
+// Texture coordinate of this pixel in the occlusion texture: its texel i
+// holds G-buffer texel i * step (see vtkFXSSAOPass), not the centre of a
+// step x step block.
+uniform vec2 fxOcclusionScale;
+uniform vec2 fxOcclusionOffset;
 #endif
 #if FX_DEBUG_CHANNEL >= 0
 uniform sampler2D fxDebugTexture;
@@ -133,7 +138,8 @@ void main()
     // by default (Ambient = 0), so it also scales the light reaching the
     // surface diffusely, by a strength (0: physically ambient only; 1: like
     // vtkSSAOPass, which darkens the whole colour). Highlights are kept.
-    float occlusion = clamp(texture(fxOcclusion, texCoord).r, 0.0, 1.0);
+    float occlusion =
+      clamp(texture(fxOcclusion, texCoord * fxOcclusionScale + fxOcclusionOffset).r, 0.0, 1.0);
     ambientColor *= occlusion;
     diffuseLight *= mix(1.0, occlusion, fxOcclusionDiffuseStrength);
 #endif
@@ -141,7 +147,7 @@ void main()
   }
 #endif
 #if FX_DEBUG_OCCLUSION && FX_HAS_OCCLUSION
-  color = vec3(clamp(texture(fxOcclusion, texCoord).r, 0.0, 1.0));
+  color = vec3(clamp(texture(fxOcclusion, texCoord * fxOcclusionScale + fxOcclusionOffset).r, 0.0, 1.0));
   albedo.a = 1.0;
 #endif
   gl_FragData[0] = vec4(fxSanitize(color), clamp(albedo.a, 0.0, 1.0));

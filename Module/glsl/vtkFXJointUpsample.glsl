@@ -11,7 +11,8 @@
 vec4 fxJointUpsample(sampler2D lowResolution, bool depthInG, sampler2D depths, int depthComponent,
   ivec2 lowSize, int step, ivec2 pixel, float d0, float depthSigma)
 {
-  vec2 x = (vec2(pixel) + 0.5) / float(step) - 0.5;
+  // Low-resolution texel i holds the value of full-resolution texel i * step.
+  vec2 x = vec2(pixel) / float(step);
   ivec2 base = ivec2(floor(x));
   vec2 f = x - vec2(base);
   vec4 sum = vec4(0.0);
@@ -30,7 +31,7 @@ vec4 fxJointUpsample(sampler2D lowResolution, bool depthInG, sampler2D depths, i
       float w = d > 0.0 ? bilinear / (1.0 + r * r) : 0.0;
       sum += w * v;
       total += w;
-      float gap = abs(d - d0);
+      float gap = d > 0.0 ? abs(d - d0) : 1e30; // background never stands in
       if (gap < nearestGap)
       {
         nearestGap = gap;

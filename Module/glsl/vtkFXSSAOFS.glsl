@@ -10,8 +10,8 @@
 // lengths l_i = u^3, both after seed 000 (Vizerie 2009, from the Global
 // Illumination Compendium): "more sampling importance for the occluders that
 // are close to the sampling location". A sample counts as occluded when the
-// surface seen through it lies in front of it. With solid occluders this
-// estimates, without bias, the cosine-weighted ray-traced obscurance
+// surface seen through it lies in front of it. With solid occluders the
+// expectation over this distribution is the cosine-weighted obscurance
 //   A(p) = 1 - (1/pi) Int f(t(w)) cos(theta) dw,  f(t) = 1 - (t/R)^(1/3),
 // because P(l < t/R) = (t/R)^(1/3): the reference vtkfx-bench traces.
 // The kernel is rotated per pixel by a 4x4 tile of angles (seed 001's noise

@@ -87,9 +87,8 @@ int TestReferenceAO(int, char*[])
         continue;
       }
       const double expected = vtkFXTest::CreaseOcclusion(distance, R);
-      // A pixel spans a little floor: the closed form's change across it.
-      const double footprint = std::fabs(vtkFXTest::CreaseOcclusion(distance * 1.02, R) - expected);
-      const double tolerance = 4 * (0.5 / std::sqrt(double(rays))) + 0.01 + footprint;
+      const double tolerance =
+        4.0 * result.StandardError[static_cast<size_t>(y) * w + x] + 2e-3;
       worst = std::max(worst, std::fabs(traced - expected));
       FX_CHECK(std::fabs(traced - expected) <= tolerance,
         "pixel (" << x << "," << y << ") at h = " << distance << ": traced " << traced

@@ -34,7 +34,11 @@ std::vector<unsigned char> Render(vtkRenderWindow* window, const std::string& in
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
   std::string error;
-  vtkFXScenes::Populate(renderer, input, vtkFXScenes::Options(), error);
+  if (!vtkFXScenes::Populate(renderer, input, vtkFXScenes::Options(), error))
+  {
+    std::cerr << error << std::endl;
+    return {};
+  }
   vtkNew<vtkTransform> transform;
   transform->Translate(v.Offset, v.Offset, v.Offset);
   transform->Scale(v.Scale, v.Scale, v.Scale);
@@ -98,6 +102,13 @@ int TestSSAOScale(int, char*[])
     {
       unsigned char background[3];
       const auto base = Render(window, input, parallel, reference, background);
+      // The comparison means something only if the base shows occlusion.
+      int occluded = 0;
+      for (size_t i = 0; i + 2 < base.size(); i += 3)
+      {
+        occluded += (base[i] < 200 && base[i] == base[i + 1] && base[i] == base[i + 2]) ? 1 : 0;
+      }
+      FX_CHECK(!base.empty() && occluded > 100, input << ": " << occluded << " occluded pixels");
       for (const Variant& v : variants)
       {
         unsigned char bg[3];
