@@ -403,9 +403,19 @@ int BenchAO(const Options& o)
     const Method* fxDefault = nullptr;
     for (auto& m : methods)
     {
-      m.Occlusion = m.Type == Kind::VTKForward || m.Type == Kind::FXPlain
-        ? std::vector<float>(truth.Occlusion.size(), 1.0f)
-        : OcclusionOf(vtkFXScenes::Capture(m.Window), base, truth.Occlusion);
+      if (m.Type == Kind::VTKForward || m.Type == Kind::FXPlain)
+      {
+        // No occlusion: open wherever the reference sees a surface.
+        m.Occlusion = truth.Occlusion;
+        for (float& v : m.Occlusion)
+        {
+          v = v < 0.0f ? -1.0f : 1.0f;
+        }
+      }
+      else
+      {
+        m.Occlusion = OcclusionOf(vtkFXScenes::Capture(m.Window), base, truth.Occlusion);
+      }
       Compare(m.Occlusion, truth.Occlusion, m.RMSE, m.PSNR);
       const double frame = Median(m.FrameMs);
       m.Ms = m.Type == Kind::VTK ? frame - vtkBase : m.Type == Kind::FX ? frame - fxBase : 0.0;
