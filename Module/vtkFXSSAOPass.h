@@ -87,8 +87,10 @@ public:
    * closer to the ray-traced reference than Hemisphere on the bunny, the
    * fandisk, scene:corner and 1crn, at a similar cost; but its falloff is
    * not the reference's (it fades horizons from 0.385 R to R), its crease
-   * reads 0.63 instead of 0.5, and two slices per pixel leave a tilted open
-   * plane at 0.93 to 1 after the blur, so it is not the default. Its raw
+   * reads 0.63 instead of 0.5, two slices per pixel leave a tilted open
+   * plane at 0.93 to 1 after the blur, and more steps (16 fetches) move it
+   * away from the reference (its falloff darkens more), so it is not the
+   * default. Its raw
    * per-pixel values are unclamped (they exceed 1 on tilted open surfaces
    * and average to the visibility over the noise tile).
    */
