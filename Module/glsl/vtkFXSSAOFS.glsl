@@ -98,12 +98,15 @@ float fxHemisphereOcclusion(vec3 p, vec3 n, float depth, vec2 rotation)
     // this texel's ray (exact for planes, conservative for convex surfaces;
     // a relative tolerance, as the receiver's own plane sits exactly on it
     // up to rounding).
+    if (!(sceneDepth > 0.0 && sceneDepth < sampleDepth))
+    {
+      continue; // nothing in front of the sample (most samples, on open surfaces)
+    }
     vec3 rayOrigin, rayDirection;
     fxTexelRay(texelQ, rayOrigin, rayDirection);
     float facing = dot(n, rayDirection);
     float planeDepth = abs(facing) > 1e-8 ? dot(n, p - rayOrigin) / facing : -1.0;
-    bool beforePlane = planeDepth <= 0.0 || sceneDepth < planeDepth * (1.0 - 1e-3);
-    if (sceneDepth > 0.0 && sceneDepth < sampleDepth && beforePlane)
+    if (planeDepth <= 0.0 || sceneDepth < planeDepth * (1.0 - 1e-3))
     {
       // Range check: a surface far in front of the receiver is not between
       // the receiver and the sample.
