@@ -20,15 +20,6 @@ vtkStandardNewMacro(vtkFXBilateralBlurPass);
 namespace
 {
 using GB = vtkFXGBufferPass;
-void ReleaseTexture(vtkSmartPointer<vtkTextureObject>& texture, vtkWindow* window)
-{
-  if (texture)
-  {
-    texture->ReleaseGraphicsResources(window);
-    texture = nullptr;
-  }
-}
-
 enum Mode
 {
   HorizontalPass = 0,
@@ -147,7 +138,7 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   vtkFXRenderUtilities::EnsureTexture(this->Blurred, window, width, height, stageFormat);
   if (packed)
   {
-    ReleaseTexture(this->GuideTexture, window);
+    vtkFXRenderUtilities::Release(this->GuideTexture, window);
   }
   else
   {
@@ -171,7 +162,7 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   }
   else
   {
-    ReleaseTexture(this->Upsampled, window);
+    vtkFXRenderUtilities::Release(this->Upsampled, window);
   }
 }
 
@@ -188,16 +179,12 @@ void vtkFXBilateralBlurPass::ReleaseGraphicsResources(vtkWindow* w)
   }
   for (auto* texture : { &this->GuideTexture, &this->Horizontal, &this->Blurred, &this->Upsampled })
   {
-    ReleaseTexture(*texture, w);
+    vtkFXRenderUtilities::Release(*texture, w);
   }
   this->Output = nullptr;
   for (auto& framebuffer : this->FrameBuffers)
   {
-    if (framebuffer)
-    {
-      framebuffer->ReleaseGraphicsResources(w);
-      framebuffer = nullptr;
-    }
+    vtkFXRenderUtilities::Release(framebuffer, w);
   }
 }
 

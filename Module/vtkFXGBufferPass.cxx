@@ -169,11 +169,10 @@ void vtkFXGBufferPass::UpdateTargets(vtkOpenGLRenderWindow* window, int width, i
     {
       vtkFXRenderUtilities::EnsureTexture(this->Textures[c], window, width, height, ChannelFormats[c]);
     }
-    else if (this->Textures[c])
+    else
     {
       // Rule: a channel nobody reads is never kept.
-      this->Textures[c]->ReleaseGraphicsResources(window);
-      this->Textures[c] = nullptr;
+      vtkFXRenderUtilities::Release(this->Textures[c], window);
     }
   }
   vtkFXRenderUtilities::EnsureTexture(
@@ -420,22 +419,10 @@ void vtkFXGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
   }
   for (auto& texture : this->Textures)
   {
-    if (texture)
-    {
-      texture->ReleaseGraphicsResources(w);
-    }
-    texture = nullptr;
+    vtkFXRenderUtilities::Release(texture, w);
   }
-  if (this->DepthTexture)
-  {
-    this->DepthTexture->ReleaseGraphicsResources(w);
-    this->DepthTexture = nullptr;
-  }
-  if (this->FrameBuffer)
-  {
-    this->FrameBuffer->ReleaseGraphicsResources(w);
-    this->FrameBuffer = nullptr;
-  }
+  vtkFXRenderUtilities::Release(this->DepthTexture, w);
+  vtkFXRenderUtilities::Release(this->FrameBuffer, w);
   this->AllocatedChannels = 0;
   this->NumberOfTargets = 0;
 }

@@ -26,6 +26,7 @@ class vtkRenderer;
 class vtkRenderState;
 class vtkShaderProgram;
 class vtkTextureObject;
+class vtkWindow;
 
 class VTKFX_EXPORT vtkFXRenderUtilities : public vtkObject
 {
@@ -71,6 +72,20 @@ public:
    */
   static vtkShaderProgram* ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad,
     std::string& builtSource, vtkOpenGLRenderWindow* window, const std::string& fragmentSource);
+
+  /**
+   * Releases the GL resources of `object` (a texture or a framebuffer) in
+   * `window` and drops it, if there is one.
+   */
+  template <typename T>
+  static void Release(vtkSmartPointer<T>& object, vtkWindow* window)
+  {
+    if (object)
+    {
+      object->ReleaseGraphicsResources(window);
+      object = nullptr;
+    }
+  }
 
   /**
    * Size of the renderer's viewport in pixels (its tiled size).

@@ -183,16 +183,8 @@ void vtkFXSSAOPass::ReleaseGraphicsResources(vtkWindow* w)
     this->Quad.reset();
   }
   this->QuadSource.clear();
-  if (this->Occlusion)
-  {
-    this->Occlusion->ReleaseGraphicsResources(w);
-    this->Occlusion = nullptr;
-  }
-  if (this->FrameBuffer)
-  {
-    this->FrameBuffer->ReleaseGraphicsResources(w);
-    this->FrameBuffer = nullptr;
-  }
+  vtkFXRenderUtilities::Release(this->Occlusion, w);
+  vtkFXRenderUtilities::Release(this->FrameBuffer, w);
 }
 
 void vtkFXSSAOPass::PrintSelf(ostream& os, vtkIndent indent)
