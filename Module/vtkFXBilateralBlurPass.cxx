@@ -29,7 +29,12 @@ enum Mode
 };
 }
 
-vtkFXBilateralBlurPass::vtkFXBilateralBlurPass() = default;
+vtkFXBilateralBlurPass::vtkFXBilateralBlurPass()
+{
+  this->DeclareInput("source", false, false);
+  this->DeclareOutput("blurred");
+}
+
 vtkFXBilateralBlurPass::~vtkFXBilateralBlurPass() = default;
 
 unsigned int vtkFXBilateralBlurPass::GetRequiredChannels()
@@ -37,12 +42,12 @@ unsigned int vtkFXBilateralBlurPass::GetRequiredChannels()
   return GB::ChannelBit(GB::Normal) | GB::ChannelBit(GB::LinearDepth);
 }
 
-vtkTextureObject* vtkFXBilateralBlurPass::GetOutputTexture()
+vtkFXEffectPass::Output vtkFXBilateralBlurPass::GetOutput(const char* name)
 {
-  return this->Output;
+  return (name && std::string(name) == "blurred") ? this->Result : Output();
 }
 
-int vtkFXBilateralBlurPass::TextureFormat() const
+int vtkFXBilateralBlurPass::OutputFormat() const
 {
   switch (this->NumberOfComponents)
   {
@@ -51,7 +56,7 @@ int vtkFXBilateralBlurPass::TextureFormat() const
     case 2:
       return vtkFXRenderUtilities::RG8;
     default:
-      return vtkFXRenderUtilities::RGBA8;
+      return vtkFXRenderUtilities::RGBA16F;
   }
 }
 
@@ -110,13 +115,20 @@ void vtkFXBilateralBlurPass::RunStage(int mode, vtkOpenGLRenderWindow* window,
 void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
-  this->Output = nullptr;
-  vtkTextureObject* input = this->InputEffect ? this->InputEffect->GetOutputTexture() : nullptr;
+  this->Result = Output();
+  const Output source = this->GetInput("source");
+  vtkTextureObject* input = source.Texture;
   vtkTextureObject* depth = this->GBuffer ? this->GBuffer->GetChannelTexture(GB::LinearDepth) : nullptr;
   if (!input || !depth || !this->GBuffer->GetChannelTexture(GB::Normal))
   {
-    vtkErrorMacro("vtkFXBilateralBlurPass needs an input effect that wrote a texture and a "
+    vtkErrorMacro("vtkFXBilateralBlurPass needs a source that wrote a texture and a "
                   "G-buffer with normal and linear depth channels.");
+    return;
+  }
+  if (source.Step != 1 && source.Step != 2)
+  {
+    vtkErrorMacro("vtkFXBilateralBlurPass takes sources at full or half resolution, not step "
+      << source.Step << ".");
     return;
   }
   vtkOpenGLRenderWindow* window =
@@ -125,12 +137,10 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   const int height = static_cast<int>(input->GetHeight());
   const int fullWidth = static_cast<int>(depth->GetWidth());
   const int fullHeight = static_cast<int>(depth->GetHeight());
-  // The input covers the G-buffer at full resolution or at half of it.
-  const int step = (width < fullWidth || height < fullHeight) ? 2 : 1;
+  const int step = source.Step;
   // One value with its depth alongside (vtkFXSSAOPass's output) needs no
   // guide texture: each tap is one fetch.
-  const bool packed = this->NumberOfComponents == 1 && input->GetComponents() == 2;
-  const int format = this->TextureFormat();
+  const bool packed = this->NumberOfComponents == 1 && source.DepthComponent == 1;
   // Intermediate stages keep full precision and values above 1 (the
   // horizon-based occlusion averages to 1 only after the blur).
   const int stageFormat = packed ? vtkFXRenderUtilities::RG32F : vtkFXRenderUtilities::RGBA16F;
@@ -151,18 +161,22 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   // Consumers that upsample inline blend neighbours with the hardware.
   this->Blurred->SetMinificationFilter(vtkTextureObject::Linear);
   this->Blurred->SetMagnificationFilter(vtkTextureObject::Linear);
-  this->Output = this->Blurred;
-  // Only depth-carrying output can be upsampled by its consumer.
-  if (step > 1 && (this->Upsample || !packed))
+  this->Result.Components = this->NumberOfComponents;
+  if (step > 1 && this->Upsample)
   {
-    vtkFXRenderUtilities::EnsureTexture(
-      this->Upsampled, window, fullWidth, fullHeight, format);
+    const int format = this->OutputFormat();
+    vtkFXRenderUtilities::EnsureTexture(this->Upsampled, window, fullWidth, fullHeight, format);
     this->RunStage(UpsamplePass, window, this->Blurred, this->Upsampled, step, packed);
-    this->Output = this->Upsampled;
+    this->Result.Texture = this->Upsampled;
+    this->Result.Format = format;
   }
   else
   {
     vtkFXRenderUtilities::Release(this->Upsampled, window);
+    this->Result.Texture = this->Blurred;
+    this->Result.Step = step;
+    this->Result.Format = stageFormat;
+    this->Result.DepthComponent = packed ? 1 : -1;
   }
 }
 
@@ -181,7 +195,7 @@ void vtkFXBilateralBlurPass::ReleaseGraphicsResources(vtkWindow* w)
   {
     vtkFXRenderUtilities::Release(*texture, w);
   }
-  this->Output = nullptr;
+  this->Result = Output();
   for (auto& framebuffer : this->FrameBuffers)
   {
     vtkFXRenderUtilities::Release(framebuffer, w);
@@ -195,4 +209,5 @@ void vtkFXBilateralBlurPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DepthSigma: " << this->DepthSigma << "\n";
   os << indent << "NormalPower: " << this->NormalPower << "\n";
   os << indent << "NumberOfComponents: " << this->NumberOfComponents << "\n";
+  os << indent << "Upsample: " << this->Upsample << "\n";
 }

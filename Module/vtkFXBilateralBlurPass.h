@@ -2,26 +2,31 @@
  * @class   vtkFXBilateralBlurPass
  * @brief   Depth- and normal-aware separable blur, with joint-bilateral upsampling.
  *
- * Reads the output texture of its input effect (SetInputEffect, e.g. a
- * vtkFXSSAOPass) with 1 to 4 values per pixel, at the G-buffer's resolution
- * or half of it, and the G-buffer's linear depth and normal channels as
- * guides. Writes a texture of the same number of values at the G-buffer's
- * full resolution (GetOutputTexture): a horizontal and a vertical pass of
+ * Reads its input "source" (another effect's output, e.g. vtkFXSSAOPass's
+ * "occlusion") with 1 to 4 values per pixel, at the G-buffer's resolution
+ * or a reduced one (the step the source declares), and the G-buffer's
+ * linear depth and normal channels as guides. Writes the output "blurred"
+ * with the same number of values, at full resolution or, with Upsample
+ * off, at the source's: a horizontal and a vertical pass of
  * 2 x Radius + 1 taps weighted by a Gaussian of the distance, a Cauchy
  * weight of the relative depth difference (DepthSigma, a fraction of the
  * depth, so the result does not depend on the scene's scale) and the normal
  * agreement (NormalPower),
- * then, for half-resolution input, a joint-bilateral upsample (4 taps).
+ * then, for reduced-resolution input, a joint-bilateral upsample (4 taps).
  *
  * A one-value input that carries its linear depth in its second channel
- * (what vtkFXSSAOPass writes) is blurred by depth alone, one fetch per tap;
- * other inputs first get a guide texture (normal and depth per input pixel).
+ * (what vtkFXSSAOPass writes) is blurred by depth alone, one fetch per tap,
+ * and its blurred output keeps carrying the depth until upsampled; other
+ * inputs first get a guide texture (normal and depth per input pixel).
+ * Output formats: one or two values R8 / RG8 at full resolution, RG32F
+ * with a carried depth, RGBA16F for three or four values (directional
+ * occlusion's channels keep their precision).
  *
  * Cost: 2 x (2 Radius + 1) taps per input pixel, plus 4 taps per output
  * pixel when upsampling, plus the guide pass for multi-value inputs.
  *
- * Half-resolution inputs follow vtkFXSSAOPass's layout: input texel i
- * holds the value of G-buffer texel 2 i.
+ * Reduced-resolution inputs follow vtkFXSSAOPass's layout: input texel i
+ * holds the value of G-buffer texel step x i (steps 1 and 2).
  */
 #ifndef vtkFXBilateralBlurPass_h
 #define vtkFXBilateralBlurPass_h
@@ -74,18 +79,18 @@ public:
   vtkGetMacro(NumberOfComponents, int);
 
   /**
-   * Upsample a half-resolution input to full resolution (default on). Off,
-   * a one-value input that carries its depth (see above) stays at its
-   * resolution with the depth in the output's second channel, for a
-   * consumer that upsamples inline (vtkFXCompositePass does: it saves a
-   * full-resolution pass); other inputs are always upsampled.
+   * Upsample a reduced-resolution input to full resolution (default on).
+   * Off, the output stays at the input's resolution (with the depth in the
+   * second channel when the input carries one), for a consumer that
+   * samples it bilinearly (the composite does: it saves a full-resolution
+   * pass).
    */
   vtkSetMacro(Upsample, bool);
   vtkGetMacro(Upsample, bool);
   vtkBooleanMacro(Upsample, bool);
 
   unsigned int GetRequiredChannels() override;
-  vtkTextureObject* GetOutputTexture() override;
+  Output GetOutput(const char* name) override;
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -96,7 +101,7 @@ protected:
 
   void RunStage(int mode, vtkOpenGLRenderWindow* window, vtkTextureObject* input,
     vtkTextureObject* output, int step, bool packed);
-  int TextureFormat() const;
+  int OutputFormat() const;
 
   int Radius = 4;
   double DepthSigma = 0.05;
@@ -108,7 +113,7 @@ protected:
   vtkSmartPointer<vtkTextureObject> Horizontal;
   vtkSmartPointer<vtkTextureObject> Blurred;
   vtkSmartPointer<vtkTextureObject> Upsampled;
-  vtkTextureObject* Output = nullptr;
+  Output Result; // what the last Render() wrote
   static constexpr int NumberOfModes = 4; // horizontal, vertical, upsample, guide
   vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffers[NumberOfModes];
   std::unique_ptr<vtkOpenGLQuadHelper> Quads[NumberOfModes];

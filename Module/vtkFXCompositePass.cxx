@@ -8,6 +8,10 @@
 #include "vtkFXRenderUtilities.h"
 
 #include "vtkCamera.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkTransform.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -19,6 +23,7 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
 #include <sstream>
 
 vtkStandardNewMacro(vtkFXCompositePass);
@@ -27,31 +32,68 @@ namespace
 {
 using GB = vtkFXGBufferPass;
 
+// Texels per light in the light texture, and the layout both sides share.
+constexpr int LightTexels = 4;
+
+// Wraps one light's call so that the effects' per-light visibility code can
+// scale what this light contributes; without such code, the call adds
+// straight into diffuseLight and specularLight as VTK's shaders do.
+std::string LightTerm(const std::string& call, const std::string& index,
+  const std::string& visibilityCode)
+{
+  if (visibilityCode.empty())
+  {
+    return "    " + call + "diffuseLight, specularLight);\n";
+  }
+  return "    {\n      vec3 lightDiffuse = vec3(0.0);\n      vec3 lightSpecular = vec3(0.0);\n      " +
+    call + "lightDiffuse, lightSpecular);\n      float lightVisibility = 1.0;\n      int lightIndex = " +
+    index + ";\n" + visibilityCode +
+    "\n      diffuseLight += lightVisibility * lightDiffuse;\n"
+    "      specularLight += lightVisibility * lightSpecular;\n    }\n";
+}
+
 // Calls of vtkFXLightingFS.glsl's functions, one per light that is on, with
 // VTK's per-light uniform names (vtkOpenGLRenderer::GetLightingUniforms).
-std::string LightCallsGLSL(int complexity, int lightCount)
+std::string UniformLightCalls(int complexity, int lightCount, const std::string& visibilityCode)
 {
   std::ostringstream s;
   for (int i = 0; i < lightCount && complexity > 0; ++i)
   {
+    const std::string n = std::to_string(i);
     switch (complexity)
     {
-      case 1:
-        s << "fxHeadlight(n, lightColor0, specularPower, diffuseLight, specularLight);\n";
-        return s.str(); // a headlight is the only light by definition
+      case 1: // a headlight is the only light by definition
+        return LightTerm("fxHeadlight(n, lightColor0, specularPower, ", "0", visibilityCode);
       case 2:
-        s << "    fxDirectionalLight(n, view, lightDirectionVC" << i << ", lightColor" << i
-          << ", specularPower, diffuseLight, specularLight);\n";
+        s << LightTerm("fxDirectionalLight(n, view, lightDirectionVC" + n + ", lightColor" + n +
+            ", specularPower, ",
+          n, visibilityCode);
         break;
       default:
-        s << "    fxPositionalLight(n, position, view, lightPositional" << i
-          << ", lightDirectionVC" << i << ", lightPositionVC" << i << ", lightAttenuation" << i
-          << ", lightConeAngle" << i << ", lightExponent" << i << ", lightColor" << i
-          << ", specularPower, diffuseLight, specularLight);\n";
+        s << LightTerm("fxPositionalLight(n, position, view, lightPositional" + n +
+            ", lightDirectionVC" + n + ", lightPositionVC" + n + ", lightAttenuation" + n +
+            ", lightConeAngle" + n + ", lightExponent" + n + ", lightColor" + n +
+            ", specularPower, ",
+          n, visibilityCode);
         break;
     }
   }
   return s.str();
+}
+
+// The same calls in a loop over the light texture (layout: UploadLightTexture).
+std::string TextureLightLoop(int complexity, const std::string& visibilityCode)
+{
+  const std::string call = complexity == 2
+    ? "fxDirectionalLight(n, view, light1.xyz, light0.rgb, specularPower, "
+    : "fxPositionalLight(n, position, view, int(light0.a), light1.xyz, light2.xyz, light3.xyz, "
+      "light1.w, light2.w, light0.rgb, specularPower, ";
+  return "    for (int i = 0; i < fxLightCount; ++i)\n    {\n"
+         "      vec4 light0 = texelFetch(fxLights, ivec2(0, i), 0);\n"
+         "      vec4 light1 = texelFetch(fxLights, ivec2(1, i), 0);\n"
+         "      vec4 light2 = texelFetch(fxLights, ivec2(2, i), 0);\n"
+         "      vec4 light3 = texelFetch(fxLights, ivec2(3, i), 0);\n" +
+    LightTerm(call, "i", visibilityCode) + "    }\n";
 }
 
 // Binds `texture` to a free unit and points `sampler` at it.
@@ -63,6 +105,12 @@ void BindSampler(vtkShaderProgram* program, const char* sampler, vtkTextureObjec
     program->SetUniformi(sampler, texture->GetTextureUnit());
   }
 }
+
+// The prefix that stands for '@' in the code of contributor `i`.
+std::string ContributorPrefix(size_t i)
+{
+  return "fxE" + std::to_string(i) + "_";
+}
 }
 
 vtkFXCompositePass::vtkFXCompositePass() = default;
@@ -70,11 +118,47 @@ vtkFXCompositePass::vtkFXCompositePass() = default;
 vtkFXCompositePass::~vtkFXCompositePass()
 {
   this->SetGBuffer(nullptr);
-  this->SetOcclusionEffect(nullptr);
 }
 
 vtkCxxSetObjectMacro(vtkFXCompositePass, GBuffer, vtkFXGBufferPass);
-vtkCxxSetObjectMacro(vtkFXCompositePass, OcclusionEffect, vtkFXEffectPass);
+
+void vtkFXCompositePass::RemoveAllContributors()
+{
+  this->Contributors.clear();
+}
+
+void vtkFXCompositePass::AddContributor(vtkFXEffectPass* effect)
+{
+  if (effect)
+  {
+    this->Contributors.emplace_back(effect);
+  }
+}
+
+int vtkFXCompositePass::GetNumberOfContributors() const
+{
+  return static_cast<int>(this->Contributors.size());
+}
+
+std::string vtkFXCompositePass::EffectCode(int hook) const
+{
+  std::string code;
+  for (size_t i = 0; i < this->Contributors.size(); ++i)
+  {
+    std::string part = this->Contributors[i]->GetCompositeCode(hook);
+    if (!part.empty())
+    {
+      vtkShaderProgram::Substitute(part, "@", ContributorPrefix(i), true);
+      code += part + "\n";
+    }
+  }
+  return code;
+}
+
+bool vtkFXCompositePass::UsesLightTexture(vtkOpenGLRenderer* ren) const
+{
+  return ren->GetLightingComplexity() >= 2 && ren->GetLightingCount() > this->MaximumUniformLights;
+}
 
 unsigned int vtkFXCompositePass::GetRequiredChannels(int lightingComplexity) const
 {
@@ -89,6 +173,10 @@ unsigned int vtkFXCompositePass::GetRequiredChannels(int lightingComplexity) con
     if (this->UseAmbient)
     {
       mask |= GB::ChannelBit(GB::Ambient);
+    }
+    if (this->UseEmission)
+    {
+      mask |= GB::ChannelBit(GB::Emission);
     }
     // Positions enter VTK's model through the view vector of specular
     // highlights (complexity >= 2) and the light vector of positional lights.
@@ -114,11 +202,11 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
   bool hasSpecular = gb->GetChannelTexture(GB::Specular) != nullptr && complexity > 0;
   if (complexity >= 2 && hasSpecular && !hasDepth)
   {
-    if (!this->WarnedMissingDepth)
+    if (!this->WarnedSpecularWithoutDepth)
     {
       vtkWarningMacro("Specular highlights need the G-buffer's linear depth "
                       "(see GetRequiredChannels); they are left out.");
-      this->WarnedMissingDepth = true;
+      this->WarnedSpecularWithoutDepth = true;
     }
     hasSpecular = false;
   }
@@ -126,95 +214,111 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
   {
     return std::string(); // Render() reports it
   }
-  const bool needsPosition = complexity == 3 || (complexity == 2 && hasSpecular);
+  std::string hooks[vtkFXEffectPass::NumberOfCompositeHooks];
+  bool anyHook = false;
+  for (int h = 0; h < vtkFXEffectPass::NumberOfCompositeHooks; ++h)
+  {
+    hooks[h] = this->EffectCode(h);
+    anyHook = anyHook || !hooks[h].empty();
+  }
+  // Effects' code may use the view-space position wherever depth exists.
+  const bool needsPosition =
+    complexity == 3 || (complexity == 2 && hasSpecular) || (anyHook && hasDepth);
+  const bool lightTexture = complexity >= 2 && this->UsesLightTexture(ren);
+  const bool hasEmission = this->UseEmission && gb->GetChannelTexture(GB::Emission) != nullptr;
 
   std::ostringstream defines;
   defines << "//VTK::System::Dec\n"
           << "#define FX_LIGHTING " << complexity << "\n"
+          << "#define FX_LIGHT_TEXTURE " << (lightTexture ? 1 : 0) << "\n"
           << "#define FX_HAS_SPECULAR " << (hasSpecular ? 1 : 0) << "\n"
           << "#define FX_HAS_AMBIENT " << (gb->GetChannelTexture(GB::Ambient) ? 1 : 0) << "\n"
+          << "#define FX_HAS_EMISSION " << (hasEmission ? 1 : 0) << "\n"
           << "#define FX_NEEDS_POSITION " << (needsPosition ? 1 : 0) << "\n"
-          << "#define FX_HAS_OCCLUSION " << (this->OcclusionTexture() && complexity > 0 ? 1 : 0)
-          << "\n"
           << "#define FX_CHANNEL_NORMAL " << GB::Normal << "\n"
           << "#define FX_CHANNEL_DEPTH " << GB::LinearDepth << "\n"
           << "#define FX_DEBUG_OCCLUSION " << (this->DebugOcclusion ? 1 : 0) << "\n"
           << "#define FX_DEBUG_CHANNEL "
           << (gb->GetChannelTexture(this->DebugChannel) ? this->DebugChannel : -1) << "\n";
 
+  const std::string& visibility = hooks[vtkFXEffectPass::LightVisibility];
   std::string fs = vtkFXCompositeFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str(), false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXLighting::Dec", vtkFXLightingFS, false);
+  vtkShaderProgram::Substitute(fs, "//VTK::Light::Dec",
+    complexity > 0 && !lightTexture ? ren->GetLightingUniforms() : "", false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXLight::Impl",
+    lightTexture ? TextureLightLoop(complexity, visibility)
+                 : UniformLightCalls(complexity, lightCount, visibility),
+    false);
   vtkShaderProgram::Substitute(
-    fs, "//VTK::Light::Dec", complexity > 0 ? ren->GetLightingUniforms() : "", false);
+    fs, "//VTK::FXEffects::Dec", hooks[vtkFXEffectPass::Declarations], false);
   vtkShaderProgram::Substitute(
-    fs, "//VTK::FXLight::Impl", LightCallsGLSL(complexity, lightCount), false);
+    fs, "//VTK::FXEffects::Ambient", hooks[vtkFXEffectPass::Ambient], false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXEffects::Color", hooks[vtkFXEffectPass::Color], false);
   return fs;
 }
 
-void vtkFXCompositePass::Render(const vtkRenderState* s)
+void vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
 {
-  this->NumberOfRenderedProps = 0;
-  vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
-  if (!ren || !this->GBuffer || !this->GBuffer->GetDepthTexture() ||
-    !this->GBuffer->GetChannelTexture(GB::Albedo))
+  // VTK's own light parameters (vtkOpenGLRenderer::UpdateLightingUniforms),
+  // one row of 4 texels per light: colour x intensity and the positional
+  // flag; direction in view space and cone angle; position in view space and
+  // exponent; attenuation.
+  vtkTransform* view = ren->GetActiveCamera()->GetModelViewTransformObject();
+  vtkTransform* user = ren->GetUserLightTransform();
+  std::vector<float> texels;
+  vtkLightCollection* lights = ren->GetLights();
+  vtkCollectionSimpleIterator it;
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
   {
-    vtkErrorMacro("vtkFXCompositePass needs a rendered G-buffer with an albedo channel.");
-    return;
-  }
-  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  vtkOpenGLState* state = window->GetState();
-
-  const std::string fragmentShader = this->BuildFragmentShader(ren);
-  if (fragmentShader.empty())
-  {
-    if (!this->WarnedMissingDepth)
+    if (light->GetSwitch() <= 0)
     {
-      vtkErrorMacro("Positional lights need the G-buffer's linear depth channel "
-                    "(see GetRequiredChannels); the opaque props are not drawn.");
-      this->WarnedMissingDepth = true;
+      continue;
     }
-    return;
+    double direction[3], directionVC[3], positionVC[3];
+    vtkMath::Subtract(light->GetTransformedFocalPoint(), light->GetTransformedPosition(), direction);
+    vtkMath::Normalize(direction);
+    view->TransformNormal(direction, directionVC);
+    view->TransformPoint(light->GetTransformedPosition(), positionVC);
+    if (!light->LightTypeIsSceneLight() && user)
+    {
+      user->TransformNormal(directionVC, directionVC);
+      user->TransformPoint(positionVC, positionVC);
+    }
+    const double* color = light->GetDiffuseColor();
+    const double intensity = light->GetIntensity();
+    const double* attenuation = light->GetAttenuationValues();
+    const double row[LightTexels * 4] = { color[0] * intensity, color[1] * intensity,
+      color[2] * intensity, static_cast<double>(light->GetPositional()), directionVC[0],
+      directionVC[1], directionVC[2], light->GetConeAngle(), positionVC[0], positionVC[1],
+      positionVC[2], light->GetExponent(), attenuation[0], attenuation[1], attenuation[2], 0.0 };
+    texels.insert(texels.end(), row, row + LightTexels * 4);
   }
-  vtkShaderProgram* program =
-    vtkFXRenderUtilities::ReadyQuad(this->Quad, this->QuadSource, window, fragmentShader);
-  if (!program)
+  const int count = static_cast<int>(texels.size() / (LightTexels * 4));
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkFXRenderUtilities::EnsureTexture(
+    this->LightTexture, window, LightTexels, std::max(count, 1), vtkFXRenderUtilities::RGBA32F);
+  if (count > 0)
   {
-    return;
+    this->LightTexture->Bind();
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, LightTexels, count, GL_RGBA, GL_FLOAT, texels.data());
   }
+}
 
+void vtkFXCompositePass::SetUniforms(vtkShaderProgram* program, vtkOpenGLRenderer* ren)
+{
   vtkFXGBufferPass* gb = this->GBuffer;
   BindSampler(program, "fxHardwareDepth", gb->GetDepthTexture());
   BindSampler(program, "fxAlbedo", gb->GetChannelTexture(GB::Albedo));
   BindSampler(program, "fxNormal", gb->GetChannelTexture(GB::Normal));
   BindSampler(program, "fxSpecular", gb->GetChannelTexture(GB::Specular));
   BindSampler(program, "fxAmbient", gb->GetChannelTexture(GB::Ambient));
+  BindSampler(program, "fxEmission", gb->GetChannelTexture(GB::Emission));
   BindSampler(program, "fxLinearDepth", gb->GetChannelTexture(GB::LinearDepth));
   BindSampler(program, "fxDebugTexture", gb->GetChannelTexture(this->DebugChannel));
-  BindSampler(program, "fxOcclusion", this->OcclusionTexture());
-  if (vtkTextureObject* occlusion = this->OcclusionTexture())
-  {
-    // Pixel p (texture coordinate (p + 0.5) / W) reads occlusion texel
-    // p / step, i.e. coordinate (p / step + 0.5) / lowSize.
-    vtkTextureObject* reference = gb->GetChannelTexture(GB::Albedo);
-    float scale[2], offset[2];
-    const int full[2] = { static_cast<int>(reference->GetWidth()),
-      static_cast<int>(reference->GetHeight()) };
-    const int low[2] = { static_cast<int>(occlusion->GetWidth()),
-      static_cast<int>(occlusion->GetHeight()) };
-    for (int i = 0; i < 2; ++i)
-    {
-      const double step = low[i] < full[i] ? 2.0 : 1.0;
-      scale[i] = static_cast<float>(full[i] / (step * low[i]));
-      offset[i] = static_cast<float>((0.5 - 0.5 / step) / low[i]);
-    }
-    if (program->IsUniformUsed("fxOcclusionScale"))
-    {
-      program->SetUniform2f("fxOcclusionScale", scale);
-      program->SetUniform2f("fxOcclusionOffset", offset);
-    }
-  }
   if (program->IsUniformUsed("fxOcclusionDiffuseStrength"))
   {
     program->SetUniformf(
@@ -228,43 +332,92 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
     const float r[2] = { static_cast<float>(range[0]), static_cast<float>(range[1]) };
     program->SetUniform2f("fxDepthRange", r);
   }
-  // VTK's own light uniforms, exactly as its mappers receive them.
-  ren->UpdateLightingUniforms(program);
-
+  if (program->IsUniformUsed("fxLights"))
   {
-    vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
-    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-    vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-    vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
-    // Write the G-buffer depth for every covered pixel, whatever was there.
-    state->vtkglEnable(GL_DEPTH_TEST);
-    state->vtkglDepthFunc(GL_ALWAYS);
-    state->vtkglDepthMask(GL_TRUE);
-    // Blend like VTK's opaque pass, so that opacity < 1 forced opaque
-    // (vtkActor::ForceOpaque) shows the background as it does forward.
-    state->vtkglEnable(GL_BLEND);
-    state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    this->Quad->Render();
+    this->UploadLightTexture(ren);
+    BindSampler(program, "fxLights", this->LightTexture);
+    program->SetUniformi("fxLightCount", ren->GetLightingCount());
   }
+  else
+  {
+    vtkFXRenderUtilities::Release(this->LightTexture, ren->GetRenderWindow());
+    // VTK's own light uniforms, exactly as its mappers receive them.
+    ren->UpdateLightingUniforms(program);
+  }
+  for (size_t i = 0; i < this->Contributors.size(); ++i)
+  {
+    this->Contributors[i]->BindCompositeResources(program, ContributorPrefix(i));
+  }
+}
+
+void vtkFXCompositePass::Draw(vtkOpenGLRenderer* ren)
+{
+  vtkOpenGLState* state = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow())->GetState();
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
+  // Depth-tested like VTK's opaque pass against what the framebuffer holds:
+  // the renderer's cleared depth, or, for a layered renderer that preserves
+  // the depth buffer, what the layers below drew, which stays in front.
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LEQUAL);
+  state->vtkglDepthMask(GL_TRUE);
+  // Blend like VTK's opaque pass, so that opacity < 1 forced opaque
+  // (vtkActor::ForceOpaque) shows the background as it does forward.
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  this->Quad->Render();
+}
+
+void vtkFXCompositePass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  if (!ren || !this->GBuffer || !this->GBuffer->GetDepthTexture() ||
+    !this->GBuffer->GetChannelTexture(GB::Albedo))
+  {
+    vtkErrorMacro("vtkFXCompositePass needs a rendered G-buffer with an albedo channel.");
+    return;
+  }
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  const std::string fragmentShader = this->BuildFragmentShader(ren);
+  if (fragmentShader.empty())
+  {
+    if (!this->ReportedPositionalWithoutDepth)
+    {
+      vtkErrorMacro("Positional lights need the G-buffer's linear depth channel "
+                    "(see GetRequiredChannels); the opaque props are not drawn.");
+      this->ReportedPositionalWithoutDepth = true;
+    }
+    return;
+  }
+  vtkShaderProgram* program =
+    vtkFXRenderUtilities::ReadyQuad(this->Quad, this->QuadSource, window, fragmentShader);
+  if (!program)
+  {
+    return;
+  }
+  this->SetUniforms(program, ren);
+  this->Draw(ren);
 
   for (int c = 0; c < GB::NumberOfChannels; ++c)
   {
-    if (vtkTextureObject* t = gb->GetChannelTexture(c))
+    if (vtkTextureObject* t = this->GBuffer->GetChannelTexture(c))
     {
       t->Deactivate();
     }
   }
-  gb->GetDepthTexture()->Deactivate();
-  if (vtkTextureObject* occlusion = this->OcclusionTexture())
+  this->GBuffer->GetDepthTexture()->Deactivate();
+  if (this->LightTexture)
   {
-    occlusion->Deactivate();
+    this->LightTexture->Deactivate();
   }
-}
-
-vtkTextureObject* vtkFXCompositePass::OcclusionTexture() const
-{
-  return this->OcclusionEffect ? this->OcclusionEffect->GetOutputTexture() : nullptr;
+  for (const auto& contributor : this->Contributors)
+  {
+    contributor->UnbindCompositeResources();
+  }
 }
 
 void vtkFXCompositePass::ReleaseGraphicsResources(vtkWindow* w)
@@ -275,6 +428,7 @@ void vtkFXCompositePass::ReleaseGraphicsResources(vtkWindow* w)
     this->Quad.reset();
   }
   this->QuadSource.clear();
+  vtkFXRenderUtilities::Release(this->LightTexture, w);
 }
 
 void vtkFXCompositePass::PrintSelf(ostream& os, vtkIndent indent)
@@ -286,4 +440,12 @@ void vtkFXCompositePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OcclusionDiffuseStrength: " << this->OcclusionDiffuseStrength << "\n";
   os << indent << "UseSpecular: " << this->UseSpecular << "\n";
   os << indent << "UseAmbient: " << this->UseAmbient << "\n";
+  os << indent << "UseEmission: " << this->UseEmission << "\n";
+  os << indent << "MaximumUniformLights: " << this->MaximumUniformLights << "\n";
+  os << indent << "Contributors:";
+  for (const auto& contributor : this->Contributors)
+  {
+    os << " " << contributor->GetClassName();
+  }
+  os << "\n";
 }

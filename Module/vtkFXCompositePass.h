@@ -3,11 +3,14 @@
  * @brief   Deferred lighting of a vtkFXGBufferPass with VTK's own light model.
  *
  * Reads: the G-buffer's hardware depth, albedo and, when allocated, normal,
- * linear depth, specular and ambient channels; the renderer's
+ * linear depth, specular, ambient and emission channels; the renderer's
  * lights through vtkOpenGLRenderer::UpdateLightingUniforms, so headlights,
  * camera and scene lights, positional lights with cone and attenuation,
  * vtkLightKit and two-sided lighting give the same numbers as VTK's forward
- * shaders (same formulas, same uniforms).
+ * shaders (same formulas, same uniforms). With more lights on than
+ * MaximumUniformLights, the same light parameters come from a small float
+ * texture (4 RGBA32F texels per light) that the shader loops over, so the
+ * light count is a uniform: adding a light recompiles nothing.
  *
  * Writes: the lit colour of every covered pixel into the current framebuffer
  * (blended like VTK's opaque pass), and the G-buffer depth into its depth
@@ -15,10 +18,14 @@
  * depth-tested as usual. Background pixels are left untouched.
  *
  * Cost: one full-screen pass, one texture read per allocated channel and a
- * loop over the lights per pixel.
+ * loop over the lights per pixel (plus 4 texel reads per light on the
+ * light-texture path), plus what the contributing effects' code costs.
  *
- * Optional input: an occlusion texture (SetOcclusionEffect) scales the
- * ambient term and, by OcclusionDiffuseStrength, the diffuse light.
+ * Effects contribute code at the composite's hook points (declarations,
+ * per-light visibility, ambient visibility, final colour; see
+ * vtkFXEffectPass) and bind what it reads: AddContributor. The ambient
+ * visibility they leave (e.g. occlusion) scales the ambient term and, by
+ * OcclusionDiffuseStrength, the diffuse light.
  *
  * DebugChannel shows one G-buffer channel instead of the lit image.
  */
@@ -29,12 +36,16 @@
 #include "vtkFXModule.h"
 #include "vtkRenderPass.h"
 
+#include "vtkSmartPointer.h" // for the contributors
+
 #include <memory>
 #include <string>
+#include <vector>
 
 class vtkFXEffectPass;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderer;
+class vtkShaderProgram;
 class vtkTextureObject;
 
 class VTKFX_EXPORT vtkFXCompositePass : public vtkRenderPass
@@ -59,8 +70,8 @@ public:
   vtkGetMacro(DebugChannel, int);
 
   /**
-   * Show the occlusion input (grey, 1 = open) instead of the lit image
-   * where surfaces are lit (default off).
+   * Show the ambient visibility the contributing effects computed (grey,
+   * 1 = open, e.g. ambient occlusion) instead of the lit image (default off).
    */
   vtkSetMacro(DebugOcclusion, bool);
   vtkGetMacro(DebugOcclusion, bool);
@@ -79,13 +90,30 @@ public:
   ///@}
 
   /**
-   * An effect whose output texture holds ambient occlusion (1 = open), e.g.
-   * a vtkFXSSAOPass or the vtkFXBilateralBlurPass after it; nullptr (the
-   * default) for none. Read at render time; an effect that wrote no texture
-   * is ignored.
+   * Whether some lit prop emits light of its own
+   * (vtkFXGBufferPass::EMISSIVE_COLOR), added to its lit colour from the
+   * emission channel (default off: the channel is not read).
    */
-  virtual void SetOcclusionEffect(vtkFXEffectPass* effect);
-  vtkGetObjectMacro(OcclusionEffect, vtkFXEffectPass);
+  vtkSetMacro(UseEmission, bool);
+  vtkGetMacro(UseEmission, bool);
+
+  /**
+   * Most lights served by VTK's per-light uniforms (1..64, default 8); with
+   * more lights on, they come from a light texture the shader loops over.
+   */
+  vtkSetClampMacro(MaximumUniformLights, int, 1, 64);
+  vtkGetMacro(MaximumUniformLights, int);
+
+  ///@{
+  /**
+   * Effects whose composite code (vtkFXEffectPass::GetCompositeCode) runs
+   * in this pass, in order. vtkFXPipelinePass sets them every frame to the
+   * effects that ran.
+   */
+  void RemoveAllContributors();
+  void AddContributor(vtkFXEffectPass* effect);
+  int GetNumberOfContributors() const;
+  ///@}
 
   /**
    * How much occlusion also darkens the diffuse light (0..1, dimensionless,
@@ -113,17 +141,26 @@ protected:
   ~vtkFXCompositePass() override;
 
   std::string BuildFragmentShader(vtkOpenGLRenderer* ren);
-  vtkTextureObject* OcclusionTexture() const;
+  std::string EffectCode(int hook) const;
+  bool UsesLightTexture(vtkOpenGLRenderer* ren) const;
+  void UploadLightTexture(vtkOpenGLRenderer* ren);
+  void SetUniforms(vtkShaderProgram* program, vtkOpenGLRenderer* ren);
+  void Draw(vtkOpenGLRenderer* ren);
 
   vtkFXGBufferPass* GBuffer = nullptr;
-  vtkFXEffectPass* OcclusionEffect = nullptr;
   double OcclusionDiffuseStrength = 1.0;
   int DebugChannel = -1;
+  int MaximumUniformLights = 8;
   bool DebugOcclusion = false;
   bool UseSpecular = true;
   bool UseAmbient = true;
+  bool UseEmission = false;
 
-  bool WarnedMissingDepth = false; // report a misconfigured G-buffer once
+  // Each misconfiguration is reported once.
+  bool WarnedSpecularWithoutDepth = false;
+  bool ReportedPositionalWithoutDepth = false;
+  std::vector<vtkSmartPointer<vtkFXEffectPass>> Contributors;
+  vtkSmartPointer<vtkTextureObject> LightTexture;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   std::string QuadSource;
 

@@ -2,14 +2,46 @@
  * @class   vtkFXEffectPass
  * @brief   Base class of the effects that plug into vtkFXPipelinePass.
  *
- * An effect declares which G-buffer channels it reads
- * (GetRequiredChannels) and whether the current scene gives it work
- * (HasWork); the pipeline allocates exactly the channels that the active
- * effects and its composite read, hands each effect the G-buffer
- * (SetGBuffer) and runs it at its stage:
- * - AfterGBuffer: between the G-buffer and the composite (occlusion), reads
- *   G-buffer channels and writes its own output texture;
- * - AfterComposite: after the lit opaque image (post-processing).
+ * An effect declares
+ * - which G-buffer channels it reads (GetRequiredChannels) and whether the
+ *   current scene gives it work (HasWork, from the frame's vtkFXSceneInfo);
+ * - named inputs and outputs: an output carries what a consumer needs
+ *   (texture, resolution step, values per texel, format, where a guide depth
+ *   rides along); an input is connected by name to another effect's output,
+ *   "effect.output" with the effect's name in the pipeline
+ *   (SetInputConnection), or directly to an effect object in a hand-built
+ *   chain (SetInputProducer);
+ * - optional shader code for named points of the deferred composite
+ *   (GetCompositeCode) and the resources that code reads
+ *   (BindCompositeResources).
+ *
+ * The pipeline runs an enabled effect that has work at its stage, after the
+ * producers of its inputs; it allocates exactly the G-buffer channels the
+ * active effects read and hands each the G-buffer (SetGBuffer). Stages, in
+ * frame order:
+ * - LightSpace: before the G-buffer, whether or not any prop is opaque
+ *   (shadow maps seen from the lights);
+ * - AfterGBuffer: reads G-buffer channels, writes its outputs (occlusion);
+ * - Composite: no pass of its own; contributes composite code only;
+ * - PostProcess: after the lit image, forward-opaque, translucent props and
+ *   volumes, before the 2D overlay; it draws into the pipeline's HDR target
+ *   (RGBA16F), which the pipeline allocates only while such an effect runs.
+ *
+ * Composite hook points (CompositeHook), in the order they run per pixel:
+ * - Declarations: uniforms and functions;
+ * - LightVisibility: once per light, may scale `lightVisibility` (float,
+ *   starts at 1) from `lightIndex`, `position` (view space), `n`;
+ * - Ambient: after the lights, may scale `ambientVisibility` (vec3, starts
+ *   at 1), which darkens the ambient term and, by the composite's
+ *   OcclusionDiffuseStrength, the diffuse light; may also change
+ *   `diffuseLight` and `specularLight`;
+ * - Color: may change the final `color` (vec3) of lit and unlit pixels
+ *   (`lit` tells which).
+ * Every hook sees `texCoord`, `n`, `albedo`, `position` and `lit`. In the
+ * code an effect returns, '@' stands for a prefix the composite makes unique
+ * per effect, so two effects can declare `uniform sampler2D @input;`; the
+ * same prefix comes back in BindCompositeResources.
+ *
  * A disabled effect, or one without work, is left out of the frame, and the
  * channels only it read are released. What an effect reads and writes and
  * what it costs is documented by each subclass.
@@ -18,9 +50,15 @@
 #define vtkFXEffectPass_h
 
 #include "vtkFXModule.h"
+#include "vtkFXSceneInfo.h" // for HasWork
 #include "vtkOpenGLRenderPass.h"
+#include "vtkWeakPointer.h" // for the input producers
+
+#include <string>
+#include <vector>
 
 class vtkFXGBufferPass;
+class vtkShaderProgram;
 class vtkTextureObject;
 
 class VTKFX_EXPORT vtkFXEffectPass : public vtkOpenGLRenderPass
@@ -31,14 +69,18 @@ public:
 
   enum Stage
   {
-    AfterGBuffer = 0,
-    AfterComposite
+    LightSpace = 0,
+    AfterGBuffer,
+    Composite,
+    PostProcess,
+    NumberOfStages
   };
+  static const char* GetStageName(int stage);
 
   /**
    * Where in the frame the effect runs (default AfterGBuffer).
    */
-  vtkSetClampMacro(Stage, int, AfterGBuffer, AfterComposite);
+  vtkSetClampMacro(Stage, int, LightSpace, PostProcess);
   vtkGetMacro(Stage, int);
 
   /**
@@ -50,28 +92,99 @@ public:
 
   /**
    * G-buffer channels the effect reads, as a mask of
-   * vtkFXGBufferPass::ChannelBit().
+   * vtkFXGBufferPass::ChannelBit(). An effect that reads any runs only when
+   * the G-buffer does (some prop is opaque).
    */
   virtual unsigned int GetRequiredChannels() = 0;
 
   /**
-   * Whether the effect has work in this frame, given the number of opaque
-   * and translucent props the pipeline found. Default: any opaque prop.
+   * Whether the effect has work in this frame. Default: any prop the
+   * G-buffer captures.
    */
-  virtual bool HasWork(int opaqueProps, int translucentProps);
+  virtual bool HasWork(const vtkFXSceneInfo& scene);
 
   /**
-   * The texture the effect wrote in its last Render() (e.g. occlusion), or
-   * nullptr for effects that write into the framebuffer.
+   * What an output holds after the effect rendered.
    */
-  virtual vtkTextureObject* GetOutputTexture() { return nullptr; }
+  struct Output
+  {
+    vtkTextureObject* Texture = nullptr; // nullptr until the effect rendered
+    int Step = 1;            // texel i covers G-buffer pixel i * Step
+    int Components = 0;      // values per texel (not counting a guide depth)
+    int Format = -1;         // a vtkFXRenderUtilities::TextureFormat
+    int DepthComponent = -1; // component holding the texel's linear depth, or -1
+  };
+
+  ///@{
+  /**
+   * Named outputs, in declaration order.
+   */
+  int GetNumberOfOutputs() const;
+  const char* GetOutputName(int i) const;
+  bool HasOutput(const char* name) const;
+  virtual Output GetOutput(const char* name);
+  /** Texture of an output (the first one when name is nullptr). */
+  vtkTextureObject* GetOutputTexture(const char* name = nullptr);
+  ///@}
+
+  ///@{
+  /**
+   * Named inputs, in declaration order. An optional input may stay
+   * unconnected (the effect then does without it); a required one that is
+   * not connected, or whose source does not exist, keeps the effect out of
+   * the frame, and vtkFXPipelinePass reports why. An input read in the
+   * composite (by the effect's hook code) only needs its producer to run
+   * before the composite.
+   */
+  int GetNumberOfInputs() const;
+  const char* GetInputName(int i) const;
+  bool IsInputOptional(int i) const;
+  bool IsInputReadInComposite(int i) const;
+  ///@}
 
   /**
-   * An effect whose output texture this one reads (e.g. a blur of an
-   * occlusion pass), or nullptr.
+   * Connect input `input` to an output by name: "effect.output", or
+   * "effect" for its first output, where effect is a name given to
+   * vtkFXPipelinePass::AddEffect. nullptr or "" disconnects.
    */
-  virtual void SetInputEffect(vtkFXEffectPass* input);
-  vtkGetObjectMacro(InputEffect, vtkFXEffectPass);
+  void SetInputConnection(const char* input, const char* source);
+  const char* GetInputConnection(const char* input) const;
+
+  /**
+   * The effect and output an input reads from. vtkFXPipelinePass sets it
+   * each frame from the connection names; a hand-built chain sets it
+   * directly. nullptr producer unbinds.
+   */
+  void SetInputProducer(const char* input, vtkFXEffectPass* producer, const char* output);
+  vtkFXEffectPass* GetInputProducer(const char* input) const;
+
+  /**
+   * What the producer of an input wrote (Texture nullptr when the input is
+   * unbound or its producer has not rendered).
+   */
+  Output GetInput(const char* input) const;
+
+  enum CompositeHook
+  {
+    Declarations = 0,
+    LightVisibility,
+    Ambient,
+    Color,
+    NumberOfCompositeHooks
+  };
+
+  /**
+   * GLSL the effect adds at a composite hook point (see the class
+   * documentation); empty (the default) for none.
+   */
+  virtual std::string GetCompositeCode(int hook);
+
+  /**
+   * Bind what the composite code reads (textures, uniforms named with
+   * `prefix` in place of '@'), and release it after the composite drew.
+   */
+  virtual void BindCompositeResources(vtkShaderProgram* program, const std::string& prefix);
+  virtual void UnbindCompositeResources() {}
 
   /**
    * The G-buffer the effect reads; set by the pipeline before Render().
@@ -83,14 +196,29 @@ protected:
   vtkFXEffectPass() = default;
   ~vtkFXEffectPass() override;
 
+  void DeclareInput(const char* name, bool optional, bool readInComposite);
+  void DeclareOutput(const char* name);
+
   int Stage = AfterGBuffer;
   bool Enabled = true;
   vtkFXGBufferPass* GBuffer = nullptr;
-  vtkFXEffectPass* InputEffect = nullptr;
 
 private:
   vtkFXEffectPass(const vtkFXEffectPass&) = delete;
   void operator=(const vtkFXEffectPass&) = delete;
+
+  struct InputPort
+  {
+    std::string Name;
+    bool Optional = false;
+    bool ReadInComposite = false;
+    std::string Connection;                  // "effect.output" or ""
+    vtkWeakPointer<vtkFXEffectPass> Producer; // resolved
+    std::string ProducerOutput;
+  };
+  const InputPort* FindInput(const char* name) const;
+  std::vector<InputPort> Inputs;
+  std::vector<std::string> Outputs;
 };
 
 #endif

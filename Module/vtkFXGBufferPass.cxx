@@ -8,6 +8,9 @@
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleVectorKey.h"
+#include "vtkShader.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -20,6 +23,8 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <vector>
 
@@ -44,6 +49,8 @@ const float ClearValues[vtkFXGBufferPass::NumberOfChannels][4] = { { 0, 0, 0, 0 
 const char* const TexBeginTag = "//VTK::FXGBuffer::TexBegin";
 const char* const TexEndTag = "//VTK::FXGBuffer::TexEnd";
 const char* const ImplTag = "//VTK::FXGBuffer::Impl";
+// Left in the shaders that write every channel (see SetShaderParameters).
+const char* const HookedMarker = "// vtkFX G-buffer channel writes";
 
 bool Contains(const std::string& s, const char* what)
 {
@@ -98,9 +105,32 @@ int vtkFXGBufferPass::GetChannelFromName(const char* name)
   return -1;
 }
 
-int vtkFXGBufferPass::GetChannelFormat(int channel)
+int vtkFXGBufferPass::GetChannelFormat(int channel) const
 {
+  if (channel == Emission && this->HDREmission)
+  {
+    return vtkFXRenderUtilities::RGBA16F;
+  }
   return (channel >= 0 && channel < NumberOfChannels) ? ChannelFormats[channel] : -1;
+}
+
+vtkInformationKeyRestrictedMacro(vtkFXGBufferPass, EMISSIVE_COLOR, DoubleVector, 3);
+
+bool vtkFXGBufferPass::GetEmissiveColor(vtkProp* prop, double color[3])
+{
+  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
+  if (!keys || !keys->Has(EMISSIVE_COLOR()) || keys->Length(EMISSIVE_COLOR()) != 3)
+  {
+    return false;
+  }
+  keys->Get(EMISSIVE_COLOR(), color);
+  for (int i = 0; i < 3; ++i)
+  {
+    // Negative, NaN and infinite emission would spread into every effect
+    // that reads the channel: keep it finite and non-negative.
+    color[i] = std::isfinite(color[i]) ? std::min(std::max(color[i], 0.0), 65504.0) : 0.0;
+  }
+  return color[0] > 0.0 || color[1] > 0.0 || color[2] > 0.0;
 }
 
 vtkTextureObject* vtkFXGBufferPass::GetChannelTexture(int channel)
@@ -124,7 +154,7 @@ int vtkFXGBufferPass::GetBytesPerPixel() const
   {
     if (this->AllocatedChannels & ChannelBit(c))
     {
-      bytes += vtkFXRenderUtilities::GetBytesPerTexel(ChannelFormats[c]);
+      bytes += vtkFXRenderUtilities::GetBytesPerTexel(this->GetChannelFormat(c));
     }
   }
   return bytes;
@@ -167,7 +197,8 @@ void vtkFXGBufferPass::UpdateTargets(vtkOpenGLRenderWindow* window, int width, i
   {
     if (wanted & ChannelBit(c))
     {
-      vtkFXRenderUtilities::EnsureTexture(this->Textures[c], window, width, height, ChannelFormats[c]);
+      vtkFXRenderUtilities::EnsureTexture(
+        this->Textures[c], window, width, height, this->GetChannelFormat(c));
     }
     else
     {
@@ -270,6 +301,8 @@ void vtkFXGBufferPass::Render(const vtkRenderState* s)
           props.push_back(s->GetPropArray()[i]);
         }
       }
+      // Draws that never reach SetShaderParameters write their colour only.
+      this->FrameBuffer->ActivateDrawBuffers(1);
       vtkRenderState delegateState(ren);
       delegateState.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
       delegateState.SetFrameBuffer(this->FrameBuffer);
@@ -329,7 +362,7 @@ std::string vtkFXGBufferPass::ChannelWritesGLSL(bool lit, const char* linearDept
         code << (lit ? "vec4(fxAmbient, 1.0);\n" : "vec4(0.0, 0.0, 0.0, 1.0);\n");
         break;
       case Emission:
-        code << (lit ? "vec4(0.0, 0.0, 0.0, 1.0);\n" : "fxColor;\n");
+        code << (lit ? "vec4(fxEmissive, 1.0);\n" : "fxColor;\n");
         break;
     }
   }
@@ -366,7 +399,7 @@ bool vtkFXGBufferPass::PostReplaceShaderValues(std::string&, std::string&,
   // per-fragment texel, and store the textured terms.
   const std::string textureCode = ExtractTextureCode(fragmentShader);
   std::ostringstream impl;
-  impl << "vec4 fxColor = gl_FragData[0];\n";
+  impl << HookedMarker << "\n  vec4 fxColor = gl_FragData[0];\n";
   impl << "  vec4 fxTexture = vec4(1.0);\n";
   if (!IsBlank(textureCode))
   {
@@ -393,15 +426,27 @@ bool vtkFXGBufferPass::PostReplaceShaderValues(std::string&, std::string&,
 }
 
 bool vtkFXGBufferPass::SetShaderParameters(
-  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   if (program->IsUniformUsed("fxProjectionZ"))
   {
     program->SetUniform4f("fxProjectionZ", this->ProjectionZ);
   }
+  if (program->IsUniformUsed("fxEmissive"))
+  {
+    double emissive[3] = { 0.0, 0.0, 0.0 };
+    GetEmissiveColor(prop, emissive);
+    const float value[3] = { static_cast<float>(emissive[0]), static_cast<float>(emissive[1]),
+      static_cast<float>(emissive[2]) };
+    program->SetUniform3f("fxEmissive", value);
+  }
   if (this->FrameBuffer)
   {
-    this->FrameBuffer->ActivateDrawBuffers(this->NumberOfTargets);
+    // A shader the hooks did not extend writes its colour only: the other
+    // attachments must not receive undefined values from it.
+    const bool hooked = program->GetFragmentShader() &&
+      Contains(program->GetFragmentShader()->GetSource(), HookedMarker);
+    this->FrameBuffer->ActivateDrawBuffers(hooked ? this->NumberOfTargets : 1);
   }
   return true;
 }
@@ -431,6 +476,7 @@ void vtkFXGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RequiredChannels: " << this->RequiredChannels << "\n";
+  os << indent << "HDREmission: " << this->HDREmission << "\n";
   os << indent << "AllocatedChannels: " << this->AllocatedChannels << "\n";
   os << indent << "BytesPerPixel: " << this->GetBytesPerPixel() << "\n";
   os << indent << "DelegatePass: " << this->DelegatePass << "\n";

@@ -20,7 +20,9 @@
  * - Specular     RGBA8   specular colour x intensity; alpha = power / 128.
  * - Ambient      RGBA8   VTK's ambient term (ambient intensity x colour).
  * - Emission     RGBA8   light-independent colour: the colour of unlit
- *                        fragments, 0 for lit ones.
+ *                        fragments; for lit ones the prop's EMISSIVE_COLOR
+ *                        (0 without). RGBA16F with HDREmission on, so that
+ *                        emission above 1 (a glow's source) is kept.
  * plus a 32-bit float hardware depth texture that is always allocated.
  *
  * Cost: one geometry pass with up to 6 render targets; memory is
@@ -45,6 +47,7 @@
 
 #include <string>
 
+class vtkInformationDoubleVectorKey;
 class vtkOpenGLFramebufferObject;
 class vtkProp;
 class vtkOpenGLRenderWindow;
@@ -115,9 +118,32 @@ public:
   int GetBytesPerPixel() const;
 
   /**
-   * Texture format of a channel (a vtkFXRenderUtilities::TextureFormat).
+   * Texture format of a channel (a vtkFXRenderUtilities::TextureFormat),
+   * as the next Render() allocates it.
    */
-  static int GetChannelFormat(int channel);
+  int GetChannelFormat(int channel) const;
+
+  /**
+   * Keep the emission channel in 16-bit floats (RGBA16F, 8 bytes) instead
+   * of RGBA8, for emission above 1 (default off). vtkFXPipelinePass turns it
+   * on while some prop's EMISSIVE_COLOR exceeds 1.
+   */
+  vtkSetMacro(HDREmission, bool);
+  vtkGetMacro(HDREmission, bool);
+  vtkBooleanMacro(HDREmission, bool);
+
+  /**
+   * Light a prop emits of its own, linear RGB (may exceed 1), set in the
+   * prop's property keys (vtkProp::SetPropertyKeys): written to the
+   * emission channel for its lit fragments and added to its lit colour by
+   * the composite. Unlit props need none: their colour is their emission.
+   */
+  static vtkInformationDoubleVectorKey* EMISSIVE_COLOR();
+
+  /**
+   * The prop's EMISSIVE_COLOR, or false when it has none (or it is black).
+   */
+  static bool GetEmissiveColor(vtkProp* prop, double color[3]);
 
   /**
    * Whether the G-buffer can capture a prop: its mappers must call VTK's
@@ -158,6 +184,7 @@ protected:
   std::string ChannelWritesGLSL(bool lit, const char* linearDepth) const;
 
   vtkRenderPass* DelegatePass = nullptr;
+  bool HDREmission = false;
   unsigned int RequiredChannels;
   unsigned int AllocatedChannels = 0;
   unsigned int NumberOfTargets = 0;

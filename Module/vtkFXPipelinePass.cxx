@@ -6,6 +6,7 @@
 #include "vtkFXEffectPass.h"
 #include "vtkFXForwardOpaquePass.h"
 #include "vtkFXGBufferPass.h"
+#include "vtkFXHDRTargetPass.h"
 #include "vtkFXSelectionPass.h"
 #include "vtkFXTimedSequencePass.h"
 #include "vtkFXTranslucentPass.h"
@@ -30,21 +31,28 @@
 #include "vtkVolumetricPass.h"
 
 #include <algorithm>
+#include <sstream>
 
 vtkStandardNewMacro(vtkFXPipelinePass);
 
 namespace
 {
-// Records which optional material terms an actor's shaders will produce.
+// Records which optional material terms an actor's shaders will produce,
+// and whether it emits light of its own.
 // Besides Ambient > 0, VTK 9.1 puts colour into the ambient term for
 // surface edges (the edge colour, unscaled) and for vertices (intensity
 // forced to 1), and a backface property has its own terms.
-void AddMaterialTerms(vtkActor* actor, vtkFXPipelinePass::SceneInfo& scene)
+void AddMaterialTerms(vtkActor* actor, vtkFXSceneInfo& scene, bool& emissive)
 {
   for (vtkProperty* p : { actor->GetProperty(), actor->GetBackfaceProperty() })
   {
-    if (!p || !p->GetLighting())
+    if (!p)
     {
+      continue;
+    }
+    if (!p->GetLighting())
+    {
+      emissive = true; // an unlit colour is light-independent
       continue;
     }
     if (p->GetAmbient() > 0.0 || p->GetEdgeVisibility() || p->GetVertexVisibility())
@@ -56,33 +64,44 @@ void AddMaterialTerms(vtkActor* actor, vtkFXPipelinePass::SceneInfo& scene)
       scene.AnySpecular = true;
     }
   }
+  double color[3];
+  if (vtkFXGBufferPass::GetEmissiveColor(actor, color))
+  {
+    emissive = true;
+    scene.AnyEmissiveColor = true;
+    scene.AnyEmissionAboveOne =
+      scene.AnyEmissionAboveOne || color[0] > 1.0 || color[1] > 1.0 || color[2] > 1.0;
+  }
 }
 
 // Adds one prop of the renderer to the scene summary.
-void AnalyzeProp(vtkProp* prop, vtkFXPipelinePass::SceneInfo& scene)
+void AnalyzeProp(vtkProp* prop, vtkFXSceneInfo& scene)
 {
   if (prop->IsA("vtkActor2D"))
   {
     // 2D props draw in the overlay step, but VTK calls their opaque step
     // too (text actors build their texture there): that is forward work,
     // not a reason to run the G-buffer.
-    ++scene.OverlayProps;
-    scene.ForwardOpaqueProps += prop->HasOpaqueGeometry() ? 1 : 0;
+    scene.OverlayProps.push_back(prop);
+    if (prop->HasOpaqueGeometry())
+    {
+      scene.ForwardOpaqueProps.push_back(prop);
+    }
     return;
   }
   if (!prop->IsA("vtkActor") && !prop->IsA("vtkVolume") && !prop->IsA("vtkAssembly"))
   {
     // Widgets' representations and other props may draw overlays too.
-    ++scene.OverlayProps;
+    scene.OverlayProps.push_back(prop);
   }
   if (prop->IsA("vtkVolume"))
   {
-    ++scene.VolumeProps;
+    scene.VolumeProps.push_back(prop);
     return;
   }
   if (prop->HasTranslucentPolygonalGeometry())
   {
-    ++scene.TranslucentProps;
+    scene.TranslucentProps.push_back(prop);
   }
   if (!prop->HasOpaqueGeometry())
   {
@@ -90,26 +109,51 @@ void AnalyzeProp(vtkProp* prop, vtkFXPipelinePass::SceneInfo& scene)
   }
   if (!vtkFXGBufferPass::CanCapture(prop))
   {
-    ++scene.ForwardOpaqueProps;
+    scene.ForwardOpaqueProps.push_back(prop);
     return;
   }
-  ++scene.OpaqueProps;
+  scene.OpaqueProps.push_back(prop);
   // Assemblies hold their actors as paths; a plain actor is its own path.
+  bool emissive = false;
   prop->InitPathTraversal();
   while (vtkAssemblyPath* path = prop->GetNextPath())
   {
     if (vtkActor* actor = vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp()))
     {
-      AddMaterialTerms(actor, scene);
+      AddMaterialTerms(actor, scene, emissive);
     }
   }
+  if (emissive)
+  {
+    scene.EmissiveProps.push_back(prop);
+  }
+}
+
+// Splits "effect.output" (or "effect") at the first dot.
+void SplitConnection(const std::string& connection, std::string& effect, std::string& output)
+{
+  const size_t dot = connection.find('.');
+  effect = connection.substr(0, dot);
+  output = dot == std::string::npos ? std::string() : connection.substr(dot + 1);
 }
 }
+
+// An input of a slot's effect, resolved to the slot that produces it.
+struct vtkFXPipelinePass::Connection
+{
+  std::string Input;
+  size_t Producer = 0;
+  std::string Output;
+  bool Optional = false;
+  bool ReadInComposite = false;
+};
 
 vtkFXPipelinePass::vtkFXPipelinePass()
 {
   this->CameraPass = vtkSmartPointer<vtkCameraPass>::New();
   this->Sequence = vtkSmartPointer<vtkFXTimedSequencePass>::New();
+  this->HDRSequence = vtkSmartPointer<vtkFXTimedSequencePass>::New();
+  this->HDRTargetPass = vtkSmartPointer<vtkFXHDRTargetPass>::New();
   this->LightsPass = vtkSmartPointer<vtkLightsPass>::New();
   this->OpaquePass = vtkSmartPointer<vtkOpaquePass>::New();
   this->GBufferPass = vtkSmartPointer<vtkFXGBufferPass>::New();
@@ -122,7 +166,8 @@ vtkFXPipelinePass::vtkFXPipelinePass()
 
   this->SSAOPass = vtkSmartPointer<vtkFXSSAOPass>::New();
   this->OcclusionBlurPass = vtkSmartPointer<vtkFXBilateralBlurPass>::New();
-  this->OcclusionBlurPass->SetInputEffect(this->SSAOPass);
+  this->OcclusionBlurPass->SetInputConnection("source", "ssao.occlusion");
+  this->SSAOPass->SetInputConnection("denoised", "ssao-blur.blurred");
   // The composite samples the half-resolution occlusion bilinearly: at
   // 1280x720 that saves a full-resolution pass, and the depth-aware upsample
   // measured no better against the ray-traced reference (vtkfx-bench ao).
@@ -130,6 +175,7 @@ vtkFXPipelinePass::vtkFXPipelinePass()
 
   this->GBufferPass->SetDelegatePass(this->OpaquePass);
   this->CompositePass->SetGBuffer(this->GBufferPass);
+  this->HDRTargetPass->SetDelegatePass(this->HDRSequence);
   this->CameraPass->SetDelegatePass(this->Sequence);
 }
 
@@ -145,129 +191,333 @@ vtkFXCompositePass* vtkFXPipelinePass::GetCompositePass()
   return this->CompositePass;
 }
 
-vtkFXPipelinePass::SceneInfo vtkFXPipelinePass::AnalyzeScene(const vtkRenderState* s) const
+vtkFXHDRTargetPass* vtkFXPipelinePass::GetHDRTargetPass()
 {
-  SceneInfo scene;
+  return this->HDRTargetPass;
+}
+
+vtkFXSceneInfo vtkFXPipelinePass::AnalyzeScene(const vtkRenderState* s) const
+{
+  vtkFXSceneInfo scene;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     AnalyzeProp(s->GetPropArray()[i], scene);
   }
   // The lights pass ran before the analysis: read what VTK decided.
   vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
-  scene.LightsOn = ren ? ren->GetLightingCount() : 0;
-  scene.LightingComplexity = scene.LightsOn > 0 ? ren->GetLightingComplexity() : 0;
+  if (ren && ren->GetLightingCount() > 0)
+  {
+    scene.LightingComplexity = ren->GetLightingComplexity();
+    vtkCollectionSimpleIterator it;
+    ren->GetLights()->InitTraversal(it);
+    while (vtkLight* light = ren->GetLights()->GetNextLight(it))
+    {
+      if (light->GetSwitch() > 0)
+      {
+        scene.Lights.push_back(light);
+      }
+    }
+  }
   return scene;
 }
 
-void vtkFXPipelinePass::ScheduleDeferredFrame(const SceneInfo& scene, vtkWindow* window)
+bool vtkFXPipelinePass::ResolveInputs(size_t consumer, std::vector<Connection>& connections)
 {
+  // Returns false when a required input cannot be resolved; problems go to
+  // ScheduleProblems.
+  vtkFXEffectPass* effect = this->Effects[consumer].Effect;
+  const std::string& name = this->Effects[consumer].Name;
+  connections.clear();
+  bool complete = true;
+  for (int i = 0; i < effect->GetNumberOfInputs(); ++i)
+  {
+    Connection c;
+    c.Input = effect->GetInputName(i);
+    c.Optional = effect->IsInputOptional(i);
+    c.ReadInComposite = effect->IsInputReadInComposite(i);
+    std::string producer;
+    SplitConnection(effect->GetInputConnection(c.Input.c_str()), producer, c.Output);
+    auto slot = std::find_if(this->Effects.begin(), this->Effects.end(),
+      [&producer](const EffectSlot& s) { return s.Name == producer; });
+    std::string problem;
+    if (producer.empty())
+    {
+      problem = "input '" + c.Input + "' is not connected";
+    }
+    else if (slot == this->Effects.end())
+    {
+      problem = "input '" + c.Input + "' reads '" + producer + "', but no effect has that name";
+    }
+    else
+    {
+      c.Producer = static_cast<size_t>(slot - this->Effects.begin());
+      if (c.Output.empty() && slot->Effect->GetNumberOfOutputs() > 0)
+      {
+        c.Output = slot->Effect->GetOutputName(0);
+      }
+      if (!slot->Effect->HasOutput(c.Output.c_str()))
+      {
+        problem = "input '" + c.Input + "' reads '" + producer + "." + c.Output + "', but " +
+          slot->Effect->GetClassName() + " has no output '" + c.Output + "'";
+      }
+      else if (c.Producer == consumer)
+      {
+        problem = "input '" + c.Input + "' reads the effect's own output";
+      }
+    }
+    if (problem.empty())
+    {
+      connections.push_back(c);
+    }
+    else if (!c.Optional || !producer.empty())
+    {
+      // A misnamed optional input is still worth a word; an unconnected one
+      // is not.
+      if (!c.Optional || slot != this->Effects.end())
+      {
+        this->ScheduleProblems += "'" + name + "': " + problem + "\n";
+      }
+      complete = complete && c.Optional;
+    }
+  }
+  return complete;
+}
+
+std::vector<size_t> vtkFXPipelinePass::OrderEffects(const vtkFXSceneInfo& scene, bool deferred)
+{
+  const size_t n = this->Effects.size();
+  std::vector<bool> candidate(n, false);
+  std::vector<std::vector<Connection>> inputs(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    vtkFXEffectPass* e = this->Effects[i].Effect;
+    // Effects that read G-buffer channels, run between the G-buffer and
+    // the composite or only add composite code need the G-buffer.
+    const bool needsGBuffer = e->GetRequiredChannels() != 0 ||
+      e->GetStage() == vtkFXEffectPass::AfterGBuffer ||
+      e->GetStage() == vtkFXEffectPass::Composite;
+    candidate[i] = e->GetEnabled() && (deferred || !needsGBuffer) && e->HasWork(scene) &&
+      this->ResolveInputs(i, inputs[i]);
+  }
+  // Leave out consumers of producers that do not run (silently: no work is
+  // no fault), and report inputs that come from a later stage, until
+  // nothing changes; then order by stage and dependencies (Kahn's
+  // algorithm, ties in the order added). Effects left over form a cycle.
+  std::vector<size_t> order;
+  for (bool changed = true; changed;)
+  {
+    changed = false;
+    for (size_t i = 0; i < n; ++i)
+    {
+      if (!candidate[i])
+      {
+        continue;
+      }
+      const int stage = this->Effects[i].Effect->GetStage();
+      for (const Connection& c : inputs[i])
+      {
+        const int producerStage = this->Effects[c.Producer].Effect->GetStage();
+        const bool late = c.ReadInComposite ? producerStage >= vtkFXEffectPass::Composite
+                                            : producerStage > stage;
+        if (late && candidate[c.Producer])
+        {
+          this->ScheduleProblems += "'" + this->Effects[i].Name + "': input '" + c.Input +
+            "' reads '" + this->Effects[c.Producer].Name + "', which runs at the " +
+            vtkFXEffectPass::GetStageName(producerStage) + " stage, after " +
+            (c.ReadInComposite ? std::string("the composite")
+                               : std::string("the ") + vtkFXEffectPass::GetStageName(stage) +
+                 " stage") +
+            "\n";
+        }
+        if ((late || !candidate[c.Producer]) && !c.Optional)
+        {
+          candidate[i] = false;
+          changed = true;
+          break;
+        }
+      }
+    }
+    if (changed)
+    {
+      continue;
+    }
+    order.clear();
+    std::vector<bool> placed(n, false);
+    for (bool progress = true; progress;)
+    {
+      progress = false;
+      size_t best = n;
+      for (size_t i = 0; i < n; ++i)
+      {
+        if (!candidate[i] || placed[i])
+        {
+          continue;
+        }
+        bool ready = true;
+        for (const Connection& c : inputs[i])
+        {
+          ready = ready && (c.ReadInComposite || !candidate[c.Producer] || placed[c.Producer]);
+        }
+        if (ready &&
+          (best == n ||
+            this->Effects[i].Effect->GetStage() < this->Effects[best].Effect->GetStage()))
+        {
+          best = i;
+        }
+      }
+      if (best < n)
+      {
+        placed[best] = true;
+        order.push_back(best);
+        progress = true;
+      }
+    }
+    std::string cycle;
+    for (size_t i = 0; i < n; ++i)
+    {
+      if (candidate[i] && !placed[i])
+      {
+        cycle += (cycle.empty() ? "'" : ", '") + this->Effects[i].Name + "'";
+        candidate[i] = false;
+        changed = true;
+      }
+    }
+    if (!cycle.empty())
+    {
+      this->ScheduleProblems += "effects " + cycle + " read each other's outputs in a cycle\n";
+    }
+  }
+  // Bind each input to its producer, or unbind it when that one is out.
+  for (size_t i = 0; i < n; ++i)
+  {
+    vtkFXEffectPass* e = this->Effects[i].Effect;
+    for (int k = 0; k < e->GetNumberOfInputs(); ++k)
+    {
+      e->SetInputProducer(e->GetInputName(k), nullptr, nullptr);
+    }
+    for (const Connection& c : inputs[i])
+    {
+      if (candidate[i] && candidate[c.Producer])
+      {
+        e->SetInputProducer(c.Input.c_str(), this->Effects[c.Producer].Effect, c.Output.c_str());
+      }
+    }
+  }
+  return order;
+}
+
+void vtkFXPipelinePass::ActivateEffects(const std::vector<size_t>& order, vtkWindow* window)
+{
+  std::vector<bool> active(this->Effects.size(), false);
+  for (size_t i : order)
+  {
+    active[i] = true;
+  }
+  for (size_t i = 0; i < this->Effects.size(); ++i)
+  {
+    EffectSlot& slot = this->Effects[i];
+    if (slot.Active && !active[i])
+    {
+      slot.Effect->ReleaseGraphicsResources(window);
+    }
+    slot.Active = active[i];
+    slot.Effect->SetGBuffer(active[i] && this->GBufferRan ? this->GBufferPass.Get() : nullptr);
+  }
+}
+
+void vtkFXPipelinePass::AddEffectPasses(
+  vtkFXTimedSequencePass* sequence, const std::vector<size_t>& order, int stage)
+{
+  for (size_t i : order)
+  {
+    if (this->Effects[i].Effect->GetStage() == stage)
+    {
+      sequence->AddPass(this->Effects[i].Name.c_str(), this->Effects[i].Effect);
+    }
+  }
+}
+
+void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWindow* window)
+{
+  using E = vtkFXEffectPass;
   this->Sequence->ClearPasses();
-  const bool deferred = scene.OpaqueProps > 0;
+  this->HDRSequence->ClearPasses();
+  const bool deferred = !scene.OpaqueProps.empty();
   if (this->GBufferRan && !deferred)
   {
     // Nothing opaque any more: keep no G-buffer memory around.
     this->GBufferPass->ReleaseGraphicsResources(window);
   }
   this->GBufferRan = deferred;
-  if (this->GBufferRan)
+
+  const std::string previousProblems = this->ScheduleProblems;
+  this->ScheduleProblems.clear();
+  const std::vector<size_t> order = this->OrderEffects(scene, deferred);
+  if (!this->ScheduleProblems.empty() && this->ScheduleProblems != previousProblems)
   {
-    vtkFXCompositePass* composite = this->CompositePass;
+    vtkErrorMacro("Effects left out of the frame:\n" << this->ScheduleProblems);
+  }
+  this->ActivateEffects(order, window);
+
+  bool postProcess = false;
+  for (size_t i : order)
+  {
+    postProcess = postProcess || this->Effects[i].Effect->GetStage() == E::PostProcess;
+  }
+  if (this->HDRTargetRan && !postProcess)
+  {
+    this->HDRTargetPass->ReleaseGraphicsResources(window);
+  }
+  this->HDRTargetRan = postProcess;
+
+  this->AddEffectPasses(this->Sequence, order, E::LightSpace);
+  vtkFXCompositePass* composite = this->CompositePass;
+  composite->RemoveAllContributors();
+  if (deferred)
+  {
     composite->SetDebugChannel(this->DebugChannel);
     composite->SetUseAmbient(scene.AnyAmbient);
     composite->SetUseSpecular(scene.AnySpecular);
+    composite->SetUseEmission(scene.AnyEmissiveColor);
     unsigned int channels = composite->GetRequiredChannels(scene.LightingComplexity);
-    std::vector<bool> wasActive;
-    for (EffectSlot& slot : this->Effects)
+    for (size_t i : order)
     {
-      wasActive.push_back(slot.Active);
-      slot.Active = false;
-    }
-    for (size_t i = 0; i < this->Effects.size(); ++i)
-    {
-      EffectSlot& slot = this->Effects[i];
-      // An effect that reads another's output runs only if that one runs
-      // earlier in this frame (slots run in the order they were added).
-      vtkFXEffectPass* input = slot.Effect->GetInputEffect();
-      const bool active = slot.Effect->GetEnabled() &&
-        slot.Effect->HasWork(scene.OpaqueProps, scene.TranslucentProps) &&
-        (!input || this->RanEffect(input));
-      if (wasActive[i] && !active)
-      {
-        slot.Effect->ReleaseGraphicsResources(window);
-      }
-      slot.Active = active;
-      if (active)
-      {
-        channels |= slot.Effect->GetRequiredChannels();
-        slot.Effect->SetGBuffer(this->GBufferPass);
-      }
+      channels |= this->Effects[i].Effect->GetRequiredChannels();
+      composite->AddContributor(this->Effects[i].Effect);
     }
     this->GBufferPass->SetRequiredChannels(channels);
-    // Occlusion for the composite: the blurred result when the blur runs.
-    vtkFXEffectPass* occlusion = nullptr;
-    if (this->AmbientOcclusion && this->RanEffect(this->SSAOPass))
-    {
-      occlusion = this->RanEffect(this->OcclusionBlurPass)
-        ? static_cast<vtkFXEffectPass*>(this->OcclusionBlurPass)
-        : this->SSAOPass;
-    }
-    composite->SetOcclusionEffect(occlusion);
+    this->GBufferPass->SetHDREmission(scene.AnyEmissionAboveOne);
     this->Sequence->AddPass("gbuffer", this->GBufferPass);
-    this->ScheduleEffects(vtkFXEffectPass::AfterGBuffer);
-    this->Sequence->AddPass("composite", composite);
-    this->ScheduleEffects(vtkFXEffectPass::AfterComposite);
+    this->AddEffectPasses(this->Sequence, order, E::AfterGBuffer);
   }
-  else
+  // With a post-process effect, the lit image and everything drawn onto it
+  // go to the HDR target, which writes the framebuffer before the overlay.
+  vtkFXTimedSequencePass* lit = postProcess ? this->HDRSequence : this->Sequence;
+  if (deferred)
   {
-    // Effects read the G-buffer: without opaque props none of them runs.
-    for (EffectSlot& slot : this->Effects)
-    {
-      if (slot.Active)
-      {
-        slot.Effect->ReleaseGraphicsResources(window);
-      }
-      slot.Active = false;
-    }
+    lit->AddPass("composite", composite);
   }
-  if (scene.ForwardOpaqueProps > 0)
+  if (!scene.ForwardOpaqueProps.empty())
   {
-    this->Sequence->AddPass("forward-opaque", this->ForwardOpaquePass);
+    lit->AddPass("forward-opaque", this->ForwardOpaquePass);
   }
-  if (scene.TranslucentProps > 0)
+  if (!scene.TranslucentProps.empty())
   {
-    this->Sequence->AddPass("translucent", this->TranslucentPass);
+    lit->AddPass("translucent", this->TranslucentPass);
   }
-  if (scene.VolumeProps > 0)
+  if (!scene.VolumeProps.empty())
   {
-    this->Sequence->AddPass("volumes", this->VolumetricPass);
+    lit->AddPass("volumes", this->VolumetricPass);
   }
-  if (scene.OverlayProps > 0)
+  this->AddEffectPasses(lit, order, E::PostProcess);
+  if (postProcess)
+  {
+    this->Sequence->AddPass("hdr-target", this->HDRTargetPass);
+  }
+  if (!scene.OverlayProps.empty())
   {
     this->Sequence->AddPass("overlay", this->OverlayPass);
   }
-}
-
-void vtkFXPipelinePass::ScheduleEffects(int stage)
-{
-  for (const EffectSlot& slot : this->Effects)
-  {
-    if (slot.Active && slot.Effect->GetStage() == stage)
-    {
-      this->Sequence->AddPass(slot.Name.c_str(), slot.Effect);
-    }
-  }
-}
-
-bool vtkFXPipelinePass::RanEffect(vtkFXEffectPass* effect) const
-{
-  for (const EffectSlot& slot : this->Effects)
-  {
-    if (slot.Effect == effect)
-    {
-      return slot.Active;
-    }
-  }
-  return false;
 }
 
 void vtkFXPipelinePass::SetAmbientOcclusion(bool enabled)
@@ -286,7 +536,6 @@ void vtkFXPipelinePass::SetAmbientOcclusion(bool enabled)
   {
     this->RemoveEffect("ssao");
     this->RemoveEffect("ssao-blur");
-    this->CompositePass->SetOcclusionEffect(nullptr);
   }
   this->Modified();
 }
@@ -355,6 +604,11 @@ int vtkFXPipelinePass::GetNumberOfEffects() const
   return static_cast<int>(this->Effects.size());
 }
 
+const char* vtkFXPipelinePass::GetEffectName(int i) const
+{
+  return (i >= 0 && i < this->GetNumberOfEffects()) ? this->Effects[i].Name.c_str() : nullptr;
+}
+
 void vtkFXPipelinePass::ScheduleSelectionFrame()
 {
   // What VTK's forward renderer does while a hardware selector renders:
@@ -382,7 +636,19 @@ void vtkFXPipelinePass::Render(const vtkRenderState* s)
   }
   this->CameraPass->Render(s);
   this->NumberOfRenderedProps = this->CameraPass->GetNumberOfRenderedProps();
-  this->LastPasses = this->Sequence->GetPassesThatRan();
+  this->LastPasses.clear();
+  for (const std::string& name : this->Sequence->GetPassesThatRan())
+  {
+    this->LastPasses.push_back(name);
+    if (name == "hdr-target")
+    {
+      // What ran inside the HDR target follows it.
+      for (const std::string& inner : this->HDRSequence->GetPassesThatRan())
+      {
+        this->LastPasses.push_back(inner);
+      }
+    }
+  }
   if (!selecting)
   {
     // The lights were updated before the camera pass, outside the sequence.
@@ -406,12 +672,18 @@ const char* vtkFXPipelinePass::GetPassThatRan(int i) const
 
 double vtkFXPipelinePass::GetPassMilliseconds(const char* name)
 {
-  return this->Sequence->GetPassMilliseconds(name);
+  const double outer = this->Sequence->GetPassMilliseconds(name);
+  return outer >= 0.0 ? outer : this->HDRSequence->GetPassMilliseconds(name);
 }
 
 int vtkFXPipelinePass::GetGBufferBytesPerPixel() const
 {
   return this->GBufferRan ? this->GBufferPass->GetBytesPerPixel() : 0;
+}
+
+int vtkFXPipelinePass::GetHDRTargetBytesPerPixel() const
+{
+  return this->HDRTargetRan ? this->HDRTargetPass->GetBytesPerPixel() : 0;
 }
 
 unsigned int vtkFXPipelinePass::GetGBufferChannels() const
@@ -426,6 +698,7 @@ void vtkFXPipelinePass::ReleaseGraphicsResources(vtkWindow* w)
   this->LightsPass->ReleaseGraphicsResources(w);
   this->GBufferPass->ReleaseGraphicsResources(w);
   this->CompositePass->ReleaseGraphicsResources(w);
+  this->HDRTargetPass->ReleaseGraphicsResources(w);
   this->TranslucentPass->ReleaseGraphicsResources(w);
   this->VolumetricPass->ReleaseGraphicsResources(w);
   this->OverlayPass->ReleaseGraphicsResources(w);
@@ -441,6 +714,23 @@ void vtkFXPipelinePass::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DebugChannel: " << this->DebugChannel << "\n";
   os << indent << "AmbientOcclusion: " << this->AmbientOcclusion << "\n";
+  os << indent << "Effects: " << this->Effects.size() << "\n";
+  for (const EffectSlot& slot : this->Effects)
+  {
+    os << indent.GetNextIndent() << slot.Name << ": " << slot.Effect->GetClassName() << ", "
+       << vtkFXEffectPass::GetStageName(slot.Effect->GetStage()) << " stage, "
+       << (slot.Effect->GetEnabled() ? "enabled" : "disabled")
+       << (slot.Active ? ", ran in the last frame" : "") << "\n";
+    for (int i = 0; i < slot.Effect->GetNumberOfInputs(); ++i)
+    {
+      const char* input = slot.Effect->GetInputName(i);
+      const char* connection = slot.Effect->GetInputConnection(input);
+      os << indent.GetNextIndent().GetNextIndent() << "input " << input << " <- "
+         << (connection && *connection ? connection : "(not connected)") << "\n";
+    }
+  }
+  os << indent << "ScheduleProblems: "
+     << (this->ScheduleProblems.empty() ? "none" : this->ScheduleProblems) << "\n";
   os << indent << "Passes that ran:";
   for (const auto& name : this->LastPasses)
   {
@@ -448,4 +738,5 @@ void vtkFXPipelinePass::PrintSelf(ostream& os, vtkIndent indent)
   }
   os << "\n";
   os << indent << "GBufferBytesPerPixel: " << this->GetGBufferBytesPerPixel() << "\n";
+  os << indent << "HDRTargetBytesPerPixel: " << this->GetHDRTargetBytesPerPixel() << "\n";
 }

@@ -3,22 +3,32 @@
  * @brief   The one pass a VTK application installs: renderer->SetPass(pipeline).
  *
  * Each frame it
- * 1. analyses the scene on the CPU (opaque, translucent, volume and overlay
- *    props; whether any lit prop has ambient or specular terms; how many
- *    lights are on),
- * 2. updates VTK's lights and sets up the camera (an internal vtkCameraPass),
- * 3. renders the opaque props into a vtkFXGBufferPass that allocates only
- *    the channels the active passes read,
- * 4. lights them with vtkFXCompositePass (VTK's light model, deferred),
- *    then draws forward the opaque props the G-buffer cannot capture,
- * 5. lets VTK draw translucent props (its own depth peeling / OIT choice),
- *    volumes and 2D overlays, depth-tested against the G-buffer depth.
- * Passes with no work in the current scene are left out (no opaque props:
- * no G-buffer at all). While a vtkHardwareSelector renders (picking), it
- * lets the selector draw the props as VTK's forward renderer does
- * (vtkFXSelectionPass), so picking keeps working.
+ * 1. updates VTK's lights, then analyses the scene on the CPU into a
+ *    vtkFXSceneInfo (opaque, forward-opaque, translucent, volume, overlay
+ *    and emissive props; lights; material terms),
+ * 2. decides which effects run (enabled, given work by the scene, inputs
+ *    available) and orders them by their stage and by the dependencies of
+ *    their named inputs, reporting a missing input or a cycle,
+ * 3. sets up the camera (an internal vtkCameraPass) and runs the frame:
  *
- * Reads the renderer's props and lights; writes the renderer's framebuffer.
+ *      light-space effects          (shadow maps; with or without opaque props)
+ *      G-buffer                     (opaque props; only the channels read)
+ *      after-G-buffer effects       (occlusion, blur)
+ *    [ HDR target, RGBA16F          (only while a post-process effect runs)
+ *      composite                    (VTK's light model + effects' hook code)
+ *      forward-opaque, translucent, volumes   (VTK's own steps)
+ *      post-process effects ]       (glow, lines)
+ *      overlay                      (2D props)
+ *
+ * Passes with no work in the current scene are left out (no opaque props:
+ * no G-buffer, no composite; no post-process effect: no HDR target). While a
+ * vtkHardwareSelector renders (picking), it lets the selector draw the props
+ * as VTK's forward renderer does (vtkFXSelectionPass), so picking keeps
+ * working.
+ *
+ * Reads the renderer's props and lights; writes the renderer's framebuffer,
+ * depth-tested against what it holds (layered renderers that preserve the
+ * depth buffer keep what the layers below drew).
  * Per-pass GPU times (vtkOpenGLRenderTimer, results a frame or more late)
  * and the list of passes that ran are exposed for benchmarks and tests.
  *
@@ -26,17 +36,16 @@
  * is the cost of the passes it schedules, and nothing for those it leaves
  * out.
  *
- * Effects (vtkFXEffectPass subclasses) plug in by name with AddEffect and
- * run at their stage when enabled and given work; with none the image
- * matches VTK's own forward render (PSNR >= 40 dB on the test scenes, apart
- * from multisample anti-aliasing, which the G-buffer does not do: render
- * windows should use SetMultiSamples(0)).
+ * With no effect the image matches VTK's own forward render (PSNR >= 50 dB
+ * on the test scenes, apart from multisample anti-aliasing, which the
+ * G-buffer does not do: render windows should use SetMultiSamples(0)).
  */
 #ifndef vtkFXPipelinePass_h
 #define vtkFXPipelinePass_h
 
 #include "vtkFXGBufferPass.h" // for the channel count
 #include "vtkFXModule.h"
+#include "vtkFXSceneInfo.h" // for GetLastSceneInfo
 #include "vtkRenderPass.h"
 #include "vtkSmartPointer.h"
 #include "vtkWeakPointer.h"
@@ -49,6 +58,7 @@ class vtkFXBilateralBlurPass;
 class vtkFXSSAOPass;
 class vtkFXCompositePass;
 class vtkFXEffectPass;
+class vtkFXHDRTargetPass;
 class vtkFXTimedSequencePass;
 class vtkLightsPass;
 class vtkOpaquePass;
@@ -64,21 +74,10 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * What the scene analysis found in the last frame.
+   * What the scene analysis found in the last frame (its prop and light
+   * pointers are valid during that frame only).
    */
-  struct SceneInfo
-  {
-    int OpaqueProps = 0;        // captured by the G-buffer
-    int ForwardOpaqueProps = 0; // opaque, drawn forward (vtkFXForwardOpaquePass)
-    int TranslucentProps = 0;
-    int VolumeProps = 0;
-    int OverlayProps = 0;
-    bool AnyAmbient = false;  // a lit captured prop with an ambient term
-    bool AnySpecular = false; // a lit captured prop with a specular term
-    int LightsOn = 0;
-    int LightingComplexity = 0; // vtkOpenGLRenderer's, 0 when no light is on
-  };
-  const SceneInfo& GetLastSceneInfo() const { return this->LastScene; }
+  const vtkFXSceneInfo& GetLastSceneInfo() const { return this->LastScene; }
 
   /**
    * G-buffer channel to show on screen instead of the lit image (a
@@ -90,8 +89,10 @@ public:
   ///@{
   /**
    * Names of the passes that ran in the last frame, in order: "lights",
-   * "gbuffer", effects by name, "composite", "forward-opaque",
-   * "translucent", "volumes", "overlay"; or
+   * light-space effects by name, "gbuffer", after-G-buffer effects,
+   * "hdr-target" when post-process effects run (the passes inside it
+   * follow), "composite", "forward-opaque", "translucent", "volumes",
+   * post-process effects, "overlay"; or
    * "selection-lights", "selection" while a hardware selector renders.
    */
   int GetNumberOfPassesThatRan() const;
@@ -111,6 +112,12 @@ public:
   int GetGBufferBytesPerPixel() const;
 
   /**
+   * Bytes per pixel of the HDR target in the last frame (0 when no
+   * post-process effect ran, and then none is allocated).
+   */
+  int GetHDRTargetBytesPerPixel() const;
+
+  /**
    * Channels the G-buffer allocated in the last frame (a mask of
    * vtkFXGBufferPass::ChannelBit()).
    */
@@ -118,11 +125,12 @@ public:
 
   ///@{
   /**
-   * Ambient occlusion: a vtkFXSSAOPass ("ssao") followed by a
-   * vtkFXBilateralBlurPass ("ssao-blur", which also upsamples the
-   * half-resolution result) in the effect slots, feeding the composite
-   * (vtkFXCompositePass::SetOcclusionEffect). Off by default; while off,
-   * neither runs and their textures and G-buffer channels are released.
+   * Ambient occlusion: adds a vtkFXSSAOPass ("ssao") and a
+   * vtkFXBilateralBlurPass ("ssao-blur") to the effects, connected as
+   * ssao-blur.source <- ssao.occlusion and ssao.denoised <-
+   * ssao-blur.blurred (the SSAO's composite code reads the blurred result
+   * while the blur runs). Off by default; while off, neither runs and their
+   * textures and G-buffer channels are released.
    */
   virtual void SetAmbientOcclusion(bool enabled);
   vtkGetMacro(AmbientOcclusion, bool);
@@ -133,24 +141,37 @@ public:
 
   ///@{
   /**
-   * Effect slots. An effect runs at its stage (vtkFXEffectPass::Stage), in
-   * the order added, under `name` (its name in timings and in the passes that
-   * ran), when it is enabled and the scene gives it work, and, if it reads
-   * another effect's output (vtkFXEffectPass::SetInputEffect), when that one
-   * runs before it; the G-buffer then also holds the channels it reads.
+   * Effects. An effect runs under `name` (its name in timings, in the
+   * passes that ran and in input connections "name.output") when it is
+   * enabled and the scene gives it work, at its stage
+   * (vtkFXEffectPass::Stage), after the producers of its inputs; ties keep
+   * the order of adding. Its composite code goes into the composite, and
+   * the G-buffer holds the channels it reads. A required input that names
+   * no effect or output, an input from a later stage, or a cycle keeps the
+   * effects concerned out and is reported (GetScheduleProblems); an input
+   * whose producer has no work this frame keeps its consumer out silently.
    * Adding a name again replaces the effect of that name.
    */
   void AddEffect(const char* name, vtkFXEffectPass* effect);
   void RemoveEffect(const char* name);
   vtkFXEffectPass* GetEffect(const char* name);
   int GetNumberOfEffects() const;
+  const char* GetEffectName(int i) const;
   ///@}
+
+  /**
+   * Why effects were left out of the last frame although enabled (missing
+   * inputs, stage order, cycles), one line each; "" when none. Reported
+   * with vtkErrorMacro when it changes.
+   */
+  const char* GetScheduleProblems() const { return this->ScheduleProblems.c_str(); }
 
   /**
    * The passes it composes, for applications that tune them.
    */
   vtkFXGBufferPass* GetGBufferPass();
   vtkFXCompositePass* GetCompositePass();
+  vtkFXHDRTargetPass* GetHDRTargetPass();
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -159,8 +180,8 @@ protected:
   vtkFXPipelinePass();
   ~vtkFXPipelinePass() override;
 
-  SceneInfo AnalyzeScene(const vtkRenderState* s) const;
-  void ScheduleDeferredFrame(const SceneInfo& scene, vtkWindow* window);
+  vtkFXSceneInfo AnalyzeScene(const vtkRenderState* s) const;
+  void ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWindow* window);
   void ScheduleSelectionFrame();
 
   struct EffectSlot
@@ -169,8 +190,11 @@ protected:
     vtkSmartPointer<vtkFXEffectPass> Effect;
     bool Active = false; // ran in the last deferred frame
   };
-  void ScheduleEffects(int stage);
-  bool RanEffect(vtkFXEffectPass* effect) const;
+  struct Connection; // an input resolved to a slot
+  std::vector<size_t> OrderEffects(const vtkFXSceneInfo& scene, bool deferred);
+  bool ResolveInputs(size_t consumer, std::vector<Connection>& connections);
+  void ActivateEffects(const std::vector<size_t>& order, vtkWindow* window);
+  void AddEffectPasses(vtkFXTimedSequencePass* sequence, const std::vector<size_t>& order, int stage);
 
   int DebugChannel = -1;
   bool AmbientOcclusion = false;
@@ -178,12 +202,16 @@ protected:
   vtkSmartPointer<vtkFXSSAOPass> SSAOPass;
   vtkSmartPointer<vtkFXBilateralBlurPass> OcclusionBlurPass;
   vtkWeakPointer<vtkWindow> LastWindow; // to release effects removed between frames
-  SceneInfo LastScene;
+  vtkFXSceneInfo LastScene;
   std::vector<std::string> LastPasses;
+  std::string ScheduleProblems;
   bool GBufferRan = false;
+  bool HDRTargetRan = false;
 
   vtkSmartPointer<vtkCameraPass> CameraPass;
   vtkSmartPointer<vtkFXTimedSequencePass> Sequence;
+  vtkSmartPointer<vtkFXTimedSequencePass> HDRSequence; // inside the HDR target
+  vtkSmartPointer<vtkFXHDRTargetPass> HDRTargetPass;
   vtkSmartPointer<vtkLightsPass> LightsPass;
   vtkSmartPointer<vtkOpaquePass> OpaquePass;
   vtkSmartPointer<vtkFXGBufferPass> GBufferPass;

@@ -38,6 +38,7 @@ const FormatInfo& Info(int format)
     { GL_RG32F, GL_RG, 2, VTK_FLOAT, 8 },
     { GL_RGBA32F, GL_RGBA, 4, VTK_FLOAT, 16 },
     { GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, 1, VTK_FLOAT, 4 },
+    { GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, 1, VTK_UNSIGNED_INT, 4 },
   };
   return table[format];
 }
@@ -75,9 +76,10 @@ bool vtkFXRenderUtilities::EnsureTexture(vtkSmartPointer<vtkTextureObject>& text
   texture->SetWrapT(vtkTextureObject::ClampToEdge);
   texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-  if (format == Depth32F)
+  if (format == Depth32F || format == Depth24)
   {
-    texture->AllocateDepth(width, height, vtkTextureObject::Float32);
+    texture->AllocateDepth(
+      width, height, format == Depth32F ? vtkTextureObject::Float32 : vtkTextureObject::Fixed24);
     return true;
   }
   texture->SetInternalFormat(info.InternalFormat);

@@ -48,6 +48,7 @@ public:
     RG32F,     // 8 bytes: a value and a linear depth (any scene scale)
     RGBA32F,   // 16 bytes: a normal and a linear depth (any scene scale)
     Depth32F,  // 4 bytes: hardware depth
+    Depth24,   // 4 bytes: hardware depth, as most window framebuffers keep it
     NumberOfTextureFormats
   };
 

@@ -2,12 +2,16 @@
  * @class   vtkFXSSAOPass
  * @brief   Screen-space ambient occlusion from the vtkFX G-buffer.
  *
- * Reads the G-buffer's normal and linear depth channels; writes an
- * occlusion texture (RG32F: R = occlusion, 1 = open, 0 = fully occluded;
- * G = the texel's linear depth, the guide of vtkFXBilateralBlurPass; 32-bit
+ * Reads the G-buffer's normal and linear depth channels; writes the output
+ * "occlusion" (RG32F: R = occlusion, 1 = open, 0 = fully occluded; G = the
+ * texel's linear depth, the guide of vtkFXBilateralBlurPass; 32-bit
  * because a 16-bit float overflows at 65504 world units) at
- * full or half resolution (GetOutputTexture). Normal-oriented hemisphere of
- * NumberOfSamples points, cosine-distributed with lengths u^3 (seed 000),
+ * full or half resolution. In the composite it scales the ambient
+ * visibility by its occlusion, or, when its optional input "denoised" is
+ * connected to an effect that ran (the blur of its output), by that one.
+ * Normal-oriented hemisphere of NumberOfSamples points, cosine-distributed
+ * with lengths u^3 (Vizerie 2009, "Normal mapped screen space diffuse
+ * occlusion" demo),
  * rotated per pixel by a 4x4 tile, with a range check: with solid occluders
  * its expectation over that distribution is the cosine-weighted obscurance
  * with falloff 1 - (t/R)^(1/3) (see vtkFXSSAOFS.glsl) that vtkfx-bench's
@@ -75,7 +79,7 @@ public:
 
   enum Method
   {
-    Hemisphere = 0, // normal-oriented hemisphere samples (seed 000)
+    Hemisphere = 0, // normal-oriented hemisphere samples (Vizerie 2009)
     Horizon         // horizon-based, cosine-weighted (GTAO, Jimenez et al. 2016)
   };
 
@@ -110,7 +114,10 @@ public:
   vtkGetMacro(EffectiveRadius, double);
 
   unsigned int GetRequiredChannels() override;
-  vtkTextureObject* GetOutputTexture() override;
+  Output GetOutput(const char* name) override;
+  std::string GetCompositeCode(int hook) override;
+  void BindCompositeResources(vtkShaderProgram* program, const std::string& prefix) override;
+  void UnbindCompositeResources() override;
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -132,6 +139,7 @@ protected:
   double EffectiveRadius = 0.0;
 
   vtkSmartPointer<vtkTextureObject> Occlusion;
+  vtkTextureObject* BoundInComposite = nullptr;
   vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   std::string QuadSource;

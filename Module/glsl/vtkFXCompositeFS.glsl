@@ -3,14 +3,19 @@
 //
 // The lighting is VTK 9.1's own Phong model (vtkFXLightingFS.glsl), called
 // once per light by code vtkFXCompositePass generates, and fed by the same
-// uniforms as VTK's mappers (vtkOpenGLRenderer::UpdateLightingUniforms).
-// Positions come from linear depth and the affine per-pixel frustum ray (the
-// "frustum corner ray" of seed 001), so no world-space position is stored.
+// uniforms as VTK's mappers (vtkOpenGLRenderer::UpdateLightingUniforms), or,
+// for more lights than those uniforms serve, by a light texture looped over.
+// Positions come from linear depth and the affine per-pixel frustum ray
+// (the "frustum corner ray" reconstruction of Crytek's SSAO, Mittring 2007),
+// so no world-space position is stored.
 //
-// Defines set by vtkFXCompositePass: FX_LIGHTING (0..3), FX_HAS_SPECULAR,
-// FX_HAS_AMBIENT, FX_HAS_OCCLUSION, FX_NEEDS_POSITION, FX_DEBUG_CHANNEL,
-// FX_DEBUG_OCCLUSION, and the channel
-// numbers FX_CHANNEL_NORMAL, FX_CHANNEL_DEPTH (vtkFXGBufferPass::Channel).
+// Effects add code at the hook tags (see vtkFXEffectPass): declarations,
+// per-light visibility, the ambient visibility, and the final colour.
+//
+// Defines set by vtkFXCompositePass: FX_LIGHTING (0..3), FX_LIGHT_TEXTURE,
+// FX_HAS_SPECULAR, FX_HAS_AMBIENT, FX_HAS_EMISSION, FX_NEEDS_POSITION,
+// FX_DEBUG_CHANNEL, FX_DEBUG_OCCLUSION, and the channel numbers
+// FX_CHANNEL_NORMAL, FX_CHANNEL_DEPTH (vtkFXGBufferPass::Channel).
 
 in vec2 texCoord;
 
@@ -30,19 +35,17 @@ uniform sampler2D fxLinearDepth;
 uniform vec3 fxRayOrigin[3];
 uniform vec3 fxRayDirection[3];
 #endif
-#if FX_HAS_OCCLUSION
-// Ambient occlusion (1 = open) from an effect such as vtkFXSSAOPass, at
-// full resolution or a lower one, sampled bilinearly. (A depth-aware
-// upsample here cost a third more composite time at 1280x720 for no
-// measurable gain against the ray-traced reference: vtkfx-bench ao.)
-uniform sampler2D fxOcclusion;
-uniform float fxOcclusionDiffuseStrength;
-// Texture coordinate of this pixel in the occlusion texture: its texel i
-// holds G-buffer texel i * step (see vtkFXSSAOPass), not the centre of a
-// step x step block.
-uniform vec2 fxOcclusionScale;
-uniform vec2 fxOcclusionOffset;
+#if FX_HAS_EMISSION
+uniform sampler2D fxEmission;
 #endif
+#if FX_LIGHT_TEXTURE
+// Lights beyond VTK's per-light uniforms: 4 RGBA32F texels per light (one
+// row each): colour and positional flag; direction (view space) and cone
+// angle; position (view space) and exponent; attenuation.
+uniform sampler2D fxLights;
+uniform int fxLightCount;
+#endif
+uniform float fxOcclusionDiffuseStrength;
 #if FX_DEBUG_CHANNEL >= 0
 uniform sampler2D fxDebugTexture;
 uniform vec2 fxDepthRange;
@@ -53,6 +56,8 @@ uniform vec2 fxDepthRange;
 //VTK::Light::Dec
 
 //VTK::FXLighting::Dec
+
+//VTK::FXEffects::Dec
 
 //VTK::Output::Dec
 
@@ -100,6 +105,21 @@ void main()
   gl_FragDepth = hardwareDepth;
   vec4 albedo = texture(fxAlbedo, texCoord);
   vec3 color = albedo.rgb; // unlit fragments store their final colour here
+  bool lit = false;
+  vec3 n = vec3(0.0, 0.0, 1.0);
+#if FX_NEEDS_POSITION
+  vec3 position = fxViewPosition(texture(fxLinearDepth, texCoord).r);
+  vec3 view = normalize(-position);
+#else
+  vec3 position = vec3(0.0);
+  vec3 view = vec3(0.0, 0.0, 1.0);
+#endif
+  // What the effects' ambient hooks leave here (1 = open) scales the ambient
+  // term; VTK's materials have none by default (Ambient = 0), so it also
+  // scales the light reaching the surface diffusely, by a strength (0:
+  // physically ambient only; 1: like vtkSSAOPass, which darkens the whole
+  // colour). Highlights are kept.
+  vec3 ambientVisibility = vec3(1.0);
 
 #if FX_DEBUG_CHANNEL >= 0
   color = fxDebugColor();
@@ -108,7 +128,8 @@ void main()
   vec2 encodedNormal = texture(fxNormal, texCoord).rg;
   if (!fxIsUnlit(encodedNormal))
   {
-    vec3 n = fxDecodeNormal(encodedNormal);
+    lit = true;
+    n = fxDecodeNormal(encodedNormal);
     vec3 diffuseColor = albedo.rgb;
 #if FX_HAS_AMBIENT
     vec3 ambientColor = texture(fxAmbient, texCoord).rgb;
@@ -123,31 +144,23 @@ void main()
     vec3 specularColor = vec3(0.0);
     float specularPower = 1.0;
 #endif
-#if FX_NEEDS_POSITION
-    vec3 position = fxViewPosition(texture(fxLinearDepth, texCoord).r);
-    vec3 view = normalize(-position);
-#else
-    vec3 position = vec3(0.0);
-    vec3 view = vec3(0.0, 0.0, 1.0);
-#endif
     vec3 diffuseLight = vec3(0.0);
     vec3 specularLight = vec3(0.0);
     //VTK::FXLight::Impl
-#if FX_HAS_OCCLUSION
-    // Occlusion always scales the ambient term; VTK's materials have none
-    // by default (Ambient = 0), so it also scales the light reaching the
-    // surface diffusely, by a strength (0: physically ambient only; 1: like
-    // vtkSSAOPass, which darkens the whole colour). Highlights are kept.
-    float occlusion =
-      clamp(texture(fxOcclusion, texCoord * fxOcclusionScale + fxOcclusionOffset).r, 0.0, 1.0);
-    ambientColor *= occlusion;
-    diffuseLight *= mix(1.0, occlusion, fxOcclusionDiffuseStrength);
-#endif
+    //VTK::FXEffects::Ambient
+    ambientColor *= ambientVisibility;
+    diffuseLight *= mix(vec3(1.0), ambientVisibility, fxOcclusionDiffuseStrength);
     color = ambientColor + diffuseLight * diffuseColor + specularLight * specularColor;
+#if FX_HAS_EMISSION
+    // Emission of lit props (vtkFXGBufferPass::EMISSIVE_COLOR); unlit ones
+    // already carry theirs in the albedo.
+    color += texture(fxEmission, texCoord).rgb;
+#endif
   }
 #endif
-#if FX_DEBUG_OCCLUSION && FX_HAS_OCCLUSION
-  color = vec3(clamp(texture(fxOcclusion, texCoord * fxOcclusionScale + fxOcclusionOffset).r, 0.0, 1.0));
+  //VTK::FXEffects::Color
+#if FX_DEBUG_OCCLUSION
+  color = clamp(ambientVisibility, 0.0, 1.0);
   albedo.a = 1.0;
 #endif
   gl_FragData[0] = vec4(fxSanitize(color), clamp(albedo.a, 0.0, 1.0));

@@ -14,3 +14,7 @@ float fxLinearDepthFromWindow(float windowDepth)
   float z = (fxProjectionZ.y - ndc * fxProjectionZ.w) / (ndc * fxProjectionZ.z - fxProjectionZ.x);
   return -z;
 }
+
+// Light the prop emits of its own (vtkFXGBufferPass::EMISSIVE_COLOR), for
+// its lit fragments' emission channel.
+uniform vec3 fxEmissive;

@@ -6,6 +6,7 @@
 // and it reports the passes that ran and the G-buffer's bytes per pixel.
 #include "vtkFXEffectPass.h"
 #include "vtkFXGBufferPass.h"
+#include "vtkFXHDRTargetPass.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
@@ -94,15 +95,19 @@ int TestPipelineScheduling(int, char*[])
   FX_CHECK(probe->Runs == 1 && probe->SawDepth, "the effect ran and saw the depth channel");
   FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "albedo,normal,depth",
     Channels(pipeline->GetGBufferChannels()));
-  probe->SetStage(vtkFXEffectPass::AfterComposite);
+  probe->SetStage(vtkFXEffectPass::PostProcess);
   window->Render();
-  FX_CHECK(Passes(pipeline) == "lights,gbuffer,composite,probe", Passes(pipeline));
+  FX_CHECK(Passes(pipeline) == "lights,gbuffer,hdr-target,composite,probe", Passes(pipeline));
+  FX_CHECK(pipeline->GetHDRTargetBytesPerPixel() > 0, "a post-process effect gets the HDR target");
   probe->EnabledOff();
   window->Render();
   FX_CHECK(Passes(pipeline) == "lights,gbuffer,composite", Passes(pipeline));
   FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "albedo,normal",
     "a disabled effect's channel is released: " << Channels(pipeline->GetGBufferChannels()));
   FX_CHECK(probe->Runs == 2, "a disabled effect does not run");
+  FX_CHECK(pipeline->GetHDRTargetBytesPerPixel() == 0 &&
+      !pipeline->GetHDRTargetPass()->GetColorTexture(),
+    "no post-process effect: no HDR target");
   probe->EnabledOn();
   probe->SetStage(vtkFXEffectPass::AfterGBuffer);
 

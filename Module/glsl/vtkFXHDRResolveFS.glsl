@@ -1,0 +1,19 @@
+//VTK::System::Dec
+// vtkFXHDRResolveFS: writes vtkFXHDRTargetPass's float target back into the
+// framebuffer it was copied from. NaN becomes 0 and colours are clamped to
+// [0, 1], what an 8-bit framebuffer keeps of them anyway, so no effect's
+// non-finite value reaches the screen.
+
+in vec2 texCoord;
+uniform sampler2D fxColor;
+uniform sampler2D fxDepth;
+
+//VTK::Output::Dec
+
+void main()
+{
+  vec4 c = texture(fxColor, texCoord);
+  c = mix(c, vec4(0.0), bvec4(isnan(c.r), isnan(c.g), isnan(c.b), isnan(c.a)));
+  gl_FragData[0] = clamp(c, 0.0, 1.0);
+  gl_FragDepth = texture(fxDepth, texCoord).r;
+}

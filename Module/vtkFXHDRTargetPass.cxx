@@ -1,0 +1,205 @@
+#include "vtkFXHDRTargetPass.h"
+
+#include "vtkFXHDRResolveFS.h"
+#include "vtkFXRenderUtilities.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+vtkStandardNewMacro(vtkFXHDRTargetPass);
+vtkCxxSetObjectMacro(vtkFXHDRTargetPass, DelegatePass, vtkRenderPass);
+
+vtkFXHDRTargetPass::vtkFXHDRTargetPass() = default;
+
+vtkFXHDRTargetPass::~vtkFXHDRTargetPass()
+{
+  this->SetDelegatePass(nullptr);
+}
+
+vtkTextureObject* vtkFXHDRTargetPass::GetColorTexture()
+{
+  return this->Color;
+}
+
+vtkTextureObject* vtkFXHDRTargetPass::GetDepthTexture()
+{
+  return this->Depth;
+}
+
+int vtkFXHDRTargetPass::GetBytesPerPixel() const
+{
+  return (this->Color ? vtkFXRenderUtilities::GetBytesPerTexel(vtkFXRenderUtilities::RGBA16F) : 0) +
+    (this->Depth ? vtkFXRenderUtilities::GetBytesPerTexel(this->DepthFormat) : 0);
+}
+
+int vtkFXHDRTargetPass::MatchingDepthFormat()
+{
+  // A depth blit needs the same depth format on both sides: read what the
+  // framebuffer being read keeps (VTK's window framebuffer: 24-bit fixed or
+  // 32-bit float, depending on the build and the window's settings).
+  GLint readFramebuffer = 0;
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
+  const GLenum attachment = readFramebuffer ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
+  GLint bits = 0, type = GL_NONE;
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+  if (bits == 32 && type == GL_FLOAT)
+  {
+    return vtkFXRenderUtilities::Depth32F;
+  }
+  if (bits == 24)
+  {
+    return vtkFXRenderUtilities::Depth24;
+  }
+  return -1;
+}
+
+void vtkFXHDRTargetPass::CopyIn(int x, int y, int width, int height, bool depth)
+{
+  // The current read framebuffer is what the renderer drew into so far.
+  this->FrameBuffer->Bind(GL_DRAW_FRAMEBUFFER);
+  GLbitfield mask = GL_COLOR_BUFFER_BIT;
+  if (depth)
+  {
+    mask |= GL_DEPTH_BUFFER_BIT;
+  }
+  else
+  {
+    const GLfloat far = 1.0f;
+    glClearBufferfv(GL_DEPTH, 0, &far);
+  }
+  glBlitFramebuffer(x, y, x + width, y + height, 0, 0, width, height, mask, GL_NEAREST);
+}
+
+void vtkFXHDRTargetPass::WriteBack(vtkOpenGLRenderWindow* window)
+{
+  std::string fs = vtkFXHDRResolveFS;
+  vtkShaderProgram* program =
+    vtkFXRenderUtilities::ReadyQuad(this->Quad, this->QuadSource, window, fs);
+  if (!program)
+  {
+    return;
+  }
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
+  vtkOpenGLState::ScopedglDepthMask depthMask(state);
+  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+  // The target started as a copy of this framebuffer: replace it wholesale.
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_ALWAYS);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglDisable(GL_BLEND);
+  this->Color->Activate();
+  this->Depth->Activate();
+  program->SetUniformi("fxColor", this->Color->GetTextureUnit());
+  program->SetUniformi("fxDepth", this->Depth->GetTextureUnit());
+  this->Quad->Render();
+  this->Color->Deactivate();
+  this->Depth->Deactivate();
+}
+
+void vtkFXHDRTargetPass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  vtkRenderer* ren = s->GetRenderer();
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!window || !this->DelegatePass)
+  {
+    vtkErrorMacro("vtkFXHDRTargetPass needs an OpenGL render window and a delegate pass.");
+    return;
+  }
+  vtkOpenGLState* state = window->GetState();
+  // The camera pass set the viewport to the renderer's part of the framebuffer.
+  GLint viewport[4];
+  state->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+  const int width = std::max(viewport[2], 1);
+  const int height = std::max(viewport[3], 1);
+
+  const bool keepDepth = ren->GetPreserveDepthBuffer() || !ren->GetErase();
+  int depthFormat = MatchingDepthFormat();
+  if (depthFormat < 0)
+  {
+    if (keepDepth && !this->WarnedDepthFormat)
+    {
+      vtkWarningMacro("The framebuffer's depth format cannot be copied; the depth of the "
+                      "layers below is not kept in the HDR target.");
+      this->WarnedDepthFormat = true;
+    }
+    depthFormat = vtkFXRenderUtilities::Depth32F;
+  }
+  vtkFXRenderUtilities::EnsureTexture(
+    this->Color, window, width, height, vtkFXRenderUtilities::RGBA16F);
+  vtkFXRenderUtilities::EnsureTexture(this->Depth, window, width, height, depthFormat);
+  this->DepthFormat = depthFormat;
+  if (!this->FrameBuffer)
+  {
+    this->FrameBuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    this->FrameBuffer->SetContext(window);
+  }
+
+  state->PushFramebufferBindings();
+  this->FrameBuffer->Bind();
+  this->FrameBuffer->AddColorAttachment(0, this->Color);
+  this->FrameBuffer->AddDepthAttachment(this->Depth);
+  this->FrameBuffer->ActivateDrawBuffers(1);
+  state->PopFramebufferBindings();
+  {
+    vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    state->PushDrawFramebufferBinding();
+    this->CopyIn(viewport[0], viewport[1], width, height,
+      keepDepth && this->DepthFormat == MatchingDepthFormat());
+    state->PopDrawFramebufferBinding();
+  }
+
+  state->PushFramebufferBindings();
+  this->FrameBuffer->Bind();
+  {
+    vtkOpenGLState::ScopedglViewport viewportSaver(state);
+    vtkOpenGLState::ScopedglScissor scissorSaver(state);
+    state->vtkglViewport(0, 0, width, height);
+    state->vtkglScissor(0, 0, width, height);
+    vtkRenderState inner(ren);
+    inner.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+    inner.SetFrameBuffer(this->FrameBuffer);
+    this->DelegatePass->Render(&inner);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  }
+  state->PopFramebufferBindings();
+  this->WriteBack(window);
+}
+
+void vtkFXHDRTargetPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(w);
+  }
+  if (this->Quad)
+  {
+    this->Quad->ReleaseGraphicsResources(w);
+    this->Quad.reset();
+  }
+  this->QuadSource.clear();
+  vtkFXRenderUtilities::Release(this->Color, w);
+  vtkFXRenderUtilities::Release(this->Depth, w);
+  vtkFXRenderUtilities::Release(this->FrameBuffer, w);
+}
+
+void vtkFXHDRTargetPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DelegatePass: " << this->DelegatePass << "\n";
+  os << indent << "BytesPerPixel: " << this->GetBytesPerPixel() << "\n";
+}

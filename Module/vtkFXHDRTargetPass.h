@@ -1,0 +1,87 @@
+/**
+ * @class   vtkFXHDRTargetPass
+ * @brief   Renders its delegate into a 16-bit float colour target, then writes the result back.
+ *
+ * Reads what the current framebuffer holds in the renderer's viewport (the
+ * cleared background, or what layers below drew) and copies it into its
+ * own RGBA16F colour texture and depth texture; renders its delegate there
+ * (the render state's framebuffer is this target, so VTK's translucent and
+ * volume steps draw into it as into any framebuffer); then writes colour
+ * and depth back into the framebuffer it found, with NaN turned to 0 and
+ * colours clamped to [0, 1] as an 8-bit window would clamp them.
+ *
+ * Passes inside see light values above 1 and can post-process them (a glow
+ * reads the colour texture, GetColorTexture, and adds onto the target).
+ * vtkFXPipelinePass puts one around its lit image, translucent props,
+ * volumes and post-process effects only while a post-process effect runs.
+ *
+ * Cost: 12 bytes per pixel (colour 8, depth 4), a blit in and a full-screen
+ * pass out; the depth is copied in only when the renderer keeps the depth of
+ * the layers below (PreserveDepthBuffer, or Erase off), otherwise cleared.
+ */
+#ifndef vtkFXHDRTargetPass_h
+#define vtkFXHDRTargetPass_h
+
+#include "vtkFXModule.h"
+#include "vtkRenderPass.h"
+#include "vtkSmartPointer.h"
+
+#include <memory>
+#include <string>
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+
+class VTKFX_EXPORT vtkFXHDRTargetPass : public vtkRenderPass
+{
+public:
+  static vtkFXHDRTargetPass* New();
+  vtkTypeMacro(vtkFXHDRTargetPass, vtkRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The pass rendered into the target.
+   */
+  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+  virtual void SetDelegatePass(vtkRenderPass* delegatePass);
+
+  /**
+   * The RGBA16F colour and the depth of the target while the delegate
+   * renders (nullptr before the first Render()).
+   */
+  vtkTextureObject* GetColorTexture();
+  vtkTextureObject* GetDepthTexture();
+
+  /**
+   * Bytes per pixel of the target's textures (0 when none is allocated).
+   */
+  int GetBytesPerPixel() const;
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+protected:
+  vtkFXHDRTargetPass();
+  ~vtkFXHDRTargetPass() override;
+
+  int MatchingDepthFormat();
+  void CopyIn(int x, int y, int width, int height, bool depth);
+  void WriteBack(vtkOpenGLRenderWindow* window);
+
+  vtkRenderPass* DelegatePass = nullptr;
+  int DepthFormat = -1;
+  bool WarnedDepthFormat = false;
+  vtkSmartPointer<vtkTextureObject> Color;
+  vtkSmartPointer<vtkTextureObject> Depth;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  std::string QuadSource;
+
+private:
+  vtkFXHDRTargetPass(const vtkFXHDRTargetPass&) = delete;
+  void operator=(const vtkFXHDRTargetPass&) = delete;
+};
+
+#endif

@@ -1,0 +1,39 @@
+/**
+ * @class   vtkFXSceneInfo
+ * @brief   What vtkFXPipelinePass's scene analysis found in one frame.
+ *
+ * The prop lists of the frame, sorted by the step that draws them, and the
+ * lights that are on. vtkFXEffectPass::HasWork receives it, so an effect
+ * decides from the scene itself whether it has work (a shadow map needs
+ * translucent props and a light, a glow needs emissive props). The pointers
+ * are valid during the frame that produced them only.
+ */
+#ifndef vtkFXSceneInfo_h
+#define vtkFXSceneInfo_h
+
+#include <vector>
+
+class vtkLight;
+class vtkProp;
+
+struct vtkFXSceneInfo
+{
+  std::vector<vtkProp*> OpaqueProps;        // captured by the G-buffer
+  std::vector<vtkProp*> ForwardOpaqueProps; // opaque, drawn forward (vtkFXForwardOpaquePass)
+  std::vector<vtkProp*> TranslucentProps;   // with translucent polygonal geometry
+  std::vector<vtkProp*> VolumeProps;
+  std::vector<vtkProp*> OverlayProps;       // 2D props, widgets
+  // Props with light-independent colour: unlit opaque props (their colour is
+  // their emission) and props with vtkFXGBufferPass::EMISSIVE_COLOR().
+  std::vector<vtkProp*> EmissiveProps;
+  std::vector<vtkLight*> Lights; // switched on, in VTK's order
+
+  bool AnyAmbient = false;       // a lit captured prop with an ambient term
+  bool AnySpecular = false;      // a lit captured prop with a specular term
+  bool AnyEmissiveColor = false;    // an opaque prop has an EMISSIVE_COLOR
+  bool AnyEmissionAboveOne = false; // an EMISSIVE_COLOR component exceeds 1
+  int LightingComplexity = 0;    // vtkOpenGLRenderer's, 0 when no light is on
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkFXSceneInfo.h
