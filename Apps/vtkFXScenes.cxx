@@ -684,7 +684,11 @@ double vtkFXScenes::PSNR(const std::vector<unsigned char>& a,
     }
     count += 3;
   }
-  if (count == 0 || sum == 0.0)
+  if (count == 0)
+  {
+    return -1.0; // nothing compared: no agreement to claim
+  }
+  if (sum == 0.0)
   {
     return std::numeric_limits<double>::infinity();
   }

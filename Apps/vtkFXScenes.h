@@ -45,7 +45,8 @@ bool Populate(vtkRenderer* renderer, const std::string& input, const Options& op
  * size. With `background` (an RGB byte triple), pixels that show it (within
  * 1) in both images are left out, so that the ratio measures the rendered
  * data, not the empty screen around it. Returns +inf for identical images,
- * -1 if the sizes differ.
+ * -1 if the sizes differ or no pixel is left to compare (two renders that
+ * show nothing do not agree on anything).
  */
 double PSNR(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b,
   const unsigned char* background = nullptr);

@@ -301,9 +301,11 @@ void vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   vtkFXRenderUtilities::EnsureTexture(
     this->LightTexture, window, LightTexels, std::max(count, 1), vtkFXRenderUtilities::RGBA32F);
+  // Its own texture unit first: binding on whatever unit is active would
+  // replace a texture another sampler reads.
+  this->LightTexture->Activate();
   if (count > 0)
   {
-    this->LightTexture->Bind();
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, LightTexels, count, GL_RGBA, GL_FLOAT, texels.data());
   }
 }
@@ -311,6 +313,19 @@ void vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
 void vtkFXCompositePass::SetUniforms(vtkShaderProgram* program, vtkOpenGLRenderer* ren)
 {
   vtkFXGBufferPass* gb = this->GBuffer;
+  const bool lightTexture = program->IsUniformUsed("fxLights");
+  if (lightTexture)
+  {
+    this->UploadLightTexture(ren);
+    BindSampler(program, "fxLights", this->LightTexture);
+    program->SetUniformi("fxLightCount", ren->GetLightingCount());
+  }
+  else
+  {
+    vtkFXRenderUtilities::Release(this->LightTexture, ren->GetRenderWindow());
+    // VTK's own light uniforms, exactly as its mappers receive them.
+    ren->UpdateLightingUniforms(program);
+  }
   BindSampler(program, "fxHardwareDepth", gb->GetDepthTexture());
   BindSampler(program, "fxAlbedo", gb->GetChannelTexture(GB::Albedo));
   BindSampler(program, "fxNormal", gb->GetChannelTexture(GB::Normal));
@@ -331,18 +346,6 @@ void vtkFXCompositePass::SetUniforms(vtkShaderProgram* program, vtkOpenGLRendere
     ren->GetActiveCamera()->GetClippingRange(range);
     const float r[2] = { static_cast<float>(range[0]), static_cast<float>(range[1]) };
     program->SetUniform2f("fxDepthRange", r);
-  }
-  if (program->IsUniformUsed("fxLights"))
-  {
-    this->UploadLightTexture(ren);
-    BindSampler(program, "fxLights", this->LightTexture);
-    program->SetUniformi("fxLightCount", ren->GetLightingCount());
-  }
-  else
-  {
-    vtkFXRenderUtilities::Release(this->LightTexture, ren->GetRenderWindow());
-    // VTK's own light uniforms, exactly as its mappers receive them.
-    ren->UpdateLightingUniforms(program);
   }
   for (size_t i = 0; i < this->Contributors.size(); ++i)
   {

@@ -57,10 +57,15 @@ int vtkFXHDRTargetPass::MatchingDepthFormat()
   {
     return vtkFXRenderUtilities::Depth32F;
   }
+  if (bits == 32 && type == GL_UNSIGNED_NORMALIZED)
+  {
+    return vtkFXRenderUtilities::Depth32;
+  }
   if (bits == 24)
   {
     return vtkFXRenderUtilities::Depth24;
   }
+  vtkDebugMacro("depth attachment: " << bits << " bits, type " << type);
   return -1;
 }
 

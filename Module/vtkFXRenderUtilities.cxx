@@ -39,6 +39,7 @@ const FormatInfo& Info(int format)
     { GL_RGBA32F, GL_RGBA, 4, VTK_FLOAT, 16 },
     { GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, 1, VTK_FLOAT, 4 },
     { GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, 1, VTK_UNSIGNED_INT, 4 },
+    { GL_DEPTH_COMPONENT32, GL_DEPTH_COMPONENT, 1, VTK_UNSIGNED_INT, 4 },
   };
   return table[format];
 }
@@ -76,10 +77,11 @@ bool vtkFXRenderUtilities::EnsureTexture(vtkSmartPointer<vtkTextureObject>& text
   texture->SetWrapT(vtkTextureObject::ClampToEdge);
   texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-  if (format == Depth32F || format == Depth24)
+  if (format == Depth32F || format == Depth24 || format == Depth32)
   {
-    texture->AllocateDepth(
-      width, height, format == Depth32F ? vtkTextureObject::Float32 : vtkTextureObject::Fixed24);
+    texture->AllocateDepth(width, height,
+      format == Depth32F ? vtkTextureObject::Float32
+                         : format == Depth24 ? vtkTextureObject::Fixed24 : vtkTextureObject::Fixed32);
     return true;
   }
   texture->SetInternalFormat(info.InternalFormat);

@@ -48,7 +48,8 @@ public:
     RG32F,     // 8 bytes: a value and a linear depth (any scene scale)
     RGBA32F,   // 16 bytes: a normal and a linear depth (any scene scale)
     Depth32F,  // 4 bytes: hardware depth
-    Depth24,   // 4 bytes: hardware depth, as most window framebuffers keep it
+    Depth24,   // 4 bytes: hardware depth, as some window framebuffers keep it
+    Depth32,   // 4 bytes: 32-bit fixed-point hardware depth (VTK's window framebuffer)
     NumberOfTextureFormats
   };
 

@@ -1,6 +1,6 @@
 // With no effect enabled, vtkFXPipelinePass (G-buffer + deferred lighting +
 // VTK's translucent/volume/overlay steps) must reproduce VTK's own forward
-// render at PSNR >= 40 dB, on every test scene, in perspective and parallel
+// render at PSNR >= 50 dB, on every test scene, in perspective and parallel
 // projection. The PSNR is taken over the pixels that show data (background
 // pixels, equal in both images, would inflate it), and no channel of any
 // pixel may differ by more than MaxDifference grey levels. Both images come
@@ -90,14 +90,14 @@ int TestPipelineMatchesVTK(int argc, char* argv[])
                 << " dB over the data, largest difference " << r.MaxDifference << "/255"
                 << (error.empty() ? "" : " error: " + error) << std::endl;
       worst = std::min(worst, r.PSNR);
-      if (!(r.PSNR >= 40.0) || r.MaxDifference > MaxDifference)
+      if (!(r.PSNR >= 50.0) || r.MaxDifference > MaxDifference)
       {
         ++failures;
       }
     }
   }
   std::cout << "worst PSNR " << worst << " dB over " << 2 * inputs.size() << " renders" << std::endl;
-  FX_CHECK(failures == 0, failures << " render(s) below 40 dB or off by more than "
+  FX_CHECK(failures == 0, failures << " render(s) below 50 dB or off by more than "
                                     << MaxDifference << " grey levels");
   return EXIT_SUCCESS;
 }

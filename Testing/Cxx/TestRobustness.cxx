@@ -87,7 +87,9 @@ int TestRobustness(int, char*[])
   bad->GetProperty()->SetAmbient(1.0);
   renderer->AddActor(bad);
 
-  // Opacity exactly 0: invisible, in front of the mesh's centre.
+  // Opacity exactly 0, forced opaque so that it reaches the G-buffer (an
+  // unforced one is translucent and never does): invisible, in front of the
+  // mesh's centre.
   vtkNew<vtkSphereSource> sphere;
   sphere->SetCenter(0, 0, 0.5);
   sphere->SetRadius(0.3);
@@ -96,6 +98,7 @@ int TestRobustness(int, char*[])
   vtkNew<vtkActor> invisible;
   invisible->SetMapper(sphereMapper);
   invisible->GetProperty()->SetOpacity(0.0);
+  invisible->ForceOpaqueOn();
   invisible->GetProperty()->SetColor(1, 0, 0);
   renderer->AddActor(invisible);
   renderer->ResetCamera();
@@ -138,6 +141,8 @@ int TestRobustness(int, char*[])
   renderer->SetPass(pipeline);
   window->Render();
   const auto deferred = vtkFXScenes::Capture(window);
+  FX_CHECK(pipeline->GetLastSceneInfo().OpaqueProps.size() == 2,
+    "the opacity-0 sphere goes through the G-buffer");
   const size_t centre = 3 * (80 * 200 + 100);
   std::cout << "centre pixel: VTK " << int(forward[centre]) << "," << int(forward[centre + 1]) << ","
             << int(forward[centre + 2]) << " vtkFX " << int(deferred[centre]) << ","

@@ -9,9 +9,9 @@
 //   over the floor pixels 0.03 R to R from the wall (closer pixels, within
 //   1.5 pixels of the crease, cannot resolve the wall), within 0.03 on
 //   average in every band of (h/R)^(1/3) from 0.4, and 0.1 at every pixel;
-//   A itself tends to 0.5 at the crease;
+//   the estimate darkens toward the crease bin after bin;
 // - the horizon-based estimator keeps a flat plane at 0.93 or more;
-// - every value of every read-back texture is finite and within [0, 1],
+// - every value of every float read-back texture is finite and in [0, 1],
 //   at full and half resolution, blurred or not.
 #include "vtkFXBilateralBlurPass.h"
 #include "vtkFXGBufferPass.h"
@@ -100,6 +100,10 @@ std::vector<float> OcclusionAtPixels(vtkTextureObject* texture)
 
 int CheckRange(vtkTextureObject* texture, const char* what)
 {
+  // 8-bit normalised texels are in [0, 1] whatever the shader wrote: a
+  // range check on them could not fail.
+  FX_CHECK(texture && texture->GetVTKDataType() == VTK_FLOAT,
+    what << ": a range check needs float texels");
   const int comps = texture->GetComponents();
   const auto values = vtkFXTest::Download(texture, comps);
   for (size_t i = 0; i < values.size(); i += comps)
@@ -256,8 +260,9 @@ int TestSSAO(int, char*[])
     vtkTextureObject* blurred = s.Pipeline->GetOcclusionBlurPass()->GetOutputTexture();
     FX_CHECK(blurred && static_cast<int>(blurred->GetWidth()) == Width,
       "the blur upsampled to full resolution");
-    if (CheckRange(ssao->GetOutputTexture(), "crease, raw") != EXIT_SUCCESS ||
-      CheckRange(blurred, "crease, blurred") != EXIT_SUCCESS)
+    // (The upsampled output is R8, in range by construction; the blurred
+    // float result was checked above.)
+    if (CheckRange(ssao->GetOutputTexture(), "crease, raw") != EXIT_SUCCESS)
     {
       return EXIT_FAILURE;
     }
@@ -318,8 +323,18 @@ int TestSSAO(int, char*[])
     FX_CHECK(n >= 100, "pixels near the crease");
     FX_CHECK(meanError <= 0.03 && worstError <= 0.1 && worstBin <= 0.03,
       "the estimate follows the closed form");
-    FX_CHECK(std::fabs(vtkFXTest::CreaseOcclusion(1e-9 * radius, radius) - 0.5) <= 0.01,
-      "at the crease itself the occlusion is 0.5");
+    // Nearer than 1.5 texels the estimate cannot resolve the wall (see
+    // above), but it must still darken toward the crease, bin after bin,
+    // and the nearest bin must be clearly occluded (A is 0.55 there; the
+    // estimate reads 0.73 at full and 0.81 at half resolution).
+    for (int k = 1; k < 10; ++k)
+    {
+      FX_CHECK(!binCount[k - 1] || !binCount[k] ||
+          binSSAO[k - 1] / binCount[k - 1] <= binSSAO[k] / binCount[k] + 0.005,
+        "occlusion darkens toward the crease (bin " << k << ")");
+    }
+    FX_CHECK(binCount[0] > 0 && binSSAO[0] / binCount[0] <= 0.85,
+      "the pixels nearest the crease are occluded");
     FX_CHECK(open >= 0.97, "far from the crease nothing occludes");
   }
   // 3. The horizon-based estimator (GTAO, not the default): a flat plane

@@ -1,0 +1,635 @@
+// The frame structure of vtkFXPipelinePass, with probe effects:
+// - one probe per stage runs where the stage says (light-space also without
+//   opaque props; composite-stage effects add code only, no pass);
+// - named inputs order the effects whatever order they were added in; a
+//   missing effect or output, an input from a later stage and a cycle are
+//   reported (once) and keep the effects concerned out; a producer without
+//   work keeps its consumer out silently; an optional input may stay open;
+// - each composite hook changes the lit colour as its code says, with '@'
+//   made unique per effect, on the uniform and on the light-texture path;
+// - more lights than VTK's per-light uniforms serve still match VTK;
+// - layered renderers that preserve depth (and colour) match VTK, with and
+//   without the HDR target;
+// - emission above 1 is kept in a float channel and survives, through the
+//   HDR target, a post-process that halves the image.
+#include "vtkFXCompositePass.h"
+#include "vtkFXEffectPass.h"
+#include "vtkFXGBufferPass.h"
+#include "vtkFXHDRTargetPass.h"
+#include "vtkFXPipelinePass.h"
+#include "vtkFXRenderUtilities.h"
+#include "vtkFXScenes.h"
+#include "vtkFXTestUtilities.h"
+
+#include "vtkActor.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkCommand.h"
+#include "vtkInformation.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkPlaneSource.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkSphereSource.h"
+#include "vtk_glew.h"
+
+#include <memory>
+
+namespace
+{
+using GB = vtkFXGBufferPass;
+std::vector<std::string> RunLog; // names of the probes, in the order they rendered
+
+// An effect with an output "out" and an input "in" (optional for a Probe,
+// required for a Consumer), unconnected until a test connects it. It
+// renders nothing; it logs that it ran.
+class Probe : public vtkFXEffectPass
+{
+public:
+  static Probe* New();
+  vtkTypeMacro(Probe, vtkFXEffectPass);
+  Probe() : Probe(true) {}
+  explicit Probe(bool optional)
+  {
+    this->DeclareInput("in", optional, false);
+    this->DeclareOutput("out");
+  }
+  unsigned int GetRequiredChannels() override { return 0; }
+  bool HasWork(const vtkFXSceneInfo& scene) override
+  {
+    return this->NeedsTranslucent ? !scene.TranslucentProps.empty() && !scene.Lights.empty()
+                                  : !scene.OpaqueProps.empty();
+  }
+  Output GetOutput(const char* name) override
+  {
+    Output output;
+    if (std::string(name) == "out" && this->Ran)
+    {
+      output.Components = 1;
+      output.Step = 1;
+    }
+    return output;
+  }
+  void Render(const vtkRenderState*) override
+  {
+    RunLog.push_back(this->Label);
+    this->Ran = true;
+  }
+  std::string Label;
+  bool NeedsTranslucent = false;
+  bool Ran = false;
+};
+vtkStandardNewMacro(Probe);
+
+class Consumer : public Probe
+{
+public:
+  static Consumer* New();
+  vtkTypeMacro(Consumer, Probe);
+  Consumer() : Probe(false) {}
+};
+vtkStandardNewMacro(Consumer);
+
+// An effect made of composite code only; `@gain` is a uniform it binds.
+class HookProbe : public vtkFXEffectPass
+{
+public:
+  static HookProbe* New();
+  vtkTypeMacro(HookProbe, vtkFXEffectPass);
+  HookProbe() { this->Stage = Composite; }
+  unsigned int GetRequiredChannels() override { return 0; }
+  void Render(const vtkRenderState*) override {} // composite-stage: never called
+  std::string GetCompositeCode(int hook) override { return this->Code[hook]; }
+  void BindCompositeResources(vtkShaderProgram* program, const std::string& prefix) override
+  {
+    const std::string gain = prefix + "gain";
+    if (program->IsUniformUsed(gain.c_str()))
+    {
+      program->SetUniformf(gain.c_str(), this->Gain);
+    }
+  }
+  std::string Code[NumberOfCompositeHooks];
+  float Gain = 1.0f;
+};
+vtkStandardNewMacro(HookProbe);
+
+// A post-process that multiplies the image by 0.5 (blending), so values
+// above 1 in an HDR target come out at or above 0.5 after the halving.
+class HalveProbe : public vtkFXEffectPass
+{
+public:
+  static HalveProbe* New();
+  vtkTypeMacro(HalveProbe, vtkFXEffectPass);
+  HalveProbe() { this->Stage = PostProcess; }
+  unsigned int GetRequiredChannels() override { return 0; }
+  bool HasWork(const vtkFXSceneInfo&) override { return true; }
+  void Render(const vtkRenderState* s) override
+  {
+    RunLog.push_back("halve");
+    this->SawFrameBuffer = s->GetFrameBuffer() != nullptr;
+    auto* window = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+    const std::string fs = "//VTK::System::Dec\nin vec2 texCoord;\n//VTK::Output::Dec\n"
+                           "void main() { gl_FragData[0] = vec4(texCoord.x < -1.0 ? 1.0 : 0.5); }\n";
+    vtkShaderProgram* program = vtkFXRenderUtilities::ReadyQuad(this->Quad, this->Source, window, fs);
+    if (!program)
+    {
+      return;
+    }
+    vtkOpenGLState* state = window->GetState();
+    vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depth(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglBlendFuncSeparate func(state);
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ZERO, GL_ONE);
+    this->Quad->Render();
+  }
+  void ReleaseGraphicsResources(vtkWindow* w) override
+  {
+    if (this->Quad)
+    {
+      this->Quad->ReleaseGraphicsResources(w);
+      this->Quad.reset();
+    }
+    this->Source.clear();
+  }
+  bool SawFrameBuffer = false;
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  std::string Source;
+};
+vtkStandardNewMacro(HalveProbe);
+
+std::string Passes(vtkFXPipelinePass* pipeline)
+{
+  std::string list;
+  for (int i = 0; i < pipeline->GetNumberOfPassesThatRan(); ++i)
+  {
+    list += (i ? "," : "") + std::string(pipeline->GetPassThatRan(i));
+  }
+  return list;
+}
+
+std::string Log()
+{
+  std::string list;
+  for (const auto& name : RunLog)
+  {
+    list += (list.empty() ? "" : ",") + name;
+  }
+  return list;
+}
+
+bool Contains(const std::string& s, const char* what)
+{
+  return s.find(what) != std::string::npos;
+}
+
+vtkSmartPointer<vtkActor> MakeActor(vtkPolyDataAlgorithm* source, double r, double g, double b)
+{
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputConnection(source->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(r, g, b);
+  return actor;
+}
+
+// A plane facing a parallel camera that it fills, lit by a headlight
+// (diffuse = albedo exactly): every pixel shows the same colour.
+struct FlatScene
+{
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkFXPipelinePass> Pipeline;
+  vtkNew<vtkPlaneSource> Plane;
+  vtkSmartPointer<vtkActor> Actor;
+  explicit FlatScene(double grey)
+  {
+    this->Window = vtkFXTest::MakeWindow(64, 48);
+    this->Window->AddRenderer(this->Renderer);
+    this->Plane->SetOrigin(-10, -10, 0);
+    this->Plane->SetPoint1(10, -10, 0);
+    this->Plane->SetPoint2(-10, 10, 0);
+    this->Actor = MakeActor(this->Plane, grey, grey, grey);
+    this->Renderer->AddActor(this->Actor);
+    this->Renderer->GetActiveCamera()->ParallelProjectionOn();
+    this->Renderer->GetActiveCamera()->SetParallelScale(1.0);
+    this->Renderer->GetActiveCamera()->SetPosition(0, 0, 5);
+    this->Renderer->ResetCameraClippingRange();
+    this->Renderer->SetPass(this->Pipeline);
+  }
+  // The centre pixel's RGB after a render.
+  std::vector<int> Centre()
+  {
+    this->Window->Render();
+    const auto image = vtkFXScenes::Capture(this->Window);
+    const size_t i = 3 * (24 * 64 + 32);
+    return { image[i], image[i + 1], image[i + 2] };
+  }
+};
+
+// Counts the errors an object reports (and keeps them off the console).
+struct ErrorCounter
+{
+  int Count = 0;
+  std::string Last;
+  vtkNew<vtkCallbackCommand> Command;
+  explicit ErrorCounter(vtkObject* object)
+  {
+    this->Command->SetClientData(this);
+    this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
+      auto* self = static_cast<ErrorCounter*>(client);
+      ++self->Count;
+      self->Last = data ? static_cast<const char*>(data) : "";
+    });
+    object->AddObserver(vtkCommand::ErrorEvent, this->Command);
+  }
+};
+
+vtkSmartPointer<Probe> AddProbe(vtkFXPipelinePass* pipeline, const char* name, int stage,
+  bool required = false, const char* input = "")
+{
+  vtkSmartPointer<Probe> p;
+  if (required)
+  {
+    p = vtkSmartPointer<Consumer>::New();
+  }
+  else
+  {
+    p = vtkSmartPointer<Probe>::New();
+  }
+  p->Label = name;
+  p->SetStage(stage);
+  p->SetInputConnection("in", input);
+  pipeline->AddEffect(name, p);
+  return p;
+}
+
+int TestStages()
+{
+  FlatScene scene(0.8);
+  // Added in reverse frame order: the stages decide, not the order added.
+  AddProbe(scene.Pipeline, "pp", vtkFXEffectPass::PostProcess);
+  AddProbe(scene.Pipeline, "ag", vtkFXEffectPass::AfterGBuffer);
+  auto ls = AddProbe(scene.Pipeline, "ls", vtkFXEffectPass::LightSpace);
+  ls->NeedsTranslucent = true;
+  vtkNew<HookProbe> hooks;
+  scene.Pipeline->AddEffect("hooks", hooks);
+  RunLog.clear();
+  scene.Centre();
+  std::cout << "opaque only: " << Passes(scene.Pipeline) << std::endl;
+  FX_CHECK(Passes(scene.Pipeline) == "lights,gbuffer,ag,hdr-target,composite,pp",
+    "light-space needs translucent props; composite-stage effects have no pass: "
+      << Passes(scene.Pipeline));
+  FX_CHECK(scene.Pipeline->GetCompositePass()->GetNumberOfContributors() == 3,
+    "every effect that ran contributes to the composite");
+
+  vtkNew<vtkSphereSource> sphere;
+  auto glass = MakeActor(sphere, 1, 1, 1);
+  glass->GetProperty()->SetOpacity(0.5);
+  scene.Renderer->AddActor(glass);
+  RunLog.clear();
+  scene.Centre();
+  std::cout << "opaque and translucent: " << Passes(scene.Pipeline) << std::endl;
+  FX_CHECK(Passes(scene.Pipeline) == "lights,ls,gbuffer,ag,hdr-target,composite,translucent,pp",
+    Passes(scene.Pipeline));
+  FX_CHECK(Log() == "ls,ag,pp", Log());
+
+  // Translucent only: no G-buffer, no composite, but light-space effects
+  // still run (the probes of the other stages want opaque props).
+  scene.Renderer->RemoveActor(scene.Actor);
+  RunLog.clear();
+  scene.Centre();
+  std::cout << "translucent only: " << Passes(scene.Pipeline) << std::endl;
+  FX_CHECK(Passes(scene.Pipeline) == "lights,ls,translucent", Passes(scene.Pipeline));
+  FX_CHECK(scene.Pipeline->GetGBufferBytesPerPixel() == 0, "no G-buffer");
+  FX_CHECK(scene.Pipeline->GetLastSceneInfo().TranslucentProps.size() == 1 &&
+      scene.Pipeline->GetLastSceneInfo().Lights.size() == 1,
+    "the scene summary lists the translucent prop and the light");
+  return EXIT_SUCCESS;
+}
+
+int TestConnections()
+{
+  FlatScene scene(0.8);
+  ErrorCounter errors(scene.Pipeline);
+  // A consumer added before its producer runs after it.
+  AddProbe(scene.Pipeline, "consumer", vtkFXEffectPass::AfterGBuffer, true, "producer.out");
+  auto producer = AddProbe(scene.Pipeline, "producer", vtkFXEffectPass::AfterGBuffer);
+  RunLog.clear();
+  scene.Centre();
+  FX_CHECK(Log() == "producer,consumer", "dependency order: " << Log());
+  FX_CHECK(std::string(scene.Pipeline->GetScheduleProblems()).empty() && errors.Count == 0,
+    scene.Pipeline->GetScheduleProblems());
+  // "producer" alone names its first output.
+  scene.Pipeline->GetEffect("consumer")->SetInputConnection("in", "producer");
+  RunLog.clear();
+  scene.Centre();
+  FX_CHECK(Log() == "producer,consumer", "first output by default: " << Log());
+
+  // A producer without work: its consumer is out, and that is no fault.
+  producer->EnabledOff();
+  RunLog.clear();
+  scene.Centre();
+  FX_CHECK(Log().empty() && errors.Count == 0, "consumer left out silently: " << Log());
+  producer->EnabledOn();
+
+  struct Case
+  {
+    const char* Connection;
+    int ProducerStage;
+    const char* Problem;
+  };
+  const Case cases[] = {
+    { "nobody.out", vtkFXEffectPass::AfterGBuffer, "no effect has that name" },
+    { "producer.nothing", vtkFXEffectPass::AfterGBuffer, "has no output 'nothing'" },
+    { "producer.out", vtkFXEffectPass::PostProcess, "runs at the post-process stage" },
+    { "", vtkFXEffectPass::AfterGBuffer, "input 'in' is not connected" },
+  };
+  int expectedErrors = 0;
+  for (const Case& c : cases)
+  {
+    scene.Pipeline->GetEffect("consumer")->SetInputConnection("in", c.Connection);
+    producer->SetStage(c.ProducerStage);
+    RunLog.clear();
+    scene.Centre();
+    scene.Centre(); // a second frame reports nothing new
+    ++expectedErrors;
+    std::cout << "'" << c.Connection << "': " << Log() << " / "
+              << scene.Pipeline->GetScheduleProblems();
+    FX_CHECK(Contains(scene.Pipeline->GetScheduleProblems(), c.Problem),
+      "expected '" << c.Problem << "'");
+    FX_CHECK(!Contains(Log(), "consumer"), "the consumer is left out");
+    FX_CHECK(errors.Count == expectedErrors, "one error per new problem: " << errors.Count);
+  }
+  producer->SetStage(vtkFXEffectPass::AfterGBuffer);
+
+  // A cycle: both out, reported.
+  scene.Pipeline->GetEffect("consumer")->SetInputConnection("in", "producer.out");
+  producer->SetInputConnection("in", "consumer.out");
+  RunLog.clear();
+  scene.Centre();
+  std::cout << "cycle: " << scene.Pipeline->GetScheduleProblems();
+  FX_CHECK(Contains(scene.Pipeline->GetScheduleProblems(), "in a cycle") && Log().empty(),
+    "a cycle is reported and its effects left out: " << Log());
+
+  // Fixed: nothing to report, both run again.
+  producer->SetInputConnection("in", "");
+  RunLog.clear();
+  scene.Centre();
+  FX_CHECK(std::string(scene.Pipeline->GetScheduleProblems()).empty() &&
+      Log() == "producer,consumer",
+    Log());
+  FX_CHECK(scene.Pipeline->GetEffect("consumer")->GetInputProducer("in") == producer,
+    "the input is bound to its producer");
+  return EXIT_SUCCESS;
+}
+
+int TestHooks()
+{
+  // Albedo 0.8 under a headlight facing the plane: 204 grey.
+  FlatScene scene(0.8);
+  vtkNew<HookProbe> a, b;
+  scene.Pipeline->AddEffect("a", a);
+  scene.Pipeline->AddEffect("b", b);
+  auto expect = [&](int grey, const char* what) {
+    const auto c = scene.Centre();
+    std::cout << what << ": " << c[0] << "," << c[1] << "," << c[2] << std::endl;
+    return std::abs(c[0] - grey) <= 1 && std::abs(c[1] - grey) <= 1;
+  };
+  FX_CHECK(expect(204, "no hook code"), "plain lit colour");
+  a->Code[vtkFXEffectPass::Ambient] = "ambientVisibility *= 0.5;";
+  FX_CHECK(expect(102, "ambient 0.5"), "ambient visibility scales diffuse light by strength 1");
+  scene.Pipeline->GetCompositePass()->SetOcclusionDiffuseStrength(0.0);
+  FX_CHECK(expect(204, "ambient 0.5, strength 0"), "strength 0 keeps diffuse light");
+  scene.Pipeline->GetCompositePass()->SetOcclusionDiffuseStrength(1.0);
+  a->Code[vtkFXEffectPass::Ambient] = "";
+  a->Code[vtkFXEffectPass::LightVisibility] = "lightVisibility = lightIndex == 0 ? 0.25 : 1.0;";
+  FX_CHECK(expect(51, "light 0 at 0.25"), "per-light visibility");
+  a->Code[vtkFXEffectPass::LightVisibility] = "";
+  // The same declaration in two effects: '@' keeps them apart.
+  for (HookProbe* p : { a.Get(), b.Get() })
+  {
+    p->Code[vtkFXEffectPass::Declarations] = "uniform float @gain;";
+    p->Code[vtkFXEffectPass::Color] = "color *= @gain;";
+  }
+  a->Gain = 0.5f;
+  b->Gain = 0.25f;
+  FX_CHECK(expect(26, "gains 0.5 and 0.25"), "each effect's uniform");
+  for (HookProbe* p : { a.Get(), b.Get() })
+  {
+    p->Code[vtkFXEffectPass::Declarations] = "";
+    p->Code[vtkFXEffectPass::Color] = "";
+  }
+
+  // Two directional lights, on the uniform and on the light-texture path:
+  // hiding light 1 by visibility equals switching it off.
+  scene.Renderer->RemoveAllLights();
+  for (double x : { -1.0, 1.0 })
+  {
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->SetPosition(x, 0.5, 3);
+    light->SetFocalPoint(0, 0, 0);
+    light->SetIntensity(0.5);
+    scene.Renderer->AddLight(light);
+  }
+  vtkLight* second = vtkLight::SafeDownCast(scene.Renderer->GetLights()->GetItemAsObject(1));
+  for (int maxUniform : { 8, 1 })
+  {
+    scene.Pipeline->GetCompositePass()->SetMaximumUniformLights(maxUniform);
+    second->SwitchOff();
+    const auto firstOnly = scene.Centre();
+    second->SwitchOn();
+    const auto both = scene.Centre();
+    a->Code[vtkFXEffectPass::LightVisibility] = "if (lightIndex == 1) lightVisibility = 0.0;";
+    const auto hidden = scene.Centre();
+    a->Code[vtkFXEffectPass::LightVisibility] = "";
+    std::cout << (maxUniform == 1 ? "light texture" : "uniforms") << ": first light "
+              << firstOnly[0] << ", both " << both[0] << ", second hidden " << hidden[0]
+              << std::endl;
+    FX_CHECK(both[0] > firstOnly[0] + 20, "the second light adds");
+    FX_CHECK(std::abs(hidden[0] - firstOnly[0]) <= 1, "lightIndex follows VTK's light order");
+  }
+  return EXIT_SUCCESS;
+}
+
+// 20 positional lights (spots and points, with attenuation) on the fandisk:
+// the light texture must give VTK's forward image.
+int TestManyLights()
+{
+  auto window = vtkFXTest::MakeWindow(400, 300);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  std::string error;
+  FX_CHECK(vtkFXScenes::Populate(renderer, vtkFXScenes::DataDirectory() + "/fandisk.obj",
+             vtkFXScenes::Options(), error),
+    error);
+  renderer->RemoveAllLights();
+  double bounds[6];
+  renderer->ComputeVisiblePropBounds(bounds);
+  const double centre[3] = { (bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2,
+    (bounds[4] + bounds[5]) / 2 };
+  const double size = bounds[1] - bounds[0];
+  for (int i = 0; i < 20; ++i)
+  {
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->PositionalOn();
+    const double angle = 2.0 * 3.14159265358979 * i / 20;
+    light->SetPosition(centre[0] + size * std::cos(angle), centre[1] + size * std::sin(angle),
+      centre[2] + size * (0.5 + 0.05 * i));
+    light->SetFocalPoint(centre);
+    light->SetConeAngle(i % 3 == 0 ? 30.0 : 180.0);
+    light->SetExponent(2.0);
+    light->SetAttenuationValues(1.0, 0.1 / size, 0.05 / (size * size));
+    light->SetColor(0.5 + 0.5 * std::cos(angle), 0.7, 0.5 + 0.5 * std::sin(angle));
+    light->SetIntensity(0.15);
+    renderer->AddLight(light);
+  }
+  window->Render();
+  const auto forward = vtkFXScenes::Capture(window);
+  vtkNew<vtkFXPipelinePass> pipeline;
+  renderer->SetPass(pipeline);
+  unsigned char background[3];
+  vtkFXScenes::BackgroundBytes(renderer, background);
+  for (int maxUniform : { 64, 8 })
+  {
+    pipeline->GetCompositePass()->SetMaximumUniformLights(maxUniform);
+    window->Render();
+    const auto deferred = vtkFXScenes::Capture(window);
+    const double psnr = vtkFXScenes::PSNR(forward, deferred, background);
+    const int diff = vtkFXScenes::MaxDifference(forward, deferred);
+    std::cout << "20 positional lights, " << (maxUniform < 20 ? "light texture" : "uniforms")
+              << ": PSNR " << psnr << " dB, largest difference " << diff << std::endl;
+    FX_CHECK(pipeline->GetLastSceneInfo().LightingComplexity == 3, "positional lighting");
+    FX_CHECK(psnr >= 50.0 && diff <= 2, "matches VTK's forward render");
+  }
+  return EXIT_SUCCESS;
+}
+
+// Layer 0: a sphere; layer 1 (preserving colour and depth): a plane through
+// its centre. VTK keeps the half of the sphere in front of the plane.
+int TestLayers()
+{
+  auto window = vtkFXTest::MakeWindow(400, 300);
+  window->SetNumberOfLayers(2);
+  vtkNew<vtkRenderer> bottom, top;
+  top->SetLayer(1);
+  top->SetPreserveDepthBuffer(1);
+  top->SetPreserveColorBuffer(1);
+  window->AddRenderer(bottom);
+  window->AddRenderer(top);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(48);
+  bottom->AddActor(MakeActor(sphere, 0.9, 0.2, 0.2));
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-1.5, -1.5, 0);
+  plane->SetPoint1(1.5, -1.5, 0);
+  plane->SetPoint2(-1.5, 1.5, 0);
+  top->AddActor(MakeActor(plane, 0.3, 0.6, 0.9));
+  bottom->GetActiveCamera()->SetPosition(2, 1.5, 4);
+  bottom->ResetCamera();
+  top->SetActiveCamera(bottom->GetActiveCamera());
+  window->Render();
+  const auto forward = vtkFXScenes::Capture(window);
+  unsigned char background[3];
+  vtkFXScenes::BackgroundBytes(bottom, background);
+
+  vtkNew<vtkFXPipelinePass> pipelineBottom, pipelineTop;
+  bottom->SetPass(pipelineBottom);
+  top->SetPass(pipelineTop);
+  vtkNew<HalveProbe> halve;
+  for (bool hdr : { false, true })
+  {
+    if (hdr)
+    {
+      // The HDR target must start from what the layer below drew (colour
+      // and depth): halve the top layer's image, compare with VTK's halved.
+      pipelineTop->AddEffect("halve", halve);
+    }
+    window->Render();
+    auto deferred = vtkFXScenes::Capture(window);
+    auto reference = forward;
+    if (hdr)
+    {
+      for (auto& v : reference)
+      {
+        v = static_cast<unsigned char>((v * 128 + 127) / 255);
+      }
+    }
+    const double psnr = vtkFXScenes::PSNR(reference, deferred, hdr ? nullptr : background);
+    const int diff = vtkFXScenes::MaxDifference(reference, deferred);
+    std::cout << "layers" << (hdr ? " through the HDR target (halved)" : "") << ": PSNR " << psnr
+              << " dB, largest difference " << diff << "; top: " << Passes(pipelineTop) << std::endl;
+    FX_CHECK(psnr >= 50.0 && diff <= 2, "layered renderers match VTK");
+  }
+  FX_CHECK(halve->SawFrameBuffer && pipelineTop->GetHDRTargetPass()->GetColorTexture() &&
+      pipelineTop->GetHDRTargetPass()->GetColorTexture()->GetVTKDataType() == VTK_FLOAT,
+    "the post-process drew into the float target");
+  return EXIT_SUCCESS;
+}
+
+// Emission 2.0 in red: kept in a float channel, and through the HDR target
+// a halving post-process still leaves red at 1.
+int TestEmission()
+{
+  FlatScene scene(0.2);
+  scene.Centre();
+  FX_CHECK(!(scene.Pipeline->GetGBufferChannels() & GB::ChannelBit(GB::Emission)),
+    "no emissive prop: no emission channel");
+  const double emissive[3] = { 2.0, 0.5, 0.0 };
+  scene.Actor->SetPropertyKeys(vtkSmartPointer<vtkInformation>::New());
+  scene.Actor->GetPropertyKeys()->Set(GB::EMISSIVE_COLOR(), emissive, 3);
+  const auto lit = scene.Centre();
+  vtkFXGBufferPass* gb = scene.Pipeline->GetGBufferPass();
+  FX_CHECK(gb->GetHDREmission() && gb->GetChannelFormat(GB::Emission) == vtkFXRenderUtilities::RGBA16F,
+    "emission above 1 gets a float channel");
+  const auto values = vtkFXTest::Download(gb->GetChannelTexture(GB::Emission), 4);
+  const size_t centre = 4 * (24 * 64 + 32);
+  std::cout << "emission texel " << values[centre] << "," << values[centre + 1] << ","
+            << values[centre + 2] << "; lit colour " << lit[0] << "," << lit[1] << "," << lit[2]
+            << std::endl;
+  FX_CHECK(std::fabs(values[centre] - 2.0f) < 1e-3f && std::fabs(values[centre + 1] - 0.5f) < 1e-3f,
+    "the emission channel keeps 2.0");
+  FX_CHECK(lit[0] == 255 && std::abs(lit[1] - 179) <= 1 && std::abs(lit[2] - 51) <= 1,
+    "lit colour = albedo x light + emission");
+  FX_CHECK(scene.Pipeline->GetLastSceneInfo().EmissiveProps.size() == 1, "listed as emissive");
+
+  vtkNew<HalveProbe> halve;
+  scene.Pipeline->AddEffect("halve", halve);
+  const auto halved = scene.Centre();
+  std::cout << "halved in the HDR target: " << halved[0] << "," << halved[1] << "," << halved[2]
+            << std::endl;
+  FX_CHECK(halved[0] == 255 && std::abs(halved[1] - 90) <= 1 && std::abs(halved[2] - 26) <= 1,
+    "values above 1 survive until the HDR target is written");
+
+  const double dim[3] = { 0.5, 0.0, 0.0 };
+  scene.Actor->GetPropertyKeys()->Set(GB::EMISSIVE_COLOR(), dim, 3);
+  scene.Centre();
+  FX_CHECK(!gb->GetHDREmission() && gb->GetBytesPerPixel() == 16,
+    "emission within [0, 1]: RGBA8 (albedo, normal, emission, depth)");
+  return EXIT_SUCCESS;
+}
+}
+
+int TestFrameStructure(int, char*[])
+{
+  for (auto test : { TestStages, TestConnections, TestHooks, TestManyLights, TestLayers, TestEmission })
+  {
+    if (test() != EXIT_SUCCESS)
+    {
+      return EXIT_FAILURE;
+    }
+  }
+  return EXIT_SUCCESS;
+}
