@@ -51,8 +51,8 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * Taps on each side of a pixel, per pass (1..16, default 4; the seeds'
-   * 17-tap filter is 8).
+   * Taps on each side of a pixel, per pass (1..16, default 4; the 17-tap
+   * blur of early SSAO write-ups, e.g. gamerendering.com 2009, is 8).
    */
   vtkSetClampMacro(Radius, int, 1, 16);
   vtkGetMacro(Radius, int);

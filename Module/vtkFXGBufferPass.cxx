@@ -302,6 +302,7 @@ void vtkFXGBufferPass::Render(const vtkRenderState* s)
         }
       }
       // Draws that never reach SetShaderParameters write their colour only.
+      this->HookedPrograms.clear();
       this->FrameBuffer->ActivateDrawBuffers(1);
       vtkRenderState delegateState(ren);
       delegateState.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
@@ -444,8 +445,15 @@ bool vtkFXGBufferPass::SetShaderParameters(
   {
     // A shader the hooks did not extend writes its colour only: the other
     // attachments must not receive undefined values from it.
-    const bool hooked = program->GetFragmentShader() &&
-      Contains(program->GetFragmentShader()->GetSource(), HookedMarker);
+    // (Looked up once per program and frame: the source comes as a copy.)
+    auto known = this->HookedPrograms.find(program);
+    if (known == this->HookedPrograms.end())
+    {
+      const bool writes = program->GetFragmentShader() &&
+        Contains(program->GetFragmentShader()->GetSource(), HookedMarker);
+      known = this->HookedPrograms.emplace(program, writes).first;
+    }
+    const bool hooked = known->second;
     this->FrameBuffer->ActivateDrawBuffers(hooked ? this->NumberOfTargets : 1);
   }
   return true;

@@ -46,6 +46,7 @@
 #include "vtkSmartPointer.h"
 
 #include <string>
+#include <unordered_map>
 
 class vtkInformationDoubleVectorKey;
 class vtkOpenGLFramebufferObject;
@@ -193,6 +194,8 @@ protected:
   vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;
   vtkTimeStamp ShaderStageTime;
   float ProjectionZ[4] = { 0.f, 0.f, 0.f, 1.f };
+  // Whether a program writes every channel (SetShaderParameters), per frame.
+  std::unordered_map<vtkShaderProgram*, bool> HookedPrograms;
 
 private:
   vtkFXGBufferPass(const vtkFXGBufferPass&) = delete;

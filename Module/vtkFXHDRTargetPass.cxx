@@ -48,11 +48,19 @@ int vtkFXHDRTargetPass::MatchingDepthFormat()
   GLint readFramebuffer = 0;
   glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
   const GLenum attachment = readFramebuffer ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
-  GLint bits = 0, type = GL_NONE;
+  GLint bits = 0, type = GL_NONE, stencil = 0, samples = 0;
   glGetFramebufferAttachmentParameteriv(
     GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
   glGetFramebufferAttachmentParameteriv(
     GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+  glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER,
+    readFramebuffer ? GL_STENCIL_ATTACHMENT : GL_STENCIL, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
+    &stencil);
+  glGetIntegerv(GL_SAMPLES, &samples);
+  if (stencil != 0 || samples > 1)
+  {
+    return -1; // a packed depth-stencil or multisampled source: no depth blit
+  }
   if (bits == 32 && type == GL_FLOAT)
   {
     return vtkFXRenderUtilities::Depth32F;
@@ -69,21 +77,31 @@ int vtkFXHDRTargetPass::MatchingDepthFormat()
   return -1;
 }
 
-void vtkFXHDRTargetPass::CopyIn(int x, int y, int width, int height, bool depth)
+void vtkFXHDRTargetPass::CopyIn(vtkOpenGLState* state, int x, int y, int width, int height, bool depth)
 {
   // The current read framebuffer is what the renderer drew into so far.
+  // Colour and depth blit separately: a refused depth blit must not cost
+  // the colour.
   this->FrameBuffer->Bind(GL_DRAW_FRAMEBUFFER);
-  GLbitfield mask = GL_COLOR_BUFFER_BIT;
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+  glBlitFramebuffer(
+    x, y, x + width, y + height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  bool copied = false;
   if (depth)
   {
-    mask |= GL_DEPTH_BUFFER_BIT;
+    glBlitFramebuffer(
+      x, y, x + width, y + height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    copied = glGetError() == GL_NO_ERROR;
   }
-  else
+  if (!copied)
   {
+    vtkOpenGLState::ScopedglDepthMask depthMask(state);
+    state->vtkglDepthMask(GL_TRUE); // glClearBuffer obeys the depth mask
     const GLfloat far = 1.0f;
     glClearBufferfv(GL_DEPTH, 0, &far);
   }
-  glBlitFramebuffer(x, y, x + width, y + height, 0, 0, width, height, mask, GL_NEAREST);
 }
 
 void vtkFXHDRTargetPass::WriteBack(vtkOpenGLRenderWindow* window)
@@ -163,7 +181,7 @@ void vtkFXHDRTargetPass::Render(const vtkRenderState* s)
     vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
     state->vtkglDisable(GL_SCISSOR_TEST);
     state->PushDrawFramebufferBinding();
-    this->CopyIn(viewport[0], viewport[1], width, height,
+    this->CopyIn(state, viewport[0], viewport[1], width, height,
       keepDepth && this->DepthFormat == MatchingDepthFormat());
     state->PopDrawFramebufferBinding();
   }

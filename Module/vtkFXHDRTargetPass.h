@@ -18,6 +18,12 @@
  * Cost: 12 bytes per pixel (colour 8, depth 4), a blit in and a full-screen
  * pass out; the depth is copied in only when the renderer keeps the depth of
  * the layers below (PreserveDepthBuffer, or Erase off), otherwise cleared.
+ *
+ * Limitations: the depth of the layers below is kept only when the window's
+ * depth buffer has no stencil and one sample (a warning says when it is
+ * not); the target covers the renderer's viewport from (0, 0), so a volume
+ * in a renderer whose viewport does not start at the window's corner is
+ * placed as VTK 9.1's own image-processing passes place it (wrongly).
  */
 #ifndef vtkFXHDRTargetPass_h
 #define vtkFXHDRTargetPass_h
@@ -32,6 +38,7 @@
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkOpenGLState;
 class vtkTextureObject;
 
 class VTKFX_EXPORT vtkFXHDRTargetPass : public vtkRenderPass
@@ -67,7 +74,7 @@ protected:
   ~vtkFXHDRTargetPass() override;
 
   int MatchingDepthFormat();
-  void CopyIn(int x, int y, int width, int height, bool depth);
+  void CopyIn(vtkOpenGLState* state, int x, int y, int width, int height, bool depth);
   void WriteBack(vtkOpenGLRenderWindow* window);
 
   vtkRenderPass* DelegatePass = nullptr;

@@ -271,8 +271,9 @@ bool vtkFXPipelinePass::ResolveInputs(size_t consumer, std::vector<Connection>& 
     }
     else if (!c.Optional || !producer.empty())
     {
-      // A misnamed optional input is still worth a word; an unconnected one
-      // is not.
+      // An optional input stays unbound without a word when it is not
+      // connected or its producer is not in the pipeline (a blur removed);
+      // a wrong output name of an existing producer is a mistake to report.
       if (!c.Optional || slot != this->Effects.end())
       {
         this->ScheduleProblems += "'" + name + "': " + problem + "\n";
@@ -304,6 +305,7 @@ std::vector<size_t> vtkFXPipelinePass::OrderEffects(const vtkFXSceneInfo& scene,
   // nothing changes; then order by stage and dependencies (Kahn's
   // algorithm, ties in the order added). Effects left over form a cycle.
   std::vector<size_t> order;
+  std::string problems; // lines found in this loop, each kept once
   for (bool changed = true; changed;)
   {
     changed = false;
@@ -321,7 +323,7 @@ std::vector<size_t> vtkFXPipelinePass::OrderEffects(const vtkFXSceneInfo& scene,
                                             : producerStage > stage;
         if (late && candidate[c.Producer])
         {
-          this->ScheduleProblems += "'" + this->Effects[i].Name + "': input '" + c.Input +
+          problems += "'" + this->Effects[i].Name + "': input '" + c.Input +
             "' reads '" + this->Effects[c.Producer].Name + "', which runs at the " +
             vtkFXEffectPass::GetStageName(producerStage) + " stage, after " +
             (c.ReadInComposite ? std::string("the composite")
@@ -336,6 +338,15 @@ std::vector<size_t> vtkFXPipelinePass::OrderEffects(const vtkFXSceneInfo& scene,
           break;
         }
       }
+      // An optional input from a later stage stays unbound: it would read
+      // the previous frame's output.
+      inputs[i].erase(std::remove_if(inputs[i].begin(), inputs[i].end(),
+                        [&](const Connection& c) {
+                          const int producerStage = this->Effects[c.Producer].Effect->GetStage();
+                          return c.ReadInComposite ? producerStage >= vtkFXEffectPass::Composite
+                                                   : producerStage > stage;
+                        }),
+        inputs[i].end());
     }
     if (changed)
     {
@@ -372,19 +383,36 @@ std::vector<size_t> vtkFXPipelinePass::OrderEffects(const vtkFXSceneInfo& scene,
         progress = true;
       }
     }
+    // Left unplaced: cycle members and what depends on them. Leave out the
+    // members (an effect that reaches itself through unplaced producers);
+    // the next round drops or unbinds their dependents.
     std::string cycle;
+    std::vector<size_t> members;
     for (size_t i = 0; i < n; ++i)
     {
-      if (candidate[i] && !placed[i])
+      if (candidate[i] && !placed[i] && this->ReachesItself(i, inputs, candidate, placed))
       {
         cycle += (cycle.empty() ? "'" : ", '") + this->Effects[i].Name + "'";
-        candidate[i] = false;
-        changed = true;
+        members.push_back(i);
       }
+    }
+    for (size_t i : members)
+    {
+      candidate[i] = false;
+      changed = true;
     }
     if (!cycle.empty())
     {
-      this->ScheduleProblems += "effects " + cycle + " read each other's outputs in a cycle\n";
+      problems += "effects " + cycle + " read each other's outputs in a cycle\n";
+    }
+  }
+  // Each line once, however many rounds found it.
+  std::istringstream lines(problems);
+  for (std::string line; std::getline(lines, line);)
+  {
+    if (this->ScheduleProblems.find(line + "\n") == std::string::npos)
+    {
+      this->ScheduleProblems += line + "\n";
     }
   }
   // Bind each input to its producer, or unbind it when that one is out.
@@ -404,6 +432,36 @@ std::vector<size_t> vtkFXPipelinePass::OrderEffects(const vtkFXSceneInfo& scene,
     }
   }
   return order;
+}
+
+bool vtkFXPipelinePass::ReachesItself(size_t start, const std::vector<std::vector<Connection>>& inputs,
+  const std::vector<bool>& candidate, const std::vector<bool>& placed) const
+{
+  // Depth-first through the render-time producers that are still unplaced.
+  std::vector<size_t> stack(1, start);
+  std::vector<bool> seen(candidate.size(), false);
+  while (!stack.empty())
+  {
+    const size_t i = stack.back();
+    stack.pop_back();
+    for (const Connection& c : inputs[i])
+    {
+      if (c.ReadInComposite || !candidate[c.Producer] || placed[c.Producer])
+      {
+        continue;
+      }
+      if (c.Producer == start)
+      {
+        return true;
+      }
+      if (!seen[c.Producer])
+      {
+        seen[c.Producer] = true;
+        stack.push_back(c.Producer);
+      }
+    }
+  }
+  return false;
 }
 
 void vtkFXPipelinePass::ActivateEffects(const std::vector<size_t>& order, vtkWindow* window)
@@ -447,6 +505,7 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
   {
     // Nothing opaque any more: keep no G-buffer memory around.
     this->GBufferPass->ReleaseGraphicsResources(window);
+    this->CompositePass->ReleaseGraphicsResources(window);
   }
   this->GBufferRan = deferred;
 
@@ -672,8 +731,11 @@ const char* vtkFXPipelinePass::GetPassThatRan(int i) const
 
 double vtkFXPipelinePass::GetPassMilliseconds(const char* name)
 {
-  const double outer = this->Sequence->GetPassMilliseconds(name);
-  return outer >= 0.0 ? outer : this->HDRSequence->GetPassMilliseconds(name);
+  // Ask the sequence that ran the pass in the last frame: a pass moves into
+  // the HDR target's sequence and back as post-process effects come and go.
+  const auto& inner = this->HDRSequence->GetPassesThatRan();
+  const bool insideTarget = name && std::find(inner.begin(), inner.end(), name) != inner.end();
+  return (insideTarget ? this->HDRSequence : this->Sequence)->GetPassMilliseconds(name);
 }
 
 int vtkFXPipelinePass::GetGBufferBytesPerPixel() const

@@ -193,6 +193,8 @@ protected:
   struct Connection; // an input resolved to a slot
   std::vector<size_t> OrderEffects(const vtkFXSceneInfo& scene, bool deferred);
   bool ResolveInputs(size_t consumer, std::vector<Connection>& connections);
+  bool ReachesItself(size_t start, const std::vector<std::vector<Connection>>& inputs,
+    const std::vector<bool>& candidate, const std::vector<bool>& placed) const;
   void ActivateEffects(const std::vector<size_t>& order, vtkWindow* window);
   void AddEffectPasses(vtkFXTimedSequencePass* sequence, const std::vector<size_t>& order, int stage);
 

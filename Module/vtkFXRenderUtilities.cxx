@@ -68,6 +68,15 @@ bool vtkFXRenderUtilities::EnsureTexture(vtkSmartPointer<vtkTextureObject>& text
   {
     return false;
   }
+  if (texture && texture->GetHandle() &&
+    static_cast<int>(texture->GetInternalFormat(info.VTKType, info.Components, false)) !=
+      info.InternalFormat)
+  {
+    // vtkTextureObject keeps its first internal format for depth textures:
+    // another format needs another object.
+    texture->ReleaseGraphicsResources(window);
+    texture = nullptr;
+  }
   if (!texture)
   {
     texture = vtkSmartPointer<vtkTextureObject>::New();

@@ -4,8 +4,9 @@
 //
 // Bilateral filtering after Tomasi and Manduchi (1998), guided by the
 // G-buffer instead of the image itself ("cross"/"joint" bilateral, Eisemann
-// and Durand 2004; upsampling: Kopf et al. 2007), as the seeds blur their
-// occlusion over 17 taps: a tap counts with a Gaussian of its distance times
+// and Durand 2004; upsampling: Kopf et al. 2007), as SSAO write-ups of the
+// time blur their occlusion (e.g. the SSAO article on gamerendering.com,
+// 2009, over 17 taps): a tap counts with a Gaussian of its distance times
 //   1 / (1 + ((d - d0) / (sigma d0))^2)   (depth relative to depth: the same
 //                                          at every scene scale; a Cauchy
 //                                          weight, as selective as a Gaussian

@@ -7,19 +7,21 @@
 // kernel of later practice): FX_SAMPLES points around the receiver p,
 //   q_i = p + R * l_i * (T x_i + B y_i + N z_i),
 // with directions (x_i, y_i, z_i) cosine-distributed around the normal and
-// lengths l_i = u^3, both after seed 000 (Vizerie 2009, from the Global
-// Illumination Compendium): "more sampling importance for the occluders that
+// lengths l_i = u^3, both after Vizerie's "Normal mapped screen space
+// diffuse occlusion" demo (2009), citing the Global Illumination Compendium: "more sampling importance for the occluders that
 // are close to the sampling location". A sample counts as occluded when the
 // surface seen through it lies in front of it. With solid occluders the
 // expectation over this distribution is the cosine-weighted obscurance
 //   A(p) = 1 - (1/pi) Int f(t(w)) cos(theta) dw,  f(t) = 1 - (t/R)^(1/3),
 // because P(l < t/R) = (t/R)^(1/3): the reference vtkfx-bench traces.
-// The kernel is rotated per pixel by a 4x4 tile of angles (seed 001's noise
-// texture), a range check fades out occluders more than R in front of the
-// receiver, and only surfaces in front of the receiver's tangent plane can
-// occlude (a surface never occludes itself, at any viewing angle). Positions come from linear depth and the per-pixel frustum
-// ray (seed 001), radii are world units, biases fractions of R: scaling the
-// scene changes nothing.
+// The kernel is rotated per pixel by a 4x4 tile of angles (the small tiled
+// rotation texture of Crytek's SSAO, Mittring 2007), a range check fades
+// out occluders more than R in front of the receiver, and only surfaces in
+// front of the receiver's tangent plane can occlude (a surface never
+// occludes itself, at any viewing angle). Positions come from linear depth
+// and the per-pixel frustum ray (the frustum-corner reconstruction of
+// deferred renderers, e.g. Mittring 2007), radii are world units, biases
+// fractions of R: scaling the scene changes nothing.
 
 // Texels are addressed through gl_FragCoord; texCoord is read once only so
 // that the quad's texture-coordinate attribute stays in the program

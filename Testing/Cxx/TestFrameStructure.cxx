@@ -381,6 +381,32 @@ int TestConnections()
   FX_CHECK(Contains(scene.Pipeline->GetScheduleProblems(), "in a cycle") && Log().empty(),
     "a cycle is reported and its effects left out: " << Log());
 
+  // Effects that read from a cycle are not part of it: an optional reader
+  // runs without its input, a required one is left out silently.
+  auto optionalReader = AddProbe(scene.Pipeline, "optional-reader", vtkFXEffectPass::AfterGBuffer,
+    false, "consumer.out");
+  AddProbe(scene.Pipeline, "required-reader", vtkFXEffectPass::AfterGBuffer, true, "consumer.out");
+  RunLog.clear();
+  scene.Centre();
+  std::cout << "readers of a cycle: " << Log() << " / " << scene.Pipeline->GetScheduleProblems();
+  FX_CHECK(Log() == "optional-reader", "only the optional reader runs: " << Log());
+  FX_CHECK(!Contains(scene.Pipeline->GetScheduleProblems(), "reader"),
+    "readers are not named as cycle members");
+  FX_CHECK(!optionalReader->GetInputProducer("in"), "its input is unbound");
+  scene.Pipeline->RemoveEffect("required-reader");
+
+  // An optional input from a later stage: reported, and left unbound.
+  producer->SetInputConnection("in", "");
+  optionalReader->SetInputConnection("in", "producer.out");
+  producer->SetStage(vtkFXEffectPass::PostProcess);
+  RunLog.clear();
+  scene.Centre();
+  FX_CHECK(Contains(scene.Pipeline->GetScheduleProblems(), "'optional-reader': input 'in'") &&
+      !optionalReader->GetInputProducer("in") && Contains(Log(), "optional-reader"),
+    "a late optional input is reported and unbound: " << Log());
+  producer->SetStage(vtkFXEffectPass::AfterGBuffer);
+  scene.Pipeline->RemoveEffect("optional-reader");
+
   // Fixed: nothing to report, both run again.
   producer->SetInputConnection("in", "");
   RunLog.clear();
