@@ -167,16 +167,6 @@ public:
 };
 vtkStandardNewMacro(HalveProbe);
 
-std::string Passes(vtkFXPipelinePass* pipeline)
-{
-  std::string list;
-  for (int i = 0; i < pipeline->GetNumberOfPassesThatRan(); ++i)
-  {
-    list += (i ? "," : "") + std::string(pipeline->GetPassThatRan(i));
-  }
-  return list;
-}
-
 std::string Log()
 {
   std::string list;
@@ -285,10 +275,10 @@ int TestStages()
   scene.Pipeline->AddEffect("hooks", hooks);
   RunLog.clear();
   scene.Centre();
-  std::cout << "opaque only: " << Passes(scene.Pipeline) << std::endl;
-  FX_CHECK(Passes(scene.Pipeline) == "lights,gbuffer,ag,hdr-target,composite,pp",
+  std::cout << "opaque only: " << vtkFXTest::Passes(scene.Pipeline) << std::endl;
+  FX_CHECK(vtkFXTest::Passes(scene.Pipeline) == "lights,gbuffer,ag,hdr-target,composite,pp",
     "light-space needs translucent props; composite-stage effects have no pass: "
-      << Passes(scene.Pipeline));
+      << vtkFXTest::Passes(scene.Pipeline));
   FX_CHECK(scene.Pipeline->GetCompositePass()->GetNumberOfContributors() == 3,
     "every effect that ran contributes to the composite");
 
@@ -298,9 +288,9 @@ int TestStages()
   scene.Renderer->AddActor(glass);
   RunLog.clear();
   scene.Centre();
-  std::cout << "opaque and translucent: " << Passes(scene.Pipeline) << std::endl;
-  FX_CHECK(Passes(scene.Pipeline) == "lights,ls,gbuffer,ag,hdr-target,composite,translucent,pp",
-    Passes(scene.Pipeline));
+  std::cout << "opaque and translucent: " << vtkFXTest::Passes(scene.Pipeline) << std::endl;
+  FX_CHECK(vtkFXTest::Passes(scene.Pipeline) == "lights,ls,gbuffer,ag,hdr-target,composite,translucent,pp",
+    vtkFXTest::Passes(scene.Pipeline));
   FX_CHECK(Log() == "ls,ag,pp", Log());
 
   // Translucent only: no G-buffer, no composite, but light-space effects
@@ -308,8 +298,8 @@ int TestStages()
   scene.Renderer->RemoveActor(scene.Actor);
   RunLog.clear();
   scene.Centre();
-  std::cout << "translucent only: " << Passes(scene.Pipeline) << std::endl;
-  FX_CHECK(Passes(scene.Pipeline) == "lights,ls,translucent", Passes(scene.Pipeline));
+  std::cout << "translucent only: " << vtkFXTest::Passes(scene.Pipeline) << std::endl;
+  FX_CHECK(vtkFXTest::Passes(scene.Pipeline) == "lights,ls,translucent", vtkFXTest::Passes(scene.Pipeline));
   FX_CHECK(scene.Pipeline->GetGBufferBytesPerPixel() == 0, "no G-buffer");
   FX_CHECK(scene.Pipeline->GetLastSceneInfo().TranslucentProps.size() == 1 &&
       scene.Pipeline->GetLastSceneInfo().Lights.size() == 1,
@@ -596,7 +586,7 @@ int TestLayers()
     const double psnr = vtkFXScenes::PSNR(reference, deferred, hdr ? nullptr : background);
     const int diff = vtkFXScenes::MaxDifference(reference, deferred);
     std::cout << "layers" << (hdr ? " through the HDR target (halved)" : "") << ": PSNR " << psnr
-              << " dB, largest difference " << diff << "; top: " << Passes(pipelineTop) << std::endl;
+              << " dB, largest difference " << diff << "; top: " << vtkFXTest::vtkFXTest::Passes(pipelineTop) << std::endl;
     FX_CHECK(psnr >= 50.0 && diff <= 2, "layered renderers match VTK");
   }
   FX_CHECK(halve->SawFrameBuffer && pipelineTop->GetHDRTargetPass()->GetColorTexture() &&

@@ -42,16 +42,6 @@ public:
 };
 vtkStandardNewMacro(DepthProbe);
 
-std::string Passes(vtkFXPipelinePass* pipeline)
-{
-  std::string list;
-  for (int i = 0; i < pipeline->GetNumberOfPassesThatRan(); ++i)
-  {
-    list += (i ? "," : "") + std::string(pipeline->GetPassThatRan(i));
-  }
-  return list;
-}
-
 std::string Channels(unsigned int mask)
 {
   std::string list;
@@ -79,9 +69,9 @@ int TestPipelineScheduling(int, char*[])
   vtkFXScenes::Populate(renderer, vtkFXScenes::DataDirectory() + "/fandisk.obj",
     vtkFXScenes::Options(), error);
   window->Render();
-  std::cout << "fandisk: " << Passes(pipeline) << " [" << Channels(pipeline->GetGBufferChannels())
+  std::cout << "fandisk: " << vtkFXTest::Passes(pipeline) << " [" << Channels(pipeline->GetGBufferChannels())
             << "] " << pipeline->GetGBufferBytesPerPixel() << " B/px" << std::endl;
-  FX_CHECK(Passes(pipeline) == "lights,gbuffer,composite", Passes(pipeline));
+  FX_CHECK(vtkFXTest::Passes(pipeline) == "lights,gbuffer,composite", vtkFXTest::Passes(pipeline));
   FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "albedo,normal",
     Channels(pipeline->GetGBufferChannels()));
   FX_CHECK(pipeline->GetGBufferBytesPerPixel() == 12, "RG16F + RGBA8 + depth32F");
@@ -91,17 +81,17 @@ int TestPipelineScheduling(int, char*[])
   vtkNew<DepthProbe> probe;
   pipeline->AddEffect("probe", probe);
   window->Render();
-  FX_CHECK(Passes(pipeline) == "lights,gbuffer,probe,composite", Passes(pipeline));
+  FX_CHECK(vtkFXTest::Passes(pipeline) == "lights,gbuffer,probe,composite", vtkFXTest::Passes(pipeline));
   FX_CHECK(probe->Runs == 1 && probe->SawDepth, "the effect ran and saw the depth channel");
   FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "albedo,normal,depth",
     Channels(pipeline->GetGBufferChannels()));
   probe->SetStage(vtkFXEffectPass::PostProcess);
   window->Render();
-  FX_CHECK(Passes(pipeline) == "lights,gbuffer,hdr-target,composite,probe", Passes(pipeline));
+  FX_CHECK(vtkFXTest::Passes(pipeline) == "lights,gbuffer,hdr-target,composite,probe", vtkFXTest::Passes(pipeline));
   FX_CHECK(pipeline->GetHDRTargetBytesPerPixel() > 0, "a post-process effect gets the HDR target");
   probe->EnabledOff();
   window->Render();
-  FX_CHECK(Passes(pipeline) == "lights,gbuffer,composite", Passes(pipeline));
+  FX_CHECK(vtkFXTest::Passes(pipeline) == "lights,gbuffer,composite", vtkFXTest::Passes(pipeline));
   FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "albedo,normal",
     "a disabled effect's channel is released: " << Channels(pipeline->GetGBufferChannels()));
   FX_CHECK(probe->Runs == 2, "a disabled effect does not run");
@@ -115,11 +105,11 @@ int TestPipelineScheduling(int, char*[])
   renderer->RemoveAllViewProps();
   vtkFXScenes::Populate(renderer, "scene:mixed", vtkFXScenes::Options(), error);
   window->Render();
-  std::cout << "mixed: " << Passes(pipeline) << " [" << Channels(pipeline->GetGBufferChannels())
+  std::cout << "mixed: " << vtkFXTest::Passes(pipeline) << " [" << Channels(pipeline->GetGBufferChannels())
             << "] " << pipeline->GetGBufferBytesPerPixel() << " B/px" << std::endl;
-  FX_CHECK(Passes(pipeline) ==
+  FX_CHECK(vtkFXTest::Passes(pipeline) ==
       "lights,gbuffer,probe,composite,forward-opaque,translucent,overlay",
-    Passes(pipeline));
+    vtkFXTest::Passes(pipeline));
   FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "albedo,normal,depth,specular,ambient",
     Channels(pipeline->GetGBufferChannels()));
   FX_CHECK(pipeline->GetGBufferBytesPerPixel() == 24, "five 4-byte channels + depth");
@@ -144,10 +134,10 @@ int TestPipelineScheduling(int, char*[])
   renderer->AddActor(glass);
   renderer->ResetCamera();
   window->Render();
-  std::cout << "translucent only: " << Passes(pipeline) << ", "
+  std::cout << "translucent only: " << vtkFXTest::Passes(pipeline) << ", "
             << pipeline->GetGBufferBytesPerPixel() << " B/px" << std::endl;
   const int runs = probe->Runs;
-  FX_CHECK(Passes(pipeline) == "lights,translucent", Passes(pipeline));
+  FX_CHECK(vtkFXTest::Passes(pipeline) == "lights,translucent", vtkFXTest::Passes(pipeline));
   FX_CHECK(probe->Runs == runs, "effects that read the G-buffer do not run without it");
   FX_CHECK(pipeline->GetGBufferBytesPerPixel() == 0, "no G-buffer");
   FX_CHECK(!pipeline->GetGBufferPass()->GetDepthTexture() &&
@@ -161,7 +151,7 @@ int TestPipelineScheduling(int, char*[])
   text->SetInput("2D only");
   renderer->AddViewProp(text);
   window->Render();
-  FX_CHECK(Passes(pipeline) == "lights,forward-opaque,overlay", Passes(pipeline));
+  FX_CHECK(vtkFXTest::Passes(pipeline) == "lights,forward-opaque,overlay", vtkFXTest::Passes(pipeline));
   FX_CHECK(pipeline->GetGBufferBytesPerPixel() == 0, "no G-buffer for 2D props");
 
   // A scalar bar next to a diffuse mesh does not add material channels.
@@ -174,7 +164,7 @@ int TestPipelineScheduling(int, char*[])
   // An empty renderer: only the lights.
   renderer->RemoveAllViewProps();
   window->Render();
-  FX_CHECK(Passes(pipeline) == "lights", Passes(pipeline));
+  FX_CHECK(vtkFXTest::Passes(pipeline) == "lights", vtkFXTest::Passes(pipeline));
   pipeline->RemoveEffect("probe");
   FX_CHECK(pipeline->GetNumberOfEffects() == 0, "effect removed");
   return EXIT_SUCCESS;

@@ -4,6 +4,7 @@
 
 #include "vtkCameraPass.h"
 #include "vtkFXGBufferPass.h"
+#include "vtkFXPipelinePass.h"
 #include "vtkLightsPass.h"
 #include "vtkNew.h"
 #include "vtkOpaquePass.h"
@@ -65,6 +66,17 @@ inline vtkFXGBufferPass* InstallGBufferAlone(vtkRenderer* renderer)
   cameraPass->SetDelegatePass(sequence);
   renderer->SetPass(cameraPass);
   return gbuffer;
+}
+
+// The passes that ran in the pipeline's last frame, comma-separated.
+inline std::string Passes(vtkFXPipelinePass* pipeline)
+{
+  std::string list;
+  for (int i = 0; i < pipeline->GetNumberOfPassesThatRan(); ++i)
+  {
+    list += (i ? "," : "") + std::string(pipeline->GetPassThatRan(i));
+  }
+  return list;
 }
 
 // Angle in radians between two unit vectors.
