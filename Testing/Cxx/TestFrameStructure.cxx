@@ -586,7 +586,7 @@ int TestLayers()
     const double psnr = vtkFXScenes::PSNR(reference, deferred, hdr ? nullptr : background);
     const int diff = vtkFXScenes::MaxDifference(reference, deferred);
     std::cout << "layers" << (hdr ? " through the HDR target (halved)" : "") << ": PSNR " << psnr
-              << " dB, largest difference " << diff << "; top: " << vtkFXTest::vtkFXTest::Passes(pipelineTop) << std::endl;
+              << " dB, largest difference " << diff << "; top: " << vtkFXTest::Passes(pipelineTop) << std::endl;
     FX_CHECK(psnr >= 50.0 && diff <= 2, "layered renderers match VTK");
   }
   FX_CHECK(halve->SawFrameBuffer && pipelineTop->GetHDRTargetPass()->GetColorTexture() &&
