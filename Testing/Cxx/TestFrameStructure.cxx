@@ -42,6 +42,7 @@
 #include "vtk_glew.h"
 
 #include <memory>
+#include <sstream>
 
 namespace
 {
@@ -406,6 +407,12 @@ int TestConnections()
     Log());
   FX_CHECK(scene.Pipeline->GetEffect("consumer")->GetInputProducer("in") == producer,
     "the input is bound to its producer");
+  std::ostringstream printed;
+  scene.Pipeline->Print(printed);
+  FX_CHECK(Contains(printed.str(), "consumer: Consumer, after-gbuffer stage, enabled, ran") &&
+      Contains(printed.str(), "input in <- producer.out") &&
+      Contains(printed.str(), "ScheduleProblems: none"),
+    "PrintSelf shows the effects, their inputs and the problems:\n" << printed.str());
   return EXIT_SUCCESS;
 }
 
