@@ -23,6 +23,7 @@ struct Options
   bool SizeGiven = false;
   int Frames = 15;
   std::string Out;
+  int Falloff = 0; // ao: vtkFXSSAOPass::Falloff (0 Binary, 1 CubeRoot)
 };
 
 double Median(std::vector<double> v);

@@ -1,22 +1,28 @@
-// vtkfx-bench ao: ambient occlusion error against run time.
+// vtkfx-bench ao: ambient occlusion error and detail against run time.
 //
 // For each scene, every method renders the scene with an ambient-only
 // material (so the image is the visibility term) in a window of its own;
 // frames are interleaved across the windows so all methods see the same
 // machine load. The occlusion a method shows is its image divided by the
 // unoccluded image (per pixel, brightest channel), compared with the
-// ray-traced reference of vtkFXReferenceAO (same radius, same falloff) over
-// the pixels where the reference sees a surface.
-// Methods: no occlusion; vtkFX SSAO at 8/16/32 samples, full and half
-// resolution, with its blur (and once without); vtkFX's horizon-based
-// variant (GTAO) at 8 and 16 depth fetches; VTK's vtkSSAOPass at kernel
-// sizes 16/32/64/128, with and without its blur. All use the radius
-// 0.1 x the diagonal of the data's bounds. The AO part of the time is the
-// median frame time minus that of the same renderer without occlusion.
-// Writes DIR/ao.csv (scene, method, setting, ms, rmse, psnr), a plot of PSNR
-// against milliseconds per scene (DIR/ao-SCENE.png, VTK's charts) and an
-// image strip per scene (DIR/ao-strip-SCENE.png: reference, vtkFX default,
-// best vtkSSAOPass, no occlusion).
+// ray-traced reference of vtkFXReferenceAO (same radius, same falloff:
+// --falloff binary, the default, or cuberoot) over the pixels where the
+// reference sees a surface: RMSE, PSNR, and the detail score
+// (vtkFXScenes::DetailScore: correlation of the fine bands, 1 = every
+// crease kept).
+// Methods: no occlusion; vtkFX's default first (vtkFXPipelinePass's
+// Medium preset for the falloff), then its hemisphere and horizon (GTAO)
+// estimators at several sample counts, half and full resolution, blur
+// radii 4, 2 and none, with and without the depth-aware upsample; VTK's
+// vtkSSAOPass at kernel sizes 16/32/64/128, with and without its blur. All
+// use the radius 0.1 x the diagonal of the data's bounds. The AO part of the
+// time is the median frame time minus that of the same renderer without
+// occlusion.
+// Writes DIR/ao.csv (scene, method, setting, ms, rmse, psnr, detail), per
+// scene a plot of PSNR against milliseconds (DIR/ao-SCENE.png) and of the
+// detail score against milliseconds (DIR/ao-detail-SCENE.png), every point
+// labelled with its setting, and an image strip (DIR/ao-strip-SCENE.png:
+// reference, vtkFX default, best vtkSSAOPass, no occlusion).
 #include "vtkFXBench.h"
 #include "vtkFXBilateralBlurPass.h"
 #include "vtkFXPipelinePass.h"
@@ -45,6 +51,8 @@
 #include "vtkRenderer.h"
 #include "vtkSSAOPass.h"
 #include "vtkTable.h"
+#include "vtkTextActor.h"
+#include "vtkTextProperty.h"
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -76,11 +84,13 @@ struct Method
   int Method = 0; // vtkFXSSAOPass::Method
   bool HalfResolution = true;
   bool Blur = true;
+  int BlurRadius = 4;
+  bool Upsample = false; // depth-aware upsample by the blur (else the composite's bilinear)
   vtkSmartPointer<vtkRenderWindow> Window;
   vtkSmartPointer<vtkRenderer> Renderer;
   std::vector<double> FrameMs;
   std::vector<float> Occlusion; // per pixel, -1 where the reference has no surface
-  double Ms = 0.0, RMSE = 0.0, PSNR = 0.0;
+  double Ms = 0.0, RMSE = 0.0, PSNR = 0.0, Detail = 0.0;
 };
 
 std::vector<Method> MakeMethods()
@@ -88,37 +98,48 @@ std::vector<Method> MakeMethods()
   std::vector<Method> methods;
   methods.push_back({ Kind::VTKForward, "no-ao", "vtk forward" });
   methods.push_back({ Kind::FXPlain, "vtkfx-plain", "no occlusion" });
-  // vtkFX's default (vtkFXSSAOPass's sample count, half resolution, blur),
-  // then other sample counts, full resolution, and no blur.
-  vtkNew<vtkFXSSAOPass> defaults;
-  const int standard = defaults->GetNumberOfSamples();
-  auto fx = [&methods](int samples, bool half, bool blur) {
-    Method m{ Kind::FX, "vtkfx-ssao" };
+  // vtkFX's default first (whatever vtkFXSSAOPass and the pipeline's blur
+  // default to), then the candidates: hemisphere and horizon estimators,
+  // half and full resolution, wide, narrow and no blur, a few sample counts.
+  vtkNew<vtkFXPipelinePass> defaults;
+  vtkFXSSAOPass* ssao = defaults->GetSSAOPass();
+  auto fx = [&methods](int method, int samples, bool half, int blurRadius, bool upsample = false) {
+    Method m{ Kind::FX, method == vtkFXSSAOPass::Horizon ? "vtkfx-gtao" : "vtkfx-ssao" };
+    m.Method = method;
     m.Samples = samples;
     m.HalfResolution = half;
-    m.Blur = blur;
-    m.Setting = std::to_string(samples) + (half ? " half" : " full") + (blur ? " blur" : " noblur");
+    m.Blur = blurRadius > 0;
+    m.BlurRadius = std::max(1, blurRadius);
+    m.Upsample = half && blurRadius > 0 && upsample;
+    m.Setting = std::to_string(samples) + (half ? " half" : " full") +
+      (blurRadius > 0 ? " blur" + std::to_string(blurRadius) : " noblur") + (m.Upsample ? " up" : "");
+    for (const auto& other : methods)
+    {
+      if (other.Name == m.Name && other.Setting == m.Setting)
+      {
+        return; // the default is one of the candidates
+      }
+    }
     methods.push_back(m);
   };
-  fx(standard, true, true);
+  fx(ssao->GetMethod(), ssao->GetNumberOfSamples(), ssao->GetHalfResolution(),
+    defaults->GetOcclusionBlurPass()->GetEnabled() ? defaults->GetOcclusionBlurPass()->GetRadius()
+                                                    : 0);
+  // The presets of both falloffs, and neighbours of the default.
   for (int samples : { 8, 16, 32 })
   {
-    if (samples != standard)
-    {
-      fx(samples, true, true);
-    }
+    fx(vtkFXSSAOPass::Hemisphere, samples, true, 4);
   }
-  fx(standard, false, true);
-  fx(standard, true, false);
-  // The horizon-based estimator (GTAO) at the same fetch budgets.
-  for (int samples : { 8, 16 })
+  fx(vtkFXSSAOPass::Hemisphere, 8, false, 4);
+  fx(vtkFXSSAOPass::Hemisphere, 8, true, 0);
+  for (int samples : { 8, 16, 32 })
   {
-    Method m{ Kind::FX, "vtkfx-gtao" };
-    m.Samples = samples;
-    m.Method = vtkFXSSAOPass::Horizon;
-    m.Setting = std::to_string(samples) + " half blur";
-    methods.push_back(m);
+    fx(vtkFXSSAOPass::Horizon, samples, true, 4);
   }
+  fx(vtkFXSSAOPass::Horizon, 16, true, 2);
+  fx(vtkFXSSAOPass::Horizon, 16, true, 2, true);
+  fx(vtkFXSSAOPass::Horizon, 8, false, 2);
+  fx(vtkFXSSAOPass::Horizon, 16, false, 2);
   for (int kernel : { 16, 32, 64, 128 })
   {
     for (bool blur : { false, true })
@@ -159,7 +180,7 @@ void UseAmbientOnlyMaterials(vtkRenderer* renderer)
   }
 }
 
-void Install(Method& m, double radius)
+void Install(Method& m, double radius, int falloff)
 {
   switch (m.Type)
   {
@@ -176,7 +197,10 @@ void Install(Method& m, double radius)
         pipeline->GetSSAOPass()->SetNumberOfSamples(m.Samples);
         pipeline->GetSSAOPass()->SetHalfResolution(m.HalfResolution);
         pipeline->GetSSAOPass()->SetMethod(m.Method);
+        pipeline->GetSSAOPass()->SetFalloff(falloff);
         pipeline->GetOcclusionBlurPass()->SetEnabled(m.Blur);
+        pipeline->GetOcclusionBlurPass()->SetRadius(m.BlurRadius);
+        pipeline->GetOcclusionBlurPass()->SetUpsample(m.Upsample);
       }
       m.Renderer->SetPass(pipeline);
       break;
@@ -275,55 +299,96 @@ void WriteStrip(const std::vector<const std::vector<float>*>& images, int w, int
   WritePNG(strip, path);
 }
 
-void WritePlot(const std::vector<Method>& methods, const std::string& title, const std::string& path)
+// One figure per scene and measure: `value` of each vtkFX and VTK method
+// against its AO milliseconds, every point labelled with its setting.
+void WritePlot(const std::vector<Method>& methods, const std::string& title,
+  const std::string& yTitle, double (*value)(const Method&), const std::string& path)
 {
+  const int width = 900, height = 600;
   vtkNew<vtkContextView> view;
   view->GetRenderWindow()->SetOffScreenRendering(1);
-  view->GetRenderWindow()->SetSize(640, 480);
+  view->GetRenderWindow()->SetSize(width, height);
   view->GetRenderer()->SetBackground(1, 1, 1);
   vtkNew<vtkChartXY> chart;
   view->GetScene()->AddItem(chart);
   chart->SetTitle(title);
   chart->SetShowLegend(true);
   chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("AO time (ms per frame)");
-  chart->GetAxis(vtkAxis::LEFT)->SetTitle("PSNR against ray-traced AO (dB)");
+  chart->GetAxis(vtkAxis::LEFT)->SetTitle(yTitle);
   const struct
   {
     Kind Type;
     const char* Label;
     unsigned char R, G, B;
     int Marker;
-  } families[] = { { Kind::FX, "vtkFX SSAO", 200, 60, 30, vtkPlotPoints::CIRCLE },
+  } families[] = { { Kind::FX, "vtkFX", 200, 60, 30, vtkPlotPoints::CIRCLE },
     { Kind::VTK, "VTK vtkSSAOPass", 30, 80, 200, vtkPlotPoints::SQUARE } };
   for (const auto& family : families)
   {
     vtkNew<vtkTable> table;
-    vtkNew<vtkFloatArray> ms, psnr;
+    vtkNew<vtkFloatArray> ms, y;
     ms->SetName("ms");
-    psnr->SetName(family.Label);
+    y->SetName(family.Label);
     for (const auto& m : methods)
     {
       if (m.Type == family.Type)
       {
         ms->InsertNextValue(static_cast<float>(std::max(0.0, m.Ms)));
-        psnr->InsertNextValue(static_cast<float>(m.PSNR));
+        y->InsertNextValue(static_cast<float>(value(m)));
       }
     }
     table->AddColumn(ms);
-    table->AddColumn(psnr);
+    table->AddColumn(y);
     vtkPlot* points = chart->AddPlot(vtkChart::POINTS);
     points->SetInputData(table, 0, 1);
     points->SetColor(family.R, family.G, family.B, 255);
     vtkPlotPoints::SafeDownCast(points)->SetMarkerStyle(family.Marker);
-    vtkPlotPoints::SafeDownCast(points)->SetMarkerSize(10);
+    vtkPlotPoints::SafeDownCast(points)->SetMarkerSize(8);
+  }
+  view->GetRenderWindow()->Render();
+  // Labels: each point's setting beside it, placed from the axes' ranges
+  // and screen positions of the rendered chart.
+  vtkAxis* xAxis = chart->GetAxis(vtkAxis::BOTTOM);
+  vtkAxis* yAxis = chart->GetAxis(vtkAxis::LEFT);
+  const float* x0 = xAxis->GetPoint1();
+  const float* x1 = xAxis->GetPoint2();
+  const float* y0 = yAxis->GetPoint1();
+  const float* y1 = yAxis->GetPoint2();
+  for (const auto& m : methods)
+  {
+    if (m.Type != Kind::FX && m.Type != Kind::VTK)
+    {
+      continue;
+    }
+    const double fx = (std::max(0.0, m.Ms) - xAxis->GetMinimum()) /
+      std::max(1e-9, xAxis->GetMaximum() - xAxis->GetMinimum());
+    const double fy =
+      (value(m) - yAxis->GetMinimum()) / std::max(1e-9, yAxis->GetMaximum() - yAxis->GetMinimum());
+    vtkNew<vtkTextActor> label;
+    label->SetInput(((m.Type == Kind::VTK ? "vtk " : m.Method ? "gtao " : "hemi ") + m.Setting).c_str());
+    label->GetTextProperty()->SetFontSize(11);
+    label->GetTextProperty()->SetColor(m.Type == Kind::VTK ? 0.1 : 0.7, 0.25, m.Type == Kind::VTK ? 0.75 : 0.1);
+    label->SetDisplayPosition(static_cast<int>(x0[0] + fx * (x1[0] - x0[0])) + 6,
+      static_cast<int>(y0[1] + fy * (y1[1] - y0[1])) - 4);
+    view->GetRenderer()->AddActor2D(label);
   }
   view->GetRenderWindow()->Render();
   vtkNew<vtkImageData> image;
   std::vector<unsigned char> pixels = vtkFXScenes::Capture(view->GetRenderWindow());
-  image->SetDimensions(640, 480, 1);
+  image->SetDimensions(width, height, 1);
   image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
   std::copy(pixels.begin(), pixels.end(), static_cast<unsigned char*>(image->GetScalarPointer()));
   WritePNG(image, path);
+}
+
+double PSNROf(const Method& m)
+{
+  return m.PSNR;
+}
+
+double DetailOf(const Method& m)
+{
+  return m.Detail;
 }
 }
 
@@ -339,7 +404,8 @@ int BenchAO(const Options& o)
     std::cerr << "vtkfx-bench: cannot write into " << o.Out << "\n";
     return 1;
   }
-  csv << "scene,method,setting,ms,rmse,psnr\n";
+  csv << "scene,method,setting,ms,rmse,psnr,detail\n";
+  const char* falloffName = o.Falloff == 0 ? "binary" : "cuberoot";
   std::vector<Method> methods = MakeMethods();
   for (auto& m : methods)
   {
@@ -368,7 +434,7 @@ int BenchAO(const Options& o)
         (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
     for (auto& m : methods)
     {
-      Install(m, radius);
+      Install(m, radius, o.Falloff);
       m.Window->Render(); // warm-up: shaders, buffers
     }
 
@@ -380,9 +446,11 @@ int BenchAO(const Options& o)
       std::cerr << "\nvtkfx-bench: " << error << "\n";
       return 1;
     }
-    const auto truth = reference.Trace(methods[0].Renderer, o.Width, o.Height, radius, rays);
+    const auto truth =
+      reference.Trace(methods[0].Renderer, o.Width, o.Height, radius, rays, o.Falloff);
     std::cerr << " " << truth.Seconds << " s\n";
-    notes << input << ": " << rays << " stratified cosine-weighted rays per pixel, radius "
+    notes << input << ": " << falloffName << " falloff, " << rays
+          << " stratified cosine-weighted rays per pixel, radius "
           << radius << ", " << truth.CoveredPixels << " pixels; standard error bound of the reference "
           << "(RMS over pixels) " << truth.StandardErrorRMS << "; " << truth.Seconds << " s\n";
 
@@ -417,6 +485,7 @@ int BenchAO(const Options& o)
         m.Occlusion = OcclusionOf(vtkFXScenes::Capture(m.Window), base, truth.Occlusion);
       }
       Compare(m.Occlusion, truth.Occlusion, m.RMSE, m.PSNR);
+      m.Detail = vtkFXScenes::DetailScore(m.Occlusion, truth.Occlusion, o.Width, o.Height);
       const double frame = Median(m.FrameMs);
       m.Ms = m.Type == Kind::VTK ? frame - vtkBase : m.Type == Kind::FX ? frame - fxBase : 0.0;
       if (m.Type == Kind::FXPlain)
@@ -424,12 +493,12 @@ int BenchAO(const Options& o)
         continue; // same image as no-ao
       }
       csv << input << "," << m.Name << "," << m.Setting << "," << m.Ms << "," << m.RMSE << ","
-          << m.PSNR << "\n";
+          << m.PSNR << "," << m.Detail << "\n";
       std::cout << std::fixed << std::setprecision(2) << FileTag(input) << "  " << std::setw(12)
                 << m.Name << "  " << std::setw(16) << m.Setting << "  AO " << std::setw(7) << m.Ms
                 << " ms  frame/plain VTK " << std::setw(5) << frame / vtkBase << "  RMSE "
                 << std::setprecision(4) << m.RMSE << "  PSNR " << std::setprecision(2) << m.PSNR
-                << " dB\n";
+                << " dB  detail " << std::setprecision(3) << m.Detail << "\n";
       if (m.Type == Kind::VTK && (!bestVTK || m.PSNR > bestVTK->PSNR))
       {
         bestVTK = &m;
@@ -441,7 +510,10 @@ int BenchAO(const Options& o)
     }
     std::cout << std::flush;
     const std::string tag = FileTag(input);
-    WritePlot(methods, tag + ": AO error against time", o.Out + "/ao-" + tag + ".png");
+    WritePlot(methods, tag + ": AO error against time (" + falloffName + " falloff)",
+      "PSNR against ray-traced AO (dB)", PSNROf, o.Out + "/ao-" + tag + ".png");
+    WritePlot(methods, tag + ": AO detail against time (" + falloffName + " falloff)",
+      "detail score (fine-band correlation)", DetailOf, o.Out + "/ao-detail-" + tag + ".png");
     if (bestVTK && fxDefault)
     {
       WriteStrip({ &truth.Occlusion, &fxDefault->Occlusion, &bestVTK->Occlusion,

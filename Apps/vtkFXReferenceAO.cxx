@@ -322,7 +322,8 @@ bool Intersect(RTCScene scene, const double o[3], const double d[3], double tnea
 }
 
 vtkFXReferenceAO::Result vtkFXReferenceAO::Trace(
-  vtkRenderer* renderer, int width, int height, double radius, int raysPerPixel, int threads) const
+  vtkRenderer* renderer, int width, int height, double radius, int raysPerPixel, int falloff,
+  int threads) const
 {
   Result result;
   result.Width = width;
@@ -396,7 +397,8 @@ vtkFXReferenceAO::Result vtkFXReferenceAO::Trace(
           double f = 0.0;
           if (Intersect(scene, start, w, 0.0, radius, hitT, hitN))
           {
-            f = 1.0 - std::cbrt(std::min(1.0, std::max(0.0, hitT / radius)));
+            f = falloff == Binary ? 1.0
+                                  : 1.0 - std::cbrt(std::min(1.0, std::max(0.0, hitT / radius)));
           }
           sum += f;
           sum2 += f * f;

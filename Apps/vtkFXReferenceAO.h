@@ -7,9 +7,9 @@
 // RaysPerPixel cosine-distributed rays (stratified on a square grid, jittered
 // by a per-pixel hash: deterministic) look for the nearest hit within the
 // radius R. The occlusion of a ray that hits at distance t is
-//   f(t) = 1 - (t / R)^(1/3),
-// the falloff whose expectation vtkFXSSAOPass's sample lengths u^3 estimate,
-// and the pixel's value is 1 - mean f. Pixels whose primary ray misses hold
+//   Binary:   f(t) = 1 (any hit within R: OSPRay's aoDistance, Blender), or
+//   CubeRoot: f(t) = 1 - (t / R)^(1/3) (what sample lengths u^3 estimate),
+// as vtkFXSSAOPass::Falloff chooses, and the pixel's value is 1 - mean f. Pixels whose primary ray misses hold
 // -1 (no surface).
 //
 // Geometry: triangles of every visible vtkActor whose mapper is a
@@ -54,10 +54,16 @@ public:
 
   /**
    * Traces the renderer's current view at width x height pixels with the
-   * given radius (world units) and rays per pixel (rounded up to a square).
+   * given radius (world units), rays per pixel (rounded up to a square) and
+   * falloff (Binary or CubeRoot).
    */
+  enum Falloff
+  {
+    Binary = 0, // the values of vtkFXSSAOPass::Falloff
+    CubeRoot
+  };
   Result Trace(vtkRenderer* renderer, int width, int height, double radius, int raysPerPixel,
-    int threads = 2) const;
+    int falloff = Binary, int threads = 2) const;
 
   /**
    * World-space ray through the centre of pixel (x, y) of a width x height

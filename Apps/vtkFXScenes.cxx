@@ -695,6 +695,127 @@ double vtkFXScenes::PSNR(const std::vector<unsigned char>& a,
   return 10.0 * std::log10(255.0 * 255.0 * count / sum);
 }
 
+namespace
+{
+// Gaussian blur (sigma in pixels) of `values` over the pixels where `mask`
+// is set, normalised by the blurred mask: background never leaks in.
+std::vector<double> MaskedGaussian(const std::vector<double>& values,
+  const std::vector<char>& mask, int width, int height, double sigma)
+{
+  const int radius = static_cast<int>(std::ceil(3.0 * sigma));
+  std::vector<double> kernel(2 * radius + 1);
+  for (int k = -radius; k <= radius; ++k)
+  {
+    kernel[k + radius] = std::exp(-0.5 * k * k / (sigma * sigma));
+  }
+  const size_t n = values.size();
+  std::vector<double> v(n), m(n), tv(n), tm(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    m[i] = mask[i] ? 1.0 : 0.0;
+    v[i] = mask[i] ? values[i] : 0.0;
+  }
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    for (int y = 0; y < height; ++y)
+    {
+      for (int x = 0; x < width; ++x)
+      {
+        double sv = 0.0, sm = 0.0;
+        for (int k = -radius; k <= radius; ++k)
+        {
+          const int xx = pass == 0 ? x + k : x;
+          const int yy = pass == 0 ? y : y + k;
+          if (xx < 0 || yy < 0 || xx >= width || yy >= height)
+          {
+            continue;
+          }
+          const size_t j = static_cast<size_t>(yy) * width + xx;
+          sv += kernel[k + radius] * v[j];
+          sm += kernel[k + radius] * m[j];
+        }
+        const size_t i = static_cast<size_t>(y) * width + x;
+        tv[i] = sv;
+        tm[i] = sm;
+      }
+    }
+    v.swap(tv);
+    m.swap(tm);
+  }
+  std::vector<double> blurred(n, 0.0);
+  for (size_t i = 0; i < n; ++i)
+  {
+    blurred[i] = m[i] > 1e-12 ? v[i] / m[i] : 0.0;
+  }
+  return blurred;
+}
+}
+
+double vtkFXScenes::DetailScore(const std::vector<float>& image,
+  const std::vector<float>& reference, int width, int height)
+{
+  const size_t n = static_cast<size_t>(width) * height;
+  if (image.size() != n || reference.size() != n)
+  {
+    return 0.0;
+  }
+  std::vector<char> geometry(n);
+  std::vector<double> a(n), b(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    geometry[i] = reference[i] >= 0.0f;
+    a[i] = image[i];
+    b[i] = reference[i];
+  }
+  const auto blurA = MaskedGaussian(a, geometry, width, height, 3.0);
+  const auto blurB = MaskedGaussian(b, geometry, width, height, 3.0);
+  // Pixels at least 8 from the background and from the border.
+  const int reach = 8;
+  double sa = 0.0, sb = 0.0, saa = 0.0, sbb = 0.0, sab = 0.0;
+  size_t count = 0;
+  for (int y = reach; y < height - reach; ++y)
+  {
+    for (int x = reach; x < width - reach; ++x)
+    {
+      bool inside = true;
+      for (int dy = -reach; dy <= reach && inside; ++dy)
+      {
+        for (int dx = -reach; dx <= reach && inside; ++dx)
+        {
+          inside = dx * dx + dy * dy >= reach * reach ||
+            geometry[static_cast<size_t>(y + dy) * width + (x + dx)];
+        }
+      }
+      if (!inside)
+      {
+        continue;
+      }
+      const size_t i = static_cast<size_t>(y) * width + x;
+      const double fa = a[i] - blurA[i], fb = b[i] - blurB[i];
+      sa += fa;
+      sb += fb;
+      saa += fa * fa;
+      sbb += fb * fb;
+      sab += fa * fb;
+      ++count;
+    }
+  }
+  if (count < 2)
+  {
+    return 0.0;
+  }
+  const double varA = saa / count - (sa / count) * (sa / count);
+  const double varB = sbb / count - (sb / count) * (sb / count);
+  const double cov = sab / count - (sa / count) * (sb / count);
+  // A fine band without variance carries no structure (a flat image, or
+  // one whose detail the blur took): no detail kept.
+  if (varA <= 1e-12 || varB <= 1e-12)
+  {
+    return 0.0;
+  }
+  return cov / std::sqrt(varA * varB);
+}
+
 int vtkFXScenes::MaxDifference(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
 {
   int largest = 0;

@@ -52,6 +52,19 @@ double PSNR(const std::vector<unsigned char>& a, const std::vector<unsigned char
   const unsigned char* background = nullptr);
 
 /**
+ * How much of the reference's fine structure an image keeps (AO detail
+ * score): both images (one value per pixel, rows bottom-up; the
+ * reference's negative values mark background) are split at a Gaussian of
+ * sigma 3 pixels, blurred over the geometry pixels only (normalised
+ * convolution); the score is the correlation of the two fine bands (image
+ * minus its blur) over the geometry pixels at least 8 pixels from the
+ * background and from the image's border. 1: every crease kept (up to
+ * scale); 0: none (or a fine band without variance); negative: inverted.
+ */
+double DetailScore(const std::vector<float>& image, const std::vector<float>& reference,
+  int width, int height);
+
+/**
  * Largest difference of one channel between two RGB 8-bit images.
  */
 int MaxDifference(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b);

@@ -110,11 +110,14 @@ int BenchPipeline(const Options& o)
 
 void Usage(std::ostream& os)
 {
-  os << "usage: vtkfx-bench pipeline|ao [INPUT ...] [--size WxH] [--frames N] --out DIR\n"
+  os << "usage: vtkfx-bench pipeline|ao [INPUT ...] [--size WxH] [--frames N]\n"
+        "                   [--falloff binary|cuberoot] --out DIR\n"
         "pipeline: vtkFX without effects against VTK's forward render (default: every\n"
         "          built-in scene, the bunny and the fandisk, 1280x720)\n"
         "ao:       ambient occlusion against a ray-traced reference, vtkFX's and VTK's\n"
-        "          (default: scene:corner, bunny, fandisk, 1crn.pdb, 640x480)\n";
+        "          (default: scene:corner, bunny, fandisk, 1crn.pdb, 640x480), with\n"
+        "          visibility within R (--falloff binary, the default) or the\n"
+        "          near-weighted 1 - (t/R)^(1/3) (--falloff cuberoot)\n";
 }
 }
 
@@ -126,6 +129,16 @@ int main(int argc, char* argv[])
     const std::string a = argv[i];
     if (a == "--out" && i + 1 < argc)
       o.Out = argv[++i];
+    else if (a == "--falloff" && i + 1 < argc)
+    {
+      const std::string f = argv[++i];
+      if (f != "binary" && f != "cuberoot")
+      {
+        std::cerr << "vtkfx-bench: bad --falloff '" << f << "' (binary or cuberoot)\n";
+        return 2;
+      }
+      o.Falloff = f == "binary" ? 0 : 1;
+    }
     else if (a == "--frames" && i + 1 < argc)
       o.Frames = std::max(1, std::atoi(argv[++i]));
     else if (a == "--size" && i + 1 < argc)

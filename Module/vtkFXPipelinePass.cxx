@@ -172,6 +172,7 @@ vtkFXPipelinePass::vtkFXPipelinePass()
   // 1280x720 that saves a full-resolution pass, and the depth-aware upsample
   // measured no better against the ray-traced reference (vtkfx-bench ao).
   this->OcclusionBlurPass->UpsampleOff();
+  this->ApplyAmbientOcclusionPreset();
 
   this->GBufferPass->SetDelegatePass(this->OpaquePass);
   this->CompositePass->SetGBuffer(this->GBufferPass);
@@ -599,6 +600,63 @@ void vtkFXPipelinePass::SetAmbientOcclusion(bool enabled)
   this->Modified();
 }
 
+void vtkFXPipelinePass::SetAmbientOcclusionQuality(int quality)
+{
+  if (quality < Low || quality > High)
+  {
+    vtkErrorMacro("Ambient occlusion quality " << quality
+                                               << " is not Low (0), Medium (1) or High (2); "
+                                                  "keeping "
+                                               << this->AmbientOcclusionQuality << ".");
+    return;
+  }
+  this->AmbientOcclusionQuality = quality;
+  this->ApplyAmbientOcclusionPreset();
+  this->Modified();
+}
+
+void vtkFXPipelinePass::SetAmbientOcclusionFalloff(int falloff)
+{
+  if (falloff != vtkFXSSAOPass::Binary && falloff != vtkFXSSAOPass::CubeRoot)
+  {
+    vtkErrorMacro("Ambient occlusion falloff " << falloff
+                                               << " is not Binary (0) or CubeRoot (1); keeping "
+                                               << this->SSAOPass->GetFalloff() << ".");
+    return;
+  }
+  this->SSAOPass->SetFalloff(falloff);
+  this->ApplyAmbientOcclusionPreset();
+  this->Modified();
+}
+
+int vtkFXPipelinePass::GetAmbientOcclusionFalloff()
+{
+  return this->SSAOPass->GetFalloff();
+}
+
+void vtkFXPipelinePass::ApplyAmbientOcclusionPreset()
+{
+  // The settings vtkfx-bench ao measured best per definition (see the header).
+  struct Preset
+  {
+    int Method, Samples;
+    bool Half;
+    int BlurRadius;
+  };
+  using S = vtkFXSSAOPass;
+  static const Preset presets[2][3] = {
+    { { S::Hemisphere, 8, true, 4 }, { S::Horizon, 16, true, 4 }, { S::Horizon, 16, false, 2 } },
+    { { S::Hemisphere, 8, true, 4 }, { S::Horizon, 8, true, 4 }, { S::Hemisphere, 16, true, 4 } },
+  };
+  const Preset& p = presets[this->SSAOPass->GetFalloff() == S::CubeRoot ? 1 : 0]
+                           [this->AmbientOcclusionQuality];
+  this->SSAOPass->SetMethod(p.Method);
+  this->SSAOPass->SetNumberOfSamples(p.Samples);
+  this->SSAOPass->SetHalfResolution(p.Half);
+  this->OcclusionBlurPass->SetRadius(p.BlurRadius);
+  this->OcclusionBlurPass->EnabledOn();
+}
+
 vtkFXSSAOPass* vtkFXPipelinePass::GetSSAOPass()
 {
   return this->SSAOPass;
@@ -776,6 +834,7 @@ void vtkFXPipelinePass::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DebugChannel: " << this->DebugChannel << "\n";
   os << indent << "AmbientOcclusion: " << this->AmbientOcclusion << "\n";
+  os << indent << "AmbientOcclusionQuality: " << this->AmbientOcclusionQuality << "\n";
   os << indent << "Effects: " << this->Effects.size() << "\n";
   for (const EffectSlot& slot : this->Effects)
   {

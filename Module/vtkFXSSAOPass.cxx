@@ -148,7 +148,7 @@ double vtkFXSSAOPass::ComputeRadius(vtkRenderer* ren) const
 void vtkFXSSAOPass::SetHemisphereKernel(vtkShaderProgram* program) const
 {
   // Vizerie's (2009) distribution: cosine-weighted directions (z = sqrt(r2))
-  // and lengths u^3. Azimuths are stratified over [0, 2 pi); r2 and u follow
+  // and lengths u^3 (CubeRoot falloff), or 1 (Binary: every sample at R). Azimuths are stratified over [0, 2 pi); r2 and u follow
   // radical-inverse sequences (bases 2 and 3).
   const int n = this->NumberOfSamples;
   std::vector<float> kernel(4 * n);
@@ -161,7 +161,7 @@ void vtkFXSSAOPass::SetHemisphereKernel(vtkShaderProgram* program) const
     kernel[4 * i + 0] = static_cast<float>(std::cos(phi) * std::sqrt(1.0 - r2));
     kernel[4 * i + 1] = static_cast<float>(std::sin(phi) * std::sqrt(1.0 - r2));
     kernel[4 * i + 2] = static_cast<float>(std::sqrt(r2));
-    kernel[4 * i + 3] = static_cast<float>(u * u * u);
+    kernel[4 * i + 3] = static_cast<float>(this->Falloff == CubeRoot ? u * u * u : 1.0);
   }
   program->SetUniform4fv("fxKernel", n, reinterpret_cast<const float(*)[4]>(kernel.data()));
 }
@@ -210,7 +210,8 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   std::ostringstream defines;
   const int slices = 2;
   defines << "//VTK::System::Dec\n#define FX_SAMPLES " << this->NumberOfSamples
-          << "\n#define FX_METHOD " << this->Method << "\n#define FX_SLICES " << slices
+          << "\n#define FX_METHOD " << this->Method << "\n#define FX_FALLOFF " << this->Falloff
+          << "\n#define FX_SLICES " << slices
           << "\n#define FX_STEPS " << std::max(1, this->NumberOfSamples / (2 * slices)) << "\n";
   std::string fs = vtkFXSSAOFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str(), false);
@@ -267,6 +268,7 @@ void vtkFXSSAOPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RadiusFraction: " << this->RadiusFraction << "\n";
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
   os << indent << "Method: " << (this->Method == Hemisphere ? "Hemisphere" : "Horizon") << "\n";
+  os << indent << "Falloff: " << (this->Falloff == Binary ? "Binary" : "CubeRoot") << "\n";
   os << indent << "Bias: " << this->Bias << "\n";
   os << indent << "HalfResolution: " << this->HalfResolution << "\n";
 }

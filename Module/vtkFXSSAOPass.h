@@ -9,14 +9,16 @@
  * full or half resolution. In the composite it scales the ambient
  * visibility by its occlusion, or, when its optional input "denoised" is
  * connected to an effect that ran (the blur of its output), by that one.
- * Normal-oriented hemisphere of NumberOfSamples points, cosine-distributed
- * with lengths u^3 (Vizerie 2009, "Normal mapped screen space diffuse
- * occlusion" demo),
- * rotated per pixel by a 4x4 tile, with a range check: with solid occluders
- * its expectation over that distribution is the cosine-weighted obscurance
- * with falloff 1 - (t/R)^(1/3) (see vtkFXSSAOFS.glsl) that vtkfx-bench's
- * ray-traced reference computes; the fixed low-discrepancy set (only the
- * azimuth is rotated per pixel) approximates that expectation.
+ * What it estimates (Falloff): the cosine-weighted visibility within the
+ * radius R, a ray hitting anything before R counting as blocked (Binary,
+ * default: the ray-traced AO users know from OSPRay, ParaView and Blender),
+ * or with hits weighted by 1 - (t/R)^(1/3) (CubeRoot, after Vizerie's 2009
+ * demo). Two estimators (Method): horizon-based integration (GTAO,
+ * default), exact for a height field, and a normal-oriented hemisphere of
+ * NumberOfSamples points, cosine-distributed, at distance R (Binary) or at
+ * lengths u^3 R (CubeRoot), unbiased for a height field. Both are rotated
+ * per pixel by a 4x4 tile; vtkfx-bench's ray-traced reference computes the
+ * same definition.
  *
  * Radius is in world units; 0 (default) means 0.1 x the diagonal of the
  * visible props' bounds, so any dataset scale works unchanged. Bias is a
@@ -63,9 +65,9 @@ public:
   vtkGetMacro(RadiusFraction, double);
 
   /**
-   * Samples per pixel (1..64, default 8: with the blur, within 1.5 dB of 32
-   * samples against the ray-traced reference on the bench scenes, at about
-   * a third of the cost; see vtkfx-bench ao).
+   * Depth fetches per pixel (1..64, default 16, vtkFXPipelinePass's Medium
+   * preset for the Binary falloff). Hemisphere: one per sample point;
+   * Horizon: 2 slices with NumberOfSamples / 4 steps on each side.
    */
   vtkSetClampMacro(NumberOfSamples, int, 1, 64);
   vtkGetMacro(NumberOfSamples, int);
@@ -77,6 +79,28 @@ public:
   vtkSetClampMacro(Bias, double, 0.0, 0.5);
   vtkGetMacro(Bias, double);
 
+  enum Falloff
+  {
+    Binary = 0, // visibility within R: OSPRay's aoDistance, Blender's AO distance
+    CubeRoot    // near-weighted 1 - (t/R)^(1/3) (Vizerie 2009)
+  };
+
+  /**
+   * Which occlusion the estimator targets (default Binary). A ray from the
+   * surface that hits something at distance t < R occludes
+   * - Binary: fully (the ray-traced ambient occlusion users know: OSPRay's
+   *   aoDistance, ParaView's ray tracing, Blender's AO distance);
+   * - CubeRoot: by 1 - (t/R)^(1/3), nearer hits counting more (the
+   *   "sampling importance for close occluders" of Vizerie's demo).
+   * The visibility is the cosine-weighted mean over the hemisphere of one
+   * minus that. Hemisphere sampling places its samples at distance R
+   * (Binary) or at lengths u^3 R (CubeRoot), unbiased for a height field;
+   * Horizon fades horizons over the last 10% (Binary) or 61.5% (CubeRoot)
+   * of R. vtkfx-bench's ray-traced reference traces the same definition.
+   */
+  vtkSetClampMacro(Falloff, int, Binary, CubeRoot);
+  vtkGetMacro(Falloff, int);
+
   enum Method
   {
     Hemisphere = 0, // normal-oriented hemisphere samples (Vizerie 2009)
@@ -84,19 +108,22 @@ public:
   };
 
   /**
-   * Estimator (default Hemisphere). Horizon spends the same
-   * NumberOfSamples depth fetches on 2 screen-space slices with
-   * NumberOfSamples / 4 steps on each side of the pixel. Measured with
-   * vtkfx-bench ao at 8 fetches, half resolution, blurred: 0.6 to 2.2 dB
-   * closer to the ray-traced reference than Hemisphere on the bunny, the
-   * fandisk, scene:corner and 1crn, at a similar cost; but its falloff is
-   * not the reference's (it fades horizons from 0.385 R to R), its crease
-   * reads 0.63 instead of 0.5, two slices per pixel leave a tilted open
-   * plane at 0.93 to 1 after the blur, and more steps (16 fetches) move it
-   * away from the reference (its falloff darkens more), so it is not the
-   * default. Its raw
-   * per-pixel values are unclamped (they exceed 1 on tilted open surfaces
-   * and average to the visibility over the noise tile).
+   * Estimator (default Horizon). Measured with vtkfx-bench ao (640x480, half
+   * resolution, blur radius 4, against the ray-traced reference of the same
+   * falloff; see vtkFXPipelinePass::SetAmbientOcclusionQuality):
+   * - Binary: Horizon with 16 fetches is 2.5 to 3.1 dB ahead of the best
+   *   vtkSSAOPass setting on the bench scenes; Hemisphere with 8 (samples at
+   *   distance R) is the cheapest, but behind on the fandisk and 1crn.
+   * - CubeRoot: Horizon with 8 fetches is within 0.1 dB of Hemisphere or
+   *   ahead (up to 2.2 dB); more horizon steps move away from this
+   *   definition (they find higher horizons, which its falloff discounts).
+   * Horizon's raw per-pixel values are unclamped (they exceed 1 on tilted
+   * open surfaces and average to the visibility over the noise tile): blur
+   * it, and the composite clamps the result; after the blur an open plane
+   * reads 0.93 or more. On the crease of a floor and a wall (TestSSAO), the
+   * Binary horizon estimate is within 0.05 of the exact visibility in
+   * every band of distance (biased open), the Hemisphere estimate within
+   * 0.022.
    */
   vtkSetClampMacro(Method, int, Hemisphere, Horizon);
   vtkGetMacro(Method, int);
@@ -132,8 +159,9 @@ protected:
 
   double Radius = 0.0;
   double RadiusFraction = 0.1;
-  int NumberOfSamples = 8;
-  int Method = Hemisphere;
+  int NumberOfSamples = 16;
+  int Method = Horizon;
+  int Falloff = Binary;
   double Bias = 0.02;
   bool HalfResolution = true;
   double EffectiveRadius = 0.0;

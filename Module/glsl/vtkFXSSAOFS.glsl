@@ -7,13 +7,18 @@
 // kernel of later practice): FX_SAMPLES points around the receiver p,
 //   q_i = p + R * l_i * (T x_i + B y_i + N z_i),
 // with directions (x_i, y_i, z_i) cosine-distributed around the normal and
-// lengths l_i = u^3, both after Vizerie's "Normal mapped screen space
-// diffuse occlusion" demo (2009), citing the Global Illumination Compendium: "more sampling importance for the occluders that
+// lengths l_i = u^3 (FX_FALLOFF 1), both after Vizerie's "Normal mapped
+// screen space diffuse occlusion" demo (2009), citing the Global
+// Illumination Compendium: "more sampling importance for the occluders that
 // are close to the sampling location". A sample counts as occluded when the
 // surface seen through it lies in front of it. With solid occluders the
 // expectation over this distribution is the cosine-weighted obscurance
 //   A(p) = 1 - (1/pi) Int f(t(w)) cos(theta) dw,  f(t) = 1 - (t/R)^(1/3),
 // because P(l < t/R) = (t/R)^(1/3): the reference vtkfx-bench traces.
+// With FX_FALLOFF 0 (visibility within R, the ray-traced AO of OSPRay,
+// ParaView and Blender), f(t) = 1 for t < R: every l_i = 1, a sample at
+// distance R, which (for a height field) is hidden exactly when its ray hit
+// something before R.
 // The kernel is rotated per pixel by a 4x4 tile of angles (the small tiled
 // rotation texture of Crytek's SSAO, Mittring 2007), a range check fades
 // out occluders more than R in front of the receiver, and only surfaces in
@@ -134,11 +139,24 @@ float fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec2 rotation
   // Texels per world unit at this depth, along x.
   float worldPerNdc = length(fxRayOrigin[1] + depth * fxRayDirection[1]);
   float radiusTexels = clamp(fxRadius / worldPerNdc * 0.5 * float(fxGBufferSize.x), 1.0, 512.0);
-  float falloffRange = 0.615 * fxRadius;
+  // Horizons fade out over the last part of R: XeGTAO's 61.5% for the
+  // near-weighted falloff; for visibility within R (FX_FALLOFF 0) a step at
+  // R, as the definition says (a 10% fade biased the crease of TestSSAO
+  // bright by up to 0.08, the step by 0.036; it also measured 0.5 to 1.3 dB
+  // closer to the ray-traced reference on three of the four bench scenes).
+  float falloffRange = (FX_FALLOFF == 0 ? 0.001 : 0.615) * fxRadius;
   float falloffMul = -1.0 / falloffRange;
   float falloffAdd = (fxRadius - falloffRange) / falloffRange + 1.0;
   // The tile's rotation, within one stratum of 2 pi / FX_SAMPLES, as [0, 1).
   float jitter = fract(atan(rotation.y, rotation.x) * float(FX_SAMPLES) / (2.0 * fxPi));
+  // The steps' own offset over a whole step, from the tile entry's low
+  // bits: each offset meets four slice rotations in the 4x4 tile, so the
+  // blur averages step positions as well as directions (an offset tied to
+  // the rotation, or spread over half a step only, drew arcs at the step
+  // distances around raised objects). Shifted by half a step and clamped
+  // to R, so that the last step still reaches R (short of it, creases
+  // read too open).
+  float stepJitter = fract(jitter * 4.0);
   float visibility = 0.0;
   for (int slice = 0; slice < FX_SLICES; ++slice)
   {
@@ -156,7 +174,7 @@ float fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec2 rotation
     for (int step = 0; step < FX_STEPS; ++step)
     {
       // Quadratic spacing: more samples near the pixel, as in XeGTAO.
-      float s = (float(step) + 0.5 + 0.5 * jitter) / float(FX_STEPS);
+      float s = min(1.0, (float(step) + 0.5 + stepJitter) / float(FX_STEPS));
       vec2 offset = direction.xy * (s * s * radiusTexels);
       for (int side = 0; side < 2; ++side)
       {

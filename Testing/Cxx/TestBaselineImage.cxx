@@ -6,6 +6,7 @@
 // (the occlusion view after it) and "ssao-lit" (the lit image with it).
 //   TestBaselineImage INPUT lit|CHANNEL|ssao-raw|ssao-blur|ssao-lit -V baseline.png -T outdir
 #include "vtkFXBilateralBlurPass.h"
+#include "vtkFXSSAOPass.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
@@ -27,9 +28,14 @@ int TestBaselineImage(int argc, char* argv[])
   vtkNew<vtkFXPipelinePass> pipeline;
   if (view.rfind("ssao-", 0) == 0)
   {
+    // ssao-raw|blur|lit[-cuberoot]: the default preset of the falloff.
     pipeline->AmbientOcclusionOn();
-    pipeline->GetOcclusionBlurPass()->SetEnabled(view != "ssao-raw");
-    pipeline->GetCompositePass()->SetDebugOcclusion(view != "ssao-lit");
+    if (view.find("-cuberoot") != std::string::npos)
+    {
+      pipeline->SetAmbientOcclusionFalloff(vtkFXSSAOPass::CubeRoot);
+    }
+    pipeline->GetOcclusionBlurPass()->SetEnabled(view.rfind("ssao-raw", 0) != 0);
+    pipeline->GetCompositePass()->SetDebugOcclusion(view.rfind("ssao-lit", 0) != 0);
   }
   else if (view != "lit")
   {

@@ -37,6 +37,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
 #include "vtkShaderProgram.h"
 #include "vtkSphereSource.h"
 #include "vtk_glew.h"
@@ -48,6 +49,17 @@ namespace
 {
 using GB = vtkFXGBufferPass;
 std::vector<std::string> RunLog; // names of the probes, in the order they rendered
+
+// One window serves every part of the test: a new X connection per window
+// can exhaust a virtual X server's clients. Each part gets it cleared.
+vtkRenderWindow* SharedWindow = nullptr;
+vtkSmartPointer<vtkRenderWindow> FreshWindow(int width, int height)
+{
+  SharedWindow->GetRenderers()->RemoveAllItems();
+  SharedWindow->SetNumberOfLayers(1);
+  SharedWindow->SetSize(width, height);
+  return SharedWindow;
+}
 
 // An effect with an output "out" and an input "in" (optional for a Probe,
 // required for a Consumer), unconnected until a test connects it. It
@@ -204,7 +216,7 @@ struct FlatScene
   vtkSmartPointer<vtkActor> Actor;
   explicit FlatScene(double grey)
   {
-    this->Window = vtkFXTest::MakeWindow(64, 48);
+    this->Window = FreshWindow(64, 48);
     this->Window->AddRenderer(this->Renderer);
     this->Plane->SetOrigin(-10, -10, 0);
     this->Plane->SetPoint1(10, -10, 0);
@@ -489,7 +501,7 @@ int TestHooks()
 // the light texture must give VTK's forward image.
 int TestManyLights()
 {
-  auto window = vtkFXTest::MakeWindow(400, 300);
+  auto window = FreshWindow(400, 300);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
   std::string error;
@@ -543,7 +555,7 @@ int TestManyLights()
 // its centre. VTK keeps the half of the sphere in front of the plane.
 int TestLayers()
 {
-  auto window = vtkFXTest::MakeWindow(400, 300);
+  auto window = FreshWindow(400, 300);
   window->SetNumberOfLayers(2);
   vtkNew<vtkRenderer> bottom, top;
   top->SetLayer(1);
@@ -647,6 +659,8 @@ int TestEmission()
 
 int TestFrameStructure(int, char*[])
 {
+  auto window = vtkFXTest::MakeWindow(400, 300);
+  SharedWindow = window;
   for (auto test : { TestStages, TestConnections, TestHooks, TestManyLights, TestLayers, TestEmission })
   {
     if (test() != EXIT_SUCCESS)

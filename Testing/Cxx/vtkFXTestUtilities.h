@@ -86,12 +86,22 @@ inline double Angle(const double a[3], const double b[3])
   return std::acos(std::min(1.0, std::max(-1.0, cosine)));
 }
 
-// Ambient occlusion, as vtkFX defines it, of a point on a floor at distance h
-// from an infinite perpendicular wall: a cosine-distributed ray w hits the
-// wall at t = h / w.x (w.x > 0); with the falloff f(t) = 1 - (t/R)^(1/3),
-//   A(h) = 1 - (1/pi) Int_{w.x > 0, t < R} f(t) cos(theta) dw,
-// by the midpoint rule on (theta, phi). A(0) = 1/2: the wall takes half of
-// the cosine-weighted hemisphere.
+// Ambient occlusion of a point on a floor at distance h from an infinite
+// perpendicular wall: a cosine-distributed ray w hits the wall at
+// t = h / w.x (w.x > 0), and
+//   A(h) = 1 - (1/pi) Int_{w.x > 0, t < R} f(t) cos(theta) dw.
+// Binary falloff (f = 1): the cosine-weighted directions project uniformly
+// onto the unit disk (Malley), so A is one minus the disk's segment beyond
+// x = a = h/R over pi: A(h) = 1 - (acos a - a sqrt(1 - a^2)) / pi.
+// Cube-root falloff f(t) = 1 - (t/R)^(1/3): midpoint rule on (theta, phi).
+// Both give A(0) = 1/2: the wall takes half of the cosine-weighted
+// hemisphere.
+inline double CreaseOcclusionBinary(double h, double R)
+{
+  const double a = std::min(1.0, std::max(0.0, h / R));
+  return 1.0 - (std::acos(a) - a * std::sqrt(1.0 - a * a)) / 3.14159265358979323846;
+}
+
 inline double CreaseOcclusion(double h, double R)
 {
   const int n = 600;
