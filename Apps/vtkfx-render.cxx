@@ -4,9 +4,12 @@
 //   vtkfx-render INPUT [--size WxH] [--effects none|LIST] [--plain-vtk]
 //                [--frames N] [--out FILE.png] [--stats FILE.json]
 //                [--debug-channel NAME] [--no-ground]
+//                [--ao-radius R | --ao-radius-fraction F]
+//                [--ao-quality low|medium|high] [--ao-falloff binary|cuberoot]
 #include "vtkFXScenes.h"
 
 #include "vtkFXBilateralBlurPass.h"
+#include "vtkFXSSAOPass.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
@@ -19,6 +22,7 @@
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -41,6 +45,11 @@ struct Arguments
   std::string Stats;
   std::string DebugChannel;
   bool Ground = true;
+  double AORadius = 0.0;         // world units; 0: from the fraction
+  double AORadiusFraction = 0.0; // of the visible bounds' diagonal; 0: the default
+  int AOQuality = vtkFXPipelinePass::Medium;
+  int AOFalloff = vtkFXSSAOPass::Binary;
+  bool AOOptions = false; // any --ao-* option given
 };
 
 // Effects the pipeline knows: "ssao" (screen-space ambient occlusion) and
@@ -53,7 +62,8 @@ void Usage(std::ostream& os)
         "                    [--frames N] [--out FILE.png] [--stats FILE.json]\n"
         "                    [--debug-channel normal|depth|albedo|specular|ambient|emission|\n"
         "                                     occlusion]\n"
-        "                    [--no-ground]\n"
+        "                    [--no-ground] [--ao-radius R | --ao-radius-fraction F]\n"
+        "                    [--ao-quality low|medium|high] [--ao-falloff binary|cuberoot]\n"
         "INPUT: a .obj, .ply, .stl, .vtp, .vtk or .pdb file, or one of:";
   for (const auto& name : vtkFXScenes::BuiltInSceneNames())
   {
@@ -90,6 +100,26 @@ bool ParseInt(const std::string& text, int lo, int hi, int& value)
   }
   value = static_cast<int>(v);
   return true;
+}
+
+// A finite number in (0, hi].
+bool ParsePositive(const std::string& text, double hi, double& value)
+{
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v) || v <= 0.0 || v > hi)
+  {
+    return false;
+  }
+  value = v;
+  return true;
+}
+
+// The index of `text` among `names`, or -1.
+int IndexOf(const std::string& text, const std::vector<std::string>& names)
+{
+  const auto it = std::find(names.begin(), names.end(), text);
+  return it == names.end() ? -1 : static_cast<int>(it - names.begin());
 }
 
 bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
@@ -141,6 +171,37 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
         }
         args.Effects.push_back(name);
       }
+    }
+    else if (a == "--ao-radius" || a == "--ao-radius-fraction")
+    {
+      const bool fraction = a == "--ao-radius-fraction";
+      if (!value(v) ||
+        !ParsePositive(v, fraction ? 10.0 : 1e300, fraction ? args.AORadiusFraction : args.AORadius))
+      {
+        error = "bad " + a + " '" + v + "' (expected a number > 0" +
+          (fraction ? std::string(", at most 10: a fraction of the data's diagonal)")
+                    : std::string(", in world units)"));
+        return false;
+      }
+      args.AOOptions = true;
+    }
+    else if (a == "--ao-quality")
+    {
+      if (!value(v) || (args.AOQuality = IndexOf(v, { "low", "medium", "high" })) < 0)
+      {
+        error = "bad --ao-quality '" + v + "' (low, medium or high)";
+        return false;
+      }
+      args.AOOptions = true;
+    }
+    else if (a == "--ao-falloff")
+    {
+      if (!value(v) || (args.AOFalloff = IndexOf(v, { "binary", "cuberoot" })) < 0)
+      {
+        error = "bad --ao-falloff '" + v + "' (binary: visibility within the radius, or cuberoot)";
+        return false;
+      }
+      args.AOOptions = true;
     }
     else if (a == "--plain-vtk")
       args.PlainVTK = true;
@@ -199,6 +260,16 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
   if (has("blur") && !has("ssao"))
   {
     error = "effect 'blur' blurs an occlusion effect: use --effects ssao,blur";
+    return false;
+  }
+  if (args.AORadius > 0.0 && args.AORadiusFraction > 0.0)
+  {
+    error = "give --ao-radius (world units) or --ao-radius-fraction, not both";
+    return false;
+  }
+  if (args.AOOptions && !has("ssao"))
+  {
+    error = "--ao-* options set the ambient occlusion: add --effects ssao,blur";
     return false;
   }
   if (args.DebugChannel == "occlusion" && !has("ssao"))
@@ -271,6 +342,16 @@ int main(int argc, char* argv[])
       return std::find(args.Effects.begin(), args.Effects.end(), e) != args.Effects.end();
     };
     pipeline->SetAmbientOcclusion(has("ssao"));
+    pipeline->SetAmbientOcclusionQuality(args.AOQuality);
+    pipeline->SetAmbientOcclusionFalloff(args.AOFalloff); // applies the preset
+    if (args.AORadius > 0.0)
+    {
+      pipeline->GetSSAOPass()->SetRadius(args.AORadius);
+    }
+    if (args.AORadiusFraction > 0.0)
+    {
+      pipeline->GetSSAOPass()->SetRadiusFraction(args.AORadiusFraction);
+    }
     pipeline->GetOcclusionBlurPass()->SetEnabled(has("blur"));
     if (args.DebugChannel == "occlusion")
     {
@@ -338,6 +419,21 @@ int main(int argc, char* argv[])
     std::cout << ", G-buffer " << pipeline->GetGBufferBytesPerPixel() << " bytes/pixel";
   }
   std::cout << "\n";
+  if (!args.PlainVTK && pipeline->GetAmbientOcclusion())
+  {
+    vtkFXSSAOPass* ssao = pipeline->GetSSAOPass();
+    vtkFXBilateralBlurPass* blur = pipeline->GetOcclusionBlurPass();
+    static const char* const qualities[] = { "low", "medium", "high" };
+    std::cout << "ambient occlusion: " << qualities[pipeline->GetAmbientOcclusionQuality()]
+              << ", " << (ssao->GetFalloff() == vtkFXSSAOPass::Binary ? "binary" : "cuberoot")
+              << " falloff, radius " << ssao->GetEffectiveRadius() << ", "
+              << (ssao->GetMethod() == vtkFXSSAOPass::Horizon ? "horizon" : "hemisphere") << " "
+              << ssao->GetNumberOfSamples() << " samples, "
+              << (ssao->GetHalfResolution() ? "half" : "full") << " resolution, "
+              << (blur->GetEnabled() ? "blur radius " + std::to_string(blur->GetRadius())
+                                     : std::string("no blur"))
+              << "\n";
+  }
 
   if (!args.Stats.empty())
   {

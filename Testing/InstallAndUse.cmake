@@ -18,7 +18,7 @@ run("${CMAKE_COMMAND}" --build "${WORK}/example")
 set(ENV{LD_LIBRARY_PATH} "${prefix}/lib")
 run("${WORK}/example/vtkfx-example" "${MESH}" "${WORK}/example.png")
 message("${last_output}")
-if (NOT last_output MATCHES "passes: lights gbuffer composite")
+if (NOT last_output MATCHES "passes: lights gbuffer ssao ssao-blur composite")
   message(FATAL_ERROR "the installed pipeline did not run its deferred passes")
 endif ()
 # The installed Python package imports from the prefix alone.

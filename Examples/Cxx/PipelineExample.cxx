@@ -1,8 +1,10 @@
 // A VTK application that renders a mesh through vtkFX: the only vtkFX line
-// is renderer->SetPass(pipeline).
+// needed is renderer->SetPass(pipeline); the ambient occlusion settings
+// after it are optional.
 //
 //   vtkfx-example MESH.obj OUT.png
 #include "vtkFXPipelinePass.h"
+#include "vtkFXSSAOPass.h"
 
 #include "vtkActor.h"
 #include "vtkNew.h"
@@ -47,6 +49,12 @@ int main(int argc, char* argv[])
 
   vtkNew<vtkFXPipelinePass> pipeline;
   renderer->SetPass(pipeline); // the one line that installs vtkFX
+
+  // Optional: ambient occlusion, with the three settings users reach for.
+  pipeline->AmbientOcclusionOn();
+  pipeline->SetAmbientOcclusionQuality(vtkFXPipelinePass::Medium); // Low, Medium, High
+  pipeline->SetAmbientOcclusionFalloff(vtkFXSSAOPass::Binary); // visibility within the radius
+  pipeline->GetSSAOPass()->SetRadiusFraction(0.1); // of the data's diagonal (or SetRadius)
   renderer->ResetCamera();
   window->Render();
 

@@ -38,6 +38,12 @@ def main(mesh, out):
 
     pipeline = vtkfx.vtkFXPipelinePass()
     renderer.SetPass(pipeline)  # the one line that installs vtkFX
+
+    # Optional: ambient occlusion, with the three settings users reach for.
+    pipeline.AmbientOcclusionOn()
+    pipeline.SetAmbientOcclusionQuality(vtkfx.vtkFXPipelinePass.Medium)  # Low, Medium, High
+    pipeline.SetAmbientOcclusionFalloff(vtkfx.vtkFXSSAOPass.Binary)  # visibility within R
+    pipeline.GetSSAOPass().SetRadiusFraction(0.1)  # of the data's diagonal (or SetRadius)
     renderer.ResetCamera()
     window.Render()
 
