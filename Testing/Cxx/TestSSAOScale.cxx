@@ -1,4 +1,6 @@
-// Scale invariance of the occlusion: scene:corner and the bunny scaled by
+// Scale invariance of the occlusion, for both falloffs (each with its
+// default preset: the horizon estimator for Binary and CubeRoot, with 16
+// and 8 fetches): scene:corner and the bunny scaled by
 // 1e-6 and by 1e6, translated 1e6 units from the origin (camera following),
 // seen in parallel projection, and with a near/far ratio of 1e-6, give an
 // occlusion image (the pipeline's occlusion view) within PSNR >= 40 dB of the
@@ -7,6 +9,7 @@
 // linear depth: nothing depends on the scene's size or place.
 #include "vtkFXCompositePass.h"
 #include "vtkFXPipelinePass.h"
+#include "vtkFXSSAOPass.h"
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
 
@@ -28,7 +31,7 @@ struct Variant
 };
 
 std::vector<unsigned char> Render(vtkRenderWindow* window, const std::string& input, bool parallel,
-  const Variant& v, unsigned char background[3])
+  const Variant& v, int falloff, unsigned char background[3])
 {
   window->GetRenderers()->RemoveAllItems();
   vtkNew<vtkRenderer> renderer;
@@ -74,6 +77,7 @@ std::vector<unsigned char> Render(vtkRenderWindow* window, const std::string& in
   }
   vtkNew<vtkFXPipelinePass> pipeline;
   pipeline->AmbientOcclusionOn();
+  pipeline->SetAmbientOcclusionFalloff(falloff);
   pipeline->GetCompositePass()->DebugOcclusionOn();
   renderer->SetPass(pipeline);
   window->Render();
@@ -95,13 +99,15 @@ int TestSSAOScale(int, char*[])
     { "near/far 1e-6", 1.0, 0.0, 1e-6 },
   };
   int failures = 0;
+  for (int falloff : { vtkFXSSAOPass::Binary, vtkFXSSAOPass::CubeRoot })
   for (const std::string input :
     { std::string("scene:corner"), vtkFXScenes::DataDirectory() + "/stanford-bunny.obj" })
   {
+    const char* falloffName = falloff == vtkFXSSAOPass::Binary ? "binary" : "cube-root";
     for (bool parallel : { false, true })
     {
       unsigned char background[3];
-      const auto base = Render(window, input, parallel, reference, background);
+      const auto base = Render(window, input, parallel, reference, falloff, background);
       // The comparison means something only if the base shows occlusion.
       int occluded = 0;
       for (size_t i = 0; i + 2 < base.size(); i += 3)
@@ -112,9 +118,9 @@ int TestSSAOScale(int, char*[])
       for (const Variant& v : variants)
       {
         unsigned char bg[3];
-        const auto image = Render(window, input, parallel, v, bg);
+        const auto image = Render(window, input, parallel, v, falloff, bg);
         const double psnr = vtkFXScenes::PSNR(base, image, background);
-        std::cout << input << (parallel ? " parallel" : " perspective") << ", " << v.Name
+        std::cout << falloffName << ", " << input << (parallel ? " parallel" : " perspective") << ", " << v.Name
                   << ": PSNR " << psnr << " dB" << std::endl;
         failures += psnr >= 40.0 ? 0 : 1;
       }
