@@ -93,7 +93,7 @@ struct Method
   double Ms = 0.0, RMSE = 0.0, PSNR = 0.0, Detail = 0.0;
 };
 
-std::vector<Method> MakeMethods()
+std::vector<Method> MakeMethods(int falloff)
 {
   std::vector<Method> methods;
   methods.push_back({ Kind::VTKForward, "no-ao", "vtk forward" });
@@ -102,6 +102,7 @@ std::vector<Method> MakeMethods()
   // default to), then the candidates: hemisphere and horizon estimators,
   // half and full resolution, wide, narrow and no blur, a few sample counts.
   vtkNew<vtkFXPipelinePass> defaults;
+  defaults->SetAmbientOcclusionFalloff(falloff); // its Medium preset
   vtkFXSSAOPass* ssao = defaults->GetSSAOPass();
   auto fx = [&methods](int method, int samples, bool half, int blurRadius, bool upsample = false) {
     Method m{ Kind::FX, method == vtkFXSSAOPass::Horizon ? "vtkfx-gtao" : "vtkfx-ssao" };
@@ -406,7 +407,7 @@ int BenchAO(const Options& o)
   }
   csv << "scene,method,setting,ms,rmse,psnr,detail\n";
   const char* falloffName = o.Falloff == 0 ? "binary" : "cuberoot";
-  std::vector<Method> methods = MakeMethods();
+  std::vector<Method> methods = MakeMethods(o.Falloff);
   for (auto& m : methods)
   {
     m.Window = MakeWindow(o);
