@@ -66,6 +66,9 @@
 namespace
 {
 using namespace vtkFXBench;
+static_assert(static_cast<int>(vtkFXReferenceAO::Binary) == static_cast<int>(vtkFXSSAOPass::Binary) &&
+    static_cast<int>(vtkFXReferenceAO::CubeRoot) == static_cast<int>(vtkFXSSAOPass::CubeRoot),
+  "the reference and the estimator number the falloffs alike");
 
 enum class Kind
 {
@@ -369,7 +372,10 @@ void WritePlot(const std::vector<Method>& methods, const std::string& title,
     label->SetInput(((m.Type == Kind::VTK ? "vtk " : m.Method ? "gtao " : "hemi ") + m.Setting).c_str());
     label->GetTextProperty()->SetFontSize(11);
     label->GetTextProperty()->SetColor(m.Type == Kind::VTK ? 0.1 : 0.7, 0.25, m.Type == Kind::VTK ? 0.75 : 0.1);
-    label->SetDisplayPosition(static_cast<int>(x0[0] + fx * (x1[0] - x0[0])) + 6,
+    // Right of the point, or left of it near the right border.
+    const bool left = fx > 0.8;
+    label->GetTextProperty()->SetJustification(left ? VTK_TEXT_RIGHT : VTK_TEXT_LEFT);
+    label->SetDisplayPosition(static_cast<int>(x0[0] + fx * (x1[0] - x0[0])) + (left ? -6 : 6),
       static_cast<int>(y0[1] + fy * (y1[1] - y0[1])) - 4);
     view->GetRenderer()->AddActor2D(label);
   }

@@ -23,6 +23,7 @@
 #include <embree3/rtcore.h>
 
 #include <algorithm>
+#include <iostream>
 #include <atomic>
 #include <cmath>
 #include <thread>
@@ -325,6 +326,12 @@ vtkFXReferenceAO::Result vtkFXReferenceAO::Trace(
   vtkRenderer* renderer, int width, int height, double radius, int raysPerPixel, int falloff,
   int threads) const
 {
+  if (falloff != Binary && falloff != CubeRoot)
+  {
+    std::cerr << "vtkFXReferenceAO: falloff " << falloff
+              << " is neither Binary (0) nor CubeRoot (1); tracing Binary\n";
+    falloff = Binary;
+  }
   Result result;
   result.Width = width;
   result.Height = height;

@@ -129,9 +129,9 @@ int main(int argc, char* argv[])
     const std::string a = argv[i];
     if (a == "--out" && i + 1 < argc)
       o.Out = argv[++i];
-    else if (a == "--falloff" && i + 1 < argc)
+    else if (a == "--falloff")
     {
-      const std::string f = argv[++i];
+      const std::string f = i + 1 < argc ? argv[++i] : "";
       if (f != "binary" && f != "cuberoot")
       {
         std::cerr << "vtkfx-bench: bad --falloff '" << f << "' (binary or cuberoot)\n";

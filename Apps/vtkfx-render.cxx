@@ -102,12 +102,17 @@ bool ParseInt(const std::string& text, int lo, int hi, int& value)
   return true;
 }
 
-// A finite number in (0, hi].
-bool ParsePositive(const std::string& text, double hi, double& value)
+// A decimal number (digits, '.', an exponent) in [lo, hi]: no hexadecimal,
+// no spaces, nothing that a float uniform would turn into 0 or infinity.
+bool ParseInRange(const std::string& text, double lo, double hi, double& value)
 {
+  if (text.empty() || text.find_first_not_of("0123456789.eE+-") != std::string::npos)
+  {
+    return false;
+  }
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(v) || v <= 0.0 || v > hi)
+  if (*end != '\0' || !(v >= lo && v <= hi))
   {
     return false;
   }
@@ -176,11 +181,12 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
     {
       const bool fraction = a == "--ao-radius-fraction";
       if (!value(v) ||
-        !ParsePositive(v, fraction ? 10.0 : 1e300, fraction ? args.AORadiusFraction : args.AORadius))
+        !(fraction ? ParseInRange(v, 1e-6, 10.0, args.AORadiusFraction)
+                   : ParseInRange(v, 1e-30, 1e30, args.AORadius)))
       {
-        error = "bad " + a + " '" + v + "' (expected a number > 0" +
-          (fraction ? std::string(", at most 10: a fraction of the data's diagonal)")
-                    : std::string(", in world units)"));
+        error = "bad " + a + " '" + v + "' (expected a decimal number " +
+          (fraction ? std::string("from 1e-6 to 10: a fraction of the data's diagonal)")
+                    : std::string("from 1e-30 to 1e30, in world units)"));
         return false;
       }
       args.AOOptions = true;

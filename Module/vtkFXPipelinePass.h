@@ -159,10 +159,13 @@ public:
    *   High          horizon 16, full, blur 2      hemisphere 16, half, blur 4
    *
    * Medium is ahead of every vtkSSAOPass setting on PSNR at a lower cost on
-   * the bench scenes; Low is the cheapest; High keeps more fine structure
-   * (Binary, at about 3x Medium's cost) or is the most accurate (CubeRoot).
-   * Setting the quality or the falloff applies the preset at once; the SSAO
-   * and blur parameters can be tuned after it.
+   * the bench scenes; Low is usually cheaper (and, with Binary, the more
+   * accurate on scene:corner, behind elsewhere); High keeps more fine
+   * structure (Binary, at about 3x Medium's cost) or is the most accurate
+   * on some scenes (CubeRoot). Setting the quality or the falloff applies
+   * the preset at once, blur included (it enables the blur pass); the SSAO
+   * and blur parameters can be tuned after it. vtkFXSSAOPass's own
+   * defaults are the Binary Medium row.
    */
   virtual void SetAmbientOcclusionQuality(int quality);
   vtkGetMacro(AmbientOcclusionQuality, int);

@@ -14,7 +14,8 @@
  * default: the ray-traced AO users know from OSPRay, ParaView and Blender),
  * or with hits weighted by 1 - (t/R)^(1/3) (CubeRoot, after Vizerie's 2009
  * demo). Two estimators (Method): horizon-based integration (GTAO,
- * default), exact for a height field, and a normal-oriented hemisphere of
+ * default), exact for a height field in the limit of many steps, and a
+ * normal-oriented hemisphere of
  * NumberOfSamples points, cosine-distributed, at distance R (Binary) or at
  * lengths u^3 R (CubeRoot), unbiased for a height field. Both are rotated
  * per pixel by a 4x4 tile; vtkfx-bench's ray-traced reference computes the
@@ -95,8 +96,9 @@ public:
    * The visibility is the cosine-weighted mean over the hemisphere of one
    * minus that. Hemisphere sampling places its samples at distance R
    * (Binary) or at lengths u^3 R (CubeRoot), unbiased for a height field;
-   * Horizon fades horizons over the last 10% (Binary) or 61.5% (CubeRoot)
-   * of R. vtkfx-bench's ray-traced reference traces the same definition.
+   * Horizon counts horizons fully within R (Binary) or fades them over the
+   * last 61.5% of R (CubeRoot, XeGTAO's fade: an approximation of that
+   * falloff). vtkfx-bench's ray-traced reference traces the same definition.
    */
   vtkSetClampMacro(Falloff, int, Binary, CubeRoot);
   vtkGetMacro(Falloff, int);
@@ -111,19 +113,20 @@ public:
    * Estimator (default Horizon). Measured with vtkfx-bench ao (640x480, half
    * resolution, blur radius 4, against the ray-traced reference of the same
    * falloff; see vtkFXPipelinePass::SetAmbientOcclusionQuality):
-   * - Binary: Horizon with 16 fetches is 2.5 to 3.1 dB ahead of the best
-   *   vtkSSAOPass setting on the bench scenes; Hemisphere with 8 (samples at
-   *   distance R) is the cheapest, but behind on the fandisk and 1crn.
-   * - CubeRoot: Horizon with 8 fetches is within 0.1 dB of Hemisphere or
-   *   ahead (up to 2.2 dB); more horizon steps move away from this
-   *   definition (they find higher horizons, which its falloff discounts).
+   * - Binary: Horizon with 16 fetches is 2.1 to 4.3 dB ahead of the best
+   *   vtkSSAOPass setting on the five bench scenes (README); Hemisphere
+   *   with 8 (samples at distance R) is more accurate on scene:corner, but
+   *   behind Horizon on the other four.
+   * - CubeRoot: Horizon with 8 fetches is 1.0 to 5.1 dB ahead of Hemisphere
+   *   with 8; more horizon steps move away from this definition (they find
+   *   higher horizons, which its falloff discounts).
    * Horizon's raw per-pixel values are unclamped (they exceed 1 on tilted
    * open surfaces and average to the visibility over the noise tile): blur
    * it, and the composite clamps the result; after the blur an open plane
-   * reads 0.93 or more. On the crease of a floor and a wall (TestSSAO), the
-   * Binary horizon estimate is within 0.05 of the exact visibility in
-   * every band of distance (biased open), the Hemisphere estimate within
-   * 0.022.
+   * reads 0.93 or more. On the crease of a floor and a wall (TestSSAO,
+   * which states the measured errors and its bounds), the Binary horizon
+   * estimate is biased open by a few hundredths; the Hemisphere estimate
+   * follows the exact visibility within about 0.02 in every band.
    */
   vtkSetClampMacro(Method, int, Hemisphere, Horizon);
   vtkGetMacro(Method, int);

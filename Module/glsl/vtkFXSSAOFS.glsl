@@ -129,8 +129,10 @@ float fxHemisphereOcclusion(vec3 p, vec3 n, float depth, vec2 rotation)
 // 2016), in the formulation of Intel's XeGTAO. FX_SLICES screen-space
 // slices through the pixel, FX_STEPS depth samples on each side of it find
 // the two horizons; the visible arc between them, cosine-weighted around the
-// normal projected into the slice, integrates in closed form. A horizon
-// sample fades out (towards the lowest horizon) from 0.385 R to R.
+// normal projected into the slice, integrates in closed form: exact for a
+// height field with enough steps; with FX_STEPS of 2 to 8 an estimate. A
+// horizon sample counts fully within R (FX_FALLOFF 0) or fades out
+// (towards the lowest horizon) from 0.385 R to R (FX_FALLOFF 1).
 float fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec2 rotation)
 {
   vec3 rayOrigin, rayDirection;
@@ -142,20 +144,24 @@ float fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec2 rotation
   // Horizons fade out over the last part of R: XeGTAO's 61.5% for the
   // near-weighted falloff; for visibility within R (FX_FALLOFF 0) a step at
   // R, as the definition says (a 10% fade biased the crease of TestSSAO
-  // bright by up to 0.08, the step by 0.036; it also measured 0.5 to 1.3 dB
-  // closer to the ray-traced reference on three of the four bench scenes).
+  // bright by up to 0.08 in a band, the step by about half that; the step
+  // also measured 0.5 to 1.3 dB closer to the ray-traced reference on three
+  // of the four bench scenes).
   float falloffRange = (FX_FALLOFF == 0 ? 0.001 : 0.615) * fxRadius;
   float falloffMul = -1.0 / falloffRange;
   float falloffAdd = (fxRadius - falloffRange) / falloffRange + 1.0;
   // The tile's rotation, within one stratum of 2 pi / FX_SAMPLES, as [0, 1).
   float jitter = fract(atan(rotation.y, rotation.x) * float(FX_SAMPLES) / (2.0 * fxPi));
-  // The steps' own offset over a whole step, from the tile entry's low
-  // bits: each offset meets four slice rotations in the 4x4 tile, so the
-  // blur averages step positions as well as directions (an offset tied to
-  // the rotation, or spread over half a step only, drew arcs at the step
-  // distances around raised objects). Shifted by half a step and clamped
-  // to R, so that the last step still reaches R (short of it, creases
-  // read too open).
+  // The steps' own offset over a whole step, from the low bits of the tile
+  // entry's rank: each offset meets rotations spread over the whole
+  // stratum, so the blur averages step positions independently of
+  // directions. (The high bits, a finer 2x2 pattern, follow the rotation:
+  // offset and direction then move together and draw arcs at the step
+  // distances around raised objects, as did an offset spread over half a
+  // step. The low bits form 2x2 blocks, which any blur of radius 2 or more
+  // averages.) Shifted by half a step so the steps sample out to R
+  // (starting at 0, the last step stopped at 0.77 R on average and creases
+  // read too open); clamped there.
   float stepJitter = fract(jitter * 4.0);
   float visibility = 0.0;
   for (int slice = 0; slice < FX_SLICES; ++slice)

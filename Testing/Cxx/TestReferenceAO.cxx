@@ -61,7 +61,7 @@ int TestReferenceAO(int, char*[])
   inverse->Invert();
   for (int falloff : { vtkFXReferenceAO::Binary, vtkFXReferenceAO::CubeRoot })
   {
-    const char* name = falloff == vtkFXReferenceAO::Binary ? "binary" : "cube-root";
+    const char* name = vtkFXTest::FalloffName(falloff);
     const auto result = reference.Trace(renderer, w, h, R, rays, falloff);
     std::cout << name << ": " << result.CoveredPixels << " pixels, " << rays
               << " rays each, standard error (RMS) " << result.StandardErrorRMS << ", "
@@ -90,9 +90,7 @@ int TestReferenceAO(int, char*[])
           ++open;
           continue;
         }
-        const double expected = falloff == vtkFXReferenceAO::Binary
-          ? vtkFXTest::CreaseOcclusionBinary(distance, R)
-          : vtkFXTest::CreaseOcclusion(distance, R);
+        const double expected = vtkFXTest::CreaseOcclusion(distance, R, falloff);
         const double tolerance =
           4.0 * result.StandardError[static_cast<size_t>(y) * w + x] + 2e-3;
         worst = std::max(worst, std::fabs(traced - expected));

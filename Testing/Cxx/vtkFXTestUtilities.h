@@ -122,6 +122,19 @@ inline double CreaseOcclusion(double h, double R)
   return 1.0 - sum * (pi / 2 / n) * (2 * pi / n) / pi;
 }
 
+// The crease occlusion of a falloff (0 Binary, 1 CubeRoot: the values of
+// vtkFXSSAOPass::Falloff and vtkFXReferenceAO::Falloff).
+inline double CreaseOcclusion(double h, double R, int falloff)
+{
+  return falloff == 0 ? CreaseOcclusionBinary(h, R) : CreaseOcclusion(h, R);
+}
+
+// Name of a falloff in test output.
+inline const char* FalloffName(int falloff)
+{
+  return falloff == 0 ? "binary" : "cube-root";
+}
+
 // The value of "-X value" in argv, or "" when absent.
 inline std::string Argument(int argc, char* argv[], const char* flag)
 {
