@@ -124,6 +124,16 @@ float fxHemisphereOcclusion(vec3 p, vec3 n, float depth, vec2 rotation)
   return clamp(1.0 - occlusion / float(FX_SAMPLES), 0.0, 1.0);
 }
 #else
+// acos to within about 0.007 rad (one linear term times sqrt(1 - |x|), as
+// XeGTAO does after Lagarde): llvmpipe evaluates acos in software, and
+// three per slice were a good part of the pass.
+float fxFastAcos(float x)
+{
+  float a = abs(x);
+  float r = (-0.156583 * a + 0.5 * fxPi) * sqrt(max(1.0 - a, 0.0));
+  return x >= 0.0 ? r : fxPi - r;
+}
+
 // Horizon-based, cosine-weighted visibility: Jimenez, Wu, Pesce, Jarabo,
 // "Practical Realtime Strategies for Accurate Indirect Occlusion" (GTAO,
 // 2016), in the formulation of Intel's XeGTAO. FX_SLICES screen-space
@@ -164,18 +174,30 @@ float fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec2 rotation
   // read too open); clamped there.
   float stepJitter = fract(jitter * 4.0);
   float visibility = 0.0;
+  // Slice directions at (slice + jitter) / FX_SLICES x pi: the first from
+  // cos and sin, the next ones by rotating it (no trigonometry per slice).
+  float phi = jitter / float(FX_SLICES) * fxPi;
+  vec3 direction = vec3(cos(phi), sin(phi), 0.0);
+  const float sliceStep = fxPi / float(FX_SLICES);
+  const vec2 sliceRotation = vec2(cos(sliceStep), sin(sliceStep));
   for (int slice = 0; slice < FX_SLICES; ++slice)
   {
-    float phi = (float(slice) + jitter) / float(FX_SLICES) * fxPi;
-    vec3 direction = vec3(cos(phi), sin(phi), 0.0);
+    if (slice > 0)
+    {
+      direction.xy = vec2(sliceRotation.x * direction.x - sliceRotation.y * direction.y,
+        sliceRotation.y * direction.x + sliceRotation.x * direction.y);
+    }
     vec3 orthoDirection = direction - dot(direction, view) * view;
     vec3 axis = normalize(cross(orthoDirection, view));
     vec3 projectedNormal = n - axis * dot(n, axis);
     float projectedLength = length(projectedNormal);
     float cosNormal = clamp(dot(projectedNormal, view) / max(projectedLength, 1e-8), -1.0, 1.0);
-    float normalAngle = sign(dot(orthoDirection, projectedNormal)) * acos(cosNormal);
-    float lowest0 = cos(normalAngle + 0.5 * fxPi);
-    float lowest1 = cos(normalAngle - 0.5 * fxPi);
+    float normalSign = sign(dot(orthoDirection, projectedNormal));
+    float normalAngle = normalSign * fxFastAcos(cosNormal);
+    // sin(normalAngle) without trigonometry; cos(normalAngle -+ pi/2).
+    float sinNormal = normalSign * sqrt(max(1.0 - cosNormal * cosNormal, 0.0));
+    float lowest0 = -sinNormal;
+    float lowest1 = sinNormal;
     float horizon0 = lowest0, horizon1 = lowest1;
     for (int step = 0; step < FX_STEPS; ++step)
     {
@@ -214,12 +236,12 @@ float fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec2 rotation
         }
       }
     }
-    float h0 = -acos(clamp(horizon1, -1.0, 1.0));
-    float h1 = acos(clamp(horizon0, -1.0, 1.0));
+    float h0 = -fxFastAcos(clamp(horizon1, -1.0, 1.0));
+    float h1 = fxFastAcos(clamp(horizon0, -1.0, 1.0));
     h0 = normalAngle + clamp(h0 - normalAngle, -0.5 * fxPi, 0.5 * fxPi);
     h1 = normalAngle + clamp(h1 - normalAngle, -0.5 * fxPi, 0.5 * fxPi);
-    float arc0 = (cosNormal + 2.0 * h0 * sin(normalAngle) - cos(2.0 * h0 - normalAngle)) / 4.0;
-    float arc1 = (cosNormal + 2.0 * h1 * sin(normalAngle) - cos(2.0 * h1 - normalAngle)) / 4.0;
+    float arc0 = (cosNormal + 2.0 * h0 * sinNormal - cos(2.0 * h0 - normalAngle)) / 4.0;
+    float arc1 = (cosNormal + 2.0 * h1 * sinNormal - cos(2.0 * h1 - normalAngle)) / 4.0;
     visibility += projectedLength * (arc0 + arc1);
   }
   // Two slices see a tilted receiver's open hemisphere as 0.77 to 1.2
