@@ -113,7 +113,7 @@ public:
    * Estimator (default Horizon). Measured with vtkfx-bench ao (640x480, half
    * resolution, blur radius 4, against the ray-traced reference of the same
    * falloff; see vtkFXPipelinePass::SetAmbientOcclusionQuality):
-   * - Binary: Horizon with 16 fetches is 2.1 to 4.3 dB ahead of the best
+   * - Binary: Horizon with 16 fetches is 2.2 to 4.2 dB ahead of the best
    *   vtkSSAOPass setting on the five bench scenes (README); Hemisphere
    *   with 8 (samples at distance R) is more accurate on scene:corner, but
    *   behind Horizon on the other four.
