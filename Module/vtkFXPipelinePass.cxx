@@ -307,6 +307,13 @@ std::vector<size_t> vtkFXPipelinePass::OrderEffects(const vtkFXSceneInfo& scene,
   // algorithm, ties in the order added). Effects left over form a cycle.
   std::vector<size_t> order;
   std::string problems; // lines found in this loop, each kept once
+  // Whether a connection's producer runs too late for it: after the
+  // consumer's stage, or, for an input read in the composite, not before it.
+  auto isLate = [this](const Connection& c, int consumerStage) {
+    const int producerStage = this->Effects[c.Producer].Effect->GetStage();
+    return c.ReadInComposite ? producerStage >= vtkFXEffectPass::Composite
+                             : producerStage > consumerStage;
+  };
   for (bool changed = true; changed;)
   {
     changed = false;
@@ -320,8 +327,7 @@ std::vector<size_t> vtkFXPipelinePass::OrderEffects(const vtkFXSceneInfo& scene,
       for (const Connection& c : inputs[i])
       {
         const int producerStage = this->Effects[c.Producer].Effect->GetStage();
-        const bool late = c.ReadInComposite ? producerStage >= vtkFXEffectPass::Composite
-                                            : producerStage > stage;
+        const bool late = isLate(c, stage);
         if (late && candidate[c.Producer])
         {
           problems += "'" + this->Effects[i].Name + "': input '" + c.Input +
@@ -342,11 +348,7 @@ std::vector<size_t> vtkFXPipelinePass::OrderEffects(const vtkFXSceneInfo& scene,
       // An optional input from a later stage stays unbound: it would read
       // the previous frame's output.
       inputs[i].erase(std::remove_if(inputs[i].begin(), inputs[i].end(),
-                        [&](const Connection& c) {
-                          const int producerStage = this->Effects[c.Producer].Effect->GetStage();
-                          return c.ReadInComposite ? producerStage >= vtkFXEffectPass::Composite
-                                                   : producerStage > stage;
-                        }),
+                        [&](const Connection& c) { return isLate(c, stage); }),
         inputs[i].end());
     }
     if (changed)
