@@ -29,6 +29,7 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
@@ -40,6 +41,7 @@
 #include "vtkRendererCollection.h"
 #include "vtkShaderProgram.h"
 #include "vtkSphereSource.h"
+#include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
 #include <memory>
@@ -149,8 +151,12 @@ public:
     RunLog.push_back("halve");
     this->SawFrameBuffer = s->GetFrameBuffer() != nullptr;
     auto* window = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
-    const std::string fs = "//VTK::System::Dec\nin vec2 texCoord;\n//VTK::Output::Dec\n"
-                           "void main() { gl_FragData[0] = vec4(texCoord.x < -1.0 ? 1.0 : 0.5); }\n";
+    // Halving, or (WriteNaN) NaN computed at run time, replacing the image.
+    const std::string fs = this->WriteNaN
+      ? "//VTK::System::Dec\nin vec2 texCoord;\n//VTK::Output::Dec\n"
+        "void main() { float z = texCoord.x < -1.0 ? 1.0 : 0.0; gl_FragData[0] = vec4(z / z); }\n"
+      : "//VTK::System::Dec\nin vec2 texCoord;\n//VTK::Output::Dec\n"
+        "void main() { gl_FragData[0] = vec4(texCoord.x < -1.0 ? 1.0 : 0.5); }\n";
     vtkShaderProgram* program = vtkFXRenderUtilities::ReadyQuad(this->Quad, this->Source, window, fs);
     if (!program)
     {
@@ -160,7 +166,14 @@ public:
     vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
     vtkOpenGLState::ScopedglEnableDisable depth(state, GL_DEPTH_TEST);
     vtkOpenGLState::ScopedglBlendFuncSeparate func(state);
-    state->vtkglEnable(GL_BLEND);
+    if (this->WriteNaN)
+    {
+      state->vtkglDisable(GL_BLEND);
+    }
+    else
+    {
+      state->vtkglEnable(GL_BLEND);
+    }
     state->vtkglDisable(GL_DEPTH_TEST);
     state->vtkglBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ZERO, GL_ONE);
     this->Quad->Render();
@@ -175,6 +188,7 @@ public:
     this->Source.clear();
   }
   bool SawFrameBuffer = false;
+  bool WriteNaN = false;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   std::string Source;
 };
@@ -657,11 +671,65 @@ int TestEmission()
 }
 }
 
+// The HDR target at a 1x1 viewport, and NaN written into it by a
+// post-process: no crash, and 0 where NaN was, never NaN. (An 8-bit window
+// turns NaN into 0 by itself on Mesa, so the write-back's own sanitising is
+// checked into a float framebuffer, with the target pass used alone.)
+int TestHDRRobustness()
+{
+  FlatScene scene(0.8);
+  vtkNew<HalveProbe> probe;
+  scene.Pipeline->AddEffect("probe", probe);
+  scene.Window->SetSize(1, 1);
+  scene.Window->Render();
+  const auto tiny = vtkFXScenes::Capture(scene.Window);
+  std::cout << "1x1 through the HDR target: " << int(tiny[0]) << "," << int(tiny[1]) << ","
+            << int(tiny[2]) << std::endl;
+  FX_CHECK(tiny.size() == 3 && std::abs(tiny[0] - 102) <= 1, "1x1: 204 halved");
+  scene.Window->SetSize(64, 48);
+  probe->WriteNaN = true;
+  probe->ReleaseGraphicsResources(scene.Window); // rebuild its shader
+  const auto c = scene.Centre();
+  std::cout << "NaN written by a post-process: " << c[0] << "," << c[1] << "," << c[2] << std::endl;
+  FX_CHECK(c[0] == 0 && c[1] == 0 && c[2] == 0, "NaN reaches the window as 0");
+
+  // Alone, writing back into an RGBA32F framebuffer of our own.
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(scene.Window.Get());
+  vtkSmartPointer<vtkTextureObject> target;
+  vtkFXRenderUtilities::EnsureTexture(target, window, 8, 8, vtkFXRenderUtilities::RGBA32F);
+  vtkNew<vtkOpenGLFramebufferObject> framebuffer;
+  framebuffer->SetContext(window);
+  vtkNew<vtkFXHDRTargetPass> hdr;
+  hdr->SetDelegatePass(probe);
+  window->GetState()->PushFramebufferBindings();
+  framebuffer->Bind();
+  framebuffer->AddColorAttachment(0, target);
+  framebuffer->ActivateDrawBuffers(1);
+  {
+    vtkOpenGLState::ScopedglViewport viewport(window->GetState());
+    window->GetState()->vtkglViewport(0, 0, 8, 8);
+    vtkRenderState state(scene.Renderer);
+    hdr->Render(&state);
+  }
+  window->GetState()->PopFramebufferBindings();
+  const auto values = vtkFXTest::Download(target, 4);
+  FX_CHECK(values.size() == 8 * 8 * 4, "read back");
+  for (float v : values)
+  {
+    FX_CHECK(std::isfinite(v) && v >= 0.0f && v <= 1.0f, "written back finite and in [0, 1]: " << v);
+  }
+  hdr->ReleaseGraphicsResources(window);
+  target->ReleaseGraphicsResources(window);
+  framebuffer->ReleaseGraphicsResources(window);
+  return EXIT_SUCCESS;
+}
+
 int TestFrameStructure(int, char*[])
 {
   auto window = vtkFXTest::MakeWindow(400, 300);
   SharedWindow = window;
-  for (auto test : { TestStages, TestConnections, TestHooks, TestManyLights, TestLayers, TestEmission })
+  for (auto test : { TestStages, TestConnections, TestHooks, TestManyLights, TestLayers, TestEmission,
+         TestHDRRobustness })
   {
     if (test() != EXIT_SUCCESS)
     {
