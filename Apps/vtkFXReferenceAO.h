@@ -52,16 +52,18 @@ public:
     double Seconds = 0.0;
   };
 
-  /**
-   * Traces the renderer's current view at width x height pixels with the
-   * given radius (world units), rays per pixel (rounded up to a square) and
-   * falloff (Binary or CubeRoot).
-   */
   enum Falloff
   {
     Binary = 0, // the values of vtkFXSSAOPass::Falloff
     CubeRoot
   };
+
+  /**
+   * Traces the renderer's current view at width x height pixels with the
+   * given radius (world units), rays per pixel (rounded up to a square) and
+   * falloff (Binary or CubeRoot; another value is reported and traced as
+   * Binary).
+   */
   Result Trace(vtkRenderer* renderer, int width, int height, double radius, int raysPerPixel,
     int falloff = Binary, int threads = 2) const;
 

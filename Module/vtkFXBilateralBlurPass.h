@@ -18,9 +18,9 @@
  * (what vtkFXSSAOPass writes) is blurred by depth alone, one fetch per tap,
  * and its blurred output keeps carrying the depth until upsampled; other
  * inputs first get a guide texture (normal and depth per input pixel).
- * Output formats: one or two values R8 / RG8 at full resolution, RG32F
- * with a carried depth, RGBA16F for three or four values (directional
- * occlusion's channels keep their precision).
+ * Output formats: upsampled, R8 / RG8 for one or two values and RGBA16F for
+ * three or four (directional occlusion's channels keep their precision);
+ * left at a reduced resolution, RG32F with a carried depth, else RGBA16F.
  *
  * Cost: 2 x (2 Radius + 1) taps per input pixel, plus 4 taps per output
  * pixel when upsampling, plus the guide pass for multi-value inputs.

@@ -260,7 +260,7 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
   return fs;
 }
 
-void vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
+int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
 {
   // VTK's own light parameters (vtkOpenGLRenderer::UpdateLightingUniforms),
   // one row of 4 texels per light: colour x intensity and the positional
@@ -308,6 +308,7 @@ void vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
   {
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, LightTexels, count, GL_RGBA, GL_FLOAT, texels.data());
   }
+  return count;
 }
 
 void vtkFXCompositePass::SetUniforms(vtkShaderProgram* program, vtkOpenGLRenderer* ren)
@@ -316,9 +317,9 @@ void vtkFXCompositePass::SetUniforms(vtkShaderProgram* program, vtkOpenGLRendere
   const bool lightTexture = program->IsUniformUsed("fxLights");
   if (lightTexture)
   {
-    this->UploadLightTexture(ren);
+    const int count = this->UploadLightTexture(ren);
     BindSampler(program, "fxLights", this->LightTexture);
-    program->SetUniformi("fxLightCount", ren->GetLightingCount());
+    program->SetUniformi("fxLightCount", count);
   }
   else
   {

@@ -143,7 +143,7 @@ protected:
   std::string BuildFragmentShader(vtkOpenGLRenderer* ren);
   std::string EffectCode(int hook) const;
   bool UsesLightTexture(vtkOpenGLRenderer* ren) const;
-  void UploadLightTexture(vtkOpenGLRenderer* ren);
+  int UploadLightTexture(vtkOpenGLRenderer* ren); // returns the lights uploaded
   void SetUniforms(vtkShaderProgram* program, vtkOpenGLRenderer* ren);
   void Draw(vtkOpenGLRenderer* ren);
 

@@ -37,10 +37,15 @@
  *   `diffuseLight` and `specularLight`;
  * - Color: may change the final `color` (vec3) of lit and unlit pixels
  *   (`lit` tells which).
- * Every hook sees `texCoord`, `n`, `albedo`, `position` and `lit`. In the
- * code an effect returns, '@' stands for a prefix the composite makes unique
- * per effect, so two effects can declare `uniform sampler2D @input;`; the
- * same prefix comes back in BindCompositeResources.
+ * Background pixels never reach a hook. LightVisibility and Ambient run for
+ * lit pixels only (lighting on, no debug channel shown); Color runs for
+ * every covered pixel. They see `texCoord`, `n` (view space; +z for unlit
+ * pixels), `albedo`, `lit` and `position` (view space, when the G-buffer
+ * has linear depth: request it in GetRequiredChannels; 0 otherwise).
+ * Declarations come before the composite's own functions. In the code an
+ * effect returns, '@' stands for a prefix the composite makes unique per
+ * effect, so two effects can declare `uniform sampler2D @input;`; the same
+ * prefix comes back in BindCompositeResources.
  *
  * A disabled effect, or one without work, is left out of the frame, and the
  * channels only it read are released. What an effect reads and writes and

@@ -14,6 +14,8 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
+
 vtkStandardNewMacro(vtkFXHDRTargetPass);
 vtkCxxSetObjectMacro(vtkFXHDRTargetPass, DelegatePass, vtkRenderPass);
 
@@ -43,8 +45,8 @@ int vtkFXHDRTargetPass::GetBytesPerPixel() const
 int vtkFXHDRTargetPass::MatchingDepthFormat()
 {
   // A depth blit needs the same depth format on both sides: read what the
-  // framebuffer being read keeps (VTK's window framebuffer: 24-bit fixed or
-  // 32-bit float, depending on the build and the window's settings).
+  // framebuffer being read keeps (VTK 9.1's window framebuffer: 32-bit
+  // fixed point; others: 24-bit fixed or 32-bit float).
   GLint readFramebuffer = 0;
   glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
   const GLenum attachment = readFramebuffer ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
@@ -150,7 +152,8 @@ void vtkFXHDRTargetPass::Render(const vtkRenderState* s)
   const int height = std::max(viewport[3], 1);
 
   const bool keepDepth = ren->GetPreserveDepthBuffer() || !ren->GetErase();
-  int depthFormat = MatchingDepthFormat();
+  const int sourceDepthFormat = this->MatchingDepthFormat();
+  int depthFormat = sourceDepthFormat;
   if (depthFormat < 0)
   {
     if (keepDepth && !this->WarnedDepthFormat)
@@ -182,7 +185,7 @@ void vtkFXHDRTargetPass::Render(const vtkRenderState* s)
     state->vtkglDisable(GL_SCISSOR_TEST);
     state->PushDrawFramebufferBinding();
     this->CopyIn(state, viewport[0], viewport[1], width, height,
-      keepDepth && this->DepthFormat == MatchingDepthFormat());
+      keepDepth && this->DepthFormat == sourceDepthFormat);
     state->PopDrawFramebufferBinding();
   }
 

@@ -12,8 +12,9 @@
  *
  * Passes inside see light values above 1 and can post-process them (a glow
  * reads the colour texture, GetColorTexture, and adds onto the target).
- * vtkFXPipelinePass puts one around its lit image, translucent props,
- * volumes and post-process effects only while a post-process effect runs.
+ * vtkFXPipelinePass puts one around its composite, forward-opaque,
+ * translucent and volume steps and its post-process effects, only while a
+ * post-process effect runs.
  *
  * Cost: 12 bytes per pixel (colour 8, depth 4), a blit in and a full-screen
  * pass out; the depth is copied in only when the renderer keeps the depth of

@@ -794,7 +794,8 @@ double vtkFXPipelinePass::GetPassMilliseconds(const char* name)
   // Ask the sequence that ran the pass in the last frame: a pass moves into
   // the HDR target's sequence and back as post-process effects come and go.
   const auto& inner = this->HDRSequence->GetPassesThatRan();
-  const bool insideTarget = name && std::find(inner.begin(), inner.end(), name) != inner.end();
+  const bool insideTarget =
+    this->HDRTargetRan && name && std::find(inner.begin(), inner.end(), name) != inner.end();
   return (insideTarget ? this->HDRSequence : this->Sequence)->GetPassMilliseconds(name);
 }
 

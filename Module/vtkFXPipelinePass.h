@@ -159,8 +159,8 @@ public:
    *   High          horizon 16, full, blur 2      hemisphere 16, half, blur 4
    *
    * Medium is ahead of every vtkSSAOPass setting on PSNR at a lower cost on
-   * the bench scenes; Low is usually cheaper (and, with Binary, the more
-   * accurate on scene:corner, behind elsewhere); High keeps more fine
+   * the bench scenes; Low costs about the same (cheaper on some scenes) and,
+   * with Binary, is the more accurate on scene:corner, behind elsewhere; High keeps more fine
    * structure (Binary, at about 3x Medium's cost) or is the most accurate
    * on some scenes (CubeRoot). Setting the quality or the falloff applies
    * the preset at once, blur included (it enables the blur pass); the SSAO

@@ -24,11 +24,13 @@
  * Radius is in world units; 0 (default) means 0.1 x the diagonal of the
  * visible props' bounds, so any dataset scale works unchanged. Bias is a
  * fraction of the radius. Pair it with vtkFXBilateralBlurPass to remove the
- * noise of the rotated kernel (and to upsample a half-resolution result);
+ * noise of the rotated kernel (the blur can also upsample a half-resolution
+ * result; the pipeline leaves that to the composite's bilinear read);
  * vtkFXPipelinePass does so with SetAmbientOcclusion(true).
  *
  * Cost: one full-screen pass (a quarter of the pixels at half resolution)
- * with NumberOfSamples depth fetches per pixel.
+ * with NumberOfSamples depth fetches per pixel, and one texture read per
+ * pixel in the composite.
  */
 #ifndef vtkFXSSAOPass_h
 #define vtkFXSSAOPass_h

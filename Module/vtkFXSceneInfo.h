@@ -2,11 +2,13 @@
  * @class   vtkFXSceneInfo
  * @brief   What vtkFXPipelinePass's scene analysis found in one frame.
  *
- * The prop lists of the frame, sorted by the step that draws them, and the
- * lights that are on. vtkFXEffectPass::HasWork receives it, so an effect
- * decides from the scene itself whether it has work (a shadow map needs
- * translucent props and a light, a glow needs emissive props). The pointers
- * are valid during the frame that produced them only.
+ * The frame's props, listed by the steps that draw them (a prop can be in
+ * more than one list: a 2D actor is an overlay with an opaque step, an
+ * emissive prop is also opaque), and the lights that are on.
+ * vtkFXEffectPass::HasWork receives it, so an effect decides from the scene
+ * itself whether it has work (shadows cast by translucent data need
+ * translucent props and a light; a glow needs emissive props). The
+ * pointers are valid during the frame that produced them only.
  */
 #ifndef vtkFXSceneInfo_h
 #define vtkFXSceneInfo_h
