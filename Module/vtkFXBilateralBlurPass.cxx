@@ -184,12 +184,7 @@ void vtkFXBilateralBlurPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   for (int i = 0; i < NumberOfModes; ++i)
   {
-    if (this->Quads[i])
-    {
-      this->Quads[i]->ReleaseGraphicsResources(w);
-      this->Quads[i].reset();
-    }
-    this->QuadSources[i].clear();
+    vtkFXRenderUtilities::ReleaseQuad(this->Quads[i], this->QuadSources[i], w);
   }
   for (auto* texture : { &this->GuideTexture, &this->Horizontal, &this->Blurred, &this->Upsampled })
   {

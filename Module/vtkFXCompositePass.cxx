@@ -426,12 +426,7 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
 
 void vtkFXCompositePass::ReleaseGraphicsResources(vtkWindow* w)
 {
-  if (this->Quad)
-  {
-    this->Quad->ReleaseGraphicsResources(w);
-    this->Quad.reset();
-  }
-  this->QuadSource.clear();
+  vtkFXRenderUtilities::ReleaseQuad(this->Quad, this->QuadSource, w);
   vtkFXRenderUtilities::Release(this->LightTexture, w);
 }
 

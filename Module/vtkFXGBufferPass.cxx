@@ -478,6 +478,7 @@ void vtkFXGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
   vtkFXRenderUtilities::Release(this->FrameBuffer, w);
   this->AllocatedChannels = 0;
   this->NumberOfTargets = 0;
+  this->HookedPrograms.clear();
 }
 
 void vtkFXGBufferPass::PrintSelf(ostream& os, vtkIndent indent)

@@ -212,12 +212,7 @@ void vtkFXHDRTargetPass::ReleaseGraphicsResources(vtkWindow* w)
   {
     this->DelegatePass->ReleaseGraphicsResources(w);
   }
-  if (this->Quad)
-  {
-    this->Quad->ReleaseGraphicsResources(w);
-    this->Quad.reset();
-  }
-  this->QuadSource.clear();
+  vtkFXRenderUtilities::ReleaseQuad(this->Quad, this->QuadSource, w);
   vtkFXRenderUtilities::Release(this->Color, w);
   vtkFXRenderUtilities::Release(this->Depth, w);
   vtkFXRenderUtilities::Release(this->FrameBuffer, w);

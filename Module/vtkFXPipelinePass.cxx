@@ -696,10 +696,22 @@ void vtkFXPipelinePass::RemoveEffect(const char* name)
 {
   for (EffectSlot& slot : this->Effects)
   {
-    if (name && slot.Name == name && slot.Active && this->LastWindow)
+    if (!name || slot.Name != name)
+    {
+      continue;
+    }
+    if (slot.Active && this->LastWindow)
     {
       slot.Effect->ReleaseGraphicsResources(this->LastWindow);
     }
+    // Out of the pipeline, it keeps nothing of it: no G-buffer, no
+    // producers, no place among the composite's contributors.
+    slot.Effect->SetGBuffer(nullptr);
+    for (int i = 0; i < slot.Effect->GetNumberOfInputs(); ++i)
+    {
+      slot.Effect->SetInputProducer(slot.Effect->GetInputName(i), nullptr, nullptr);
+    }
+    this->CompositePass->RemoveAllContributors();
   }
   this->Effects.erase(std::remove_if(this->Effects.begin(), this->Effects.end(),
                         [name](const EffectSlot& slot) { return name && slot.Name == name; }),

@@ -122,6 +122,17 @@ vtkShaderProgram* vtkFXRenderUtilities::ReadyQuad(std::unique_ptr<vtkOpenGLQuadH
   return quad->Program;
 }
 
+void vtkFXRenderUtilities::ReleaseQuad(
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad, std::string& builtSource, vtkWindow* window)
+{
+  if (quad)
+  {
+    quad->ReleaseGraphicsResources(window);
+    quad.reset();
+  }
+  builtSource.clear();
+}
+
 vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow* window,
   vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer, vtkTextureObject* target)
   : State(window->GetState())

@@ -76,6 +76,13 @@ public:
     std::string& builtSource, vtkOpenGLRenderWindow* window, const std::string& fragmentSource);
 
   /**
+   * Releases a quad made by ReadyQuad and forgets its source, so that the
+   * next ReadyQuad builds it again.
+   */
+  static void ReleaseQuad(
+    std::unique_ptr<vtkOpenGLQuadHelper>& quad, std::string& builtSource, vtkWindow* window);
+
+  /**
    * Releases the GL resources of `object` (a texture or a framebuffer) in
    * `window` and drops it, if there is one.
    */

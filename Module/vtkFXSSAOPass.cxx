@@ -250,12 +250,7 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
 
 void vtkFXSSAOPass::ReleaseGraphicsResources(vtkWindow* w)
 {
-  if (this->Quad)
-  {
-    this->Quad->ReleaseGraphicsResources(w);
-    this->Quad.reset();
-  }
-  this->QuadSource.clear();
+  vtkFXRenderUtilities::ReleaseQuad(this->Quad, this->QuadSource, w);
   this->UnbindCompositeResources();
   vtkFXRenderUtilities::Release(this->Occlusion, w);
   vtkFXRenderUtilities::Release(this->FrameBuffer, w);
