@@ -138,6 +138,8 @@ public:
    * prop's property keys (vtkProp::SetPropertyKeys): written to the
    * emission channel for its lit fragments and added to its lit colour by
    * the composite. Unlit props need none: their colour is their emission.
+   * NaN, infinite and negative components count as 0; values above 65504
+   * (the largest half float) as 65504.
    */
   static vtkInformationDoubleVectorKey* EMISSIVE_COLOR();
 

@@ -44,6 +44,7 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -681,6 +682,24 @@ int TestEmission()
   scene.Centre();
   FX_CHECK(!gb->GetHDREmission() && gb->GetBytesPerPixel() == 16,
     "emission within [0, 1]: RGBA8 (albedo, normal, emission, depth)");
+
+  // NaN, infinite and negative emission: kept out, the prop lit as without.
+  scene.Pipeline->RemoveEffect("halve");
+  const double bad[3] = { std::nan(""), std::numeric_limits<double>::infinity(), -1.0 };
+  scene.Actor->GetPropertyKeys()->Set(GB::EMISSIVE_COLOR(), bad, 3);
+  const auto sane = scene.Centre();
+  const auto channel = vtkFXTest::Download(gb->GetChannelTexture(GB::Emission), 4);
+  for (float v : channel)
+  {
+    FX_CHECK(std::isfinite(v) && v >= 0.0f, "emission channel finite and >= 0: " << v);
+  }
+  std::cout << "bad emission: lit colour " << sane[0] << "," << sane[1] << "," << sane[2]
+            << std::endl;
+  // (vtkFXGBufferPass::GetEmissiveColor drops non-finite and negative
+  // components: 0.2 x 255 = 51 grey, as without emission)
+  FX_CHECK(std::abs(sane[0] - 51) <= 1 && std::abs(sane[1] - 51) <= 1 &&
+      std::abs(sane[2] - 51) <= 1,
+    "NaN, infinite and negative emission add nothing");
   return EXIT_SUCCESS;
 }
 }
