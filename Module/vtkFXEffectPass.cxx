@@ -103,13 +103,22 @@ const vtkFXEffectPass::InputPort* vtkFXEffectPass::FindInput(const char* name) c
   return nullptr;
 }
 
-void vtkFXEffectPass::SetInputConnection(const char* input, const char* source)
+vtkFXEffectPass::InputPort* vtkFXEffectPass::InputToChange(const char* name)
 {
-  InputPort* port = const_cast<InputPort*>(this->FindInput(input));
+  InputPort* port = const_cast<InputPort*>(this->FindInput(name));
   if (!port)
   {
-    vtkErrorMacro(<< this->GetClassName() << " has no input named '" << (input ? input : "")
+    vtkErrorMacro(<< this->GetClassName() << " has no input named '" << (name ? name : "")
                   << "'.");
+  }
+  return port;
+}
+
+void vtkFXEffectPass::SetInputConnection(const char* input, const char* source)
+{
+  InputPort* port = this->InputToChange(input);
+  if (!port)
+  {
     return;
   }
   const std::string connection = source ? source : "";
@@ -129,11 +138,9 @@ const char* vtkFXEffectPass::GetInputConnection(const char* input) const
 void vtkFXEffectPass::SetInputProducer(
   const char* input, vtkFXEffectPass* producer, const char* output)
 {
-  InputPort* port = const_cast<InputPort*>(this->FindInput(input));
+  InputPort* port = this->InputToChange(input);
   if (!port)
   {
-    vtkErrorMacro(<< this->GetClassName() << " has no input named '" << (input ? input : "")
-                  << "'.");
     return;
   }
   if (producer && (!output || !producer->HasOutput(output)))

@@ -222,6 +222,7 @@ private:
     std::string ProducerOutput;
   };
   const InputPort* FindInput(const char* name) const;
+  InputPort* InputToChange(const char* name); // reports an unknown name
   std::vector<InputPort> Inputs;
   std::vector<std::string> Outputs;
 };
