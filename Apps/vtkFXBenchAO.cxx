@@ -88,6 +88,7 @@ struct Method
   bool HalfResolution = true;
   bool Blur = true;
   int BlurRadius = 4;
+  int BlurKernel = vtkFXBilateralBlurPass::Gaussian;
   bool Upsample = false; // depth-aware upsample by the blur (else the composite's bilinear)
   vtkSmartPointer<vtkRenderWindow> Window;
   vtkSmartPointer<vtkRenderer> Renderer;
@@ -107,7 +108,8 @@ std::vector<Method> MakeMethods(int falloff)
   vtkNew<vtkFXPipelinePass> defaults;
   defaults->SetAmbientOcclusionFalloff(falloff); // its Medium preset
   vtkFXSSAOPass* ssao = defaults->GetSSAOPass();
-  auto fx = [&methods](int method, int samples, bool half, int blurRadius, bool upsample = false) {
+  auto fx = [&methods](int method, int samples, bool half, int blurRadius, bool upsample = false,
+              int kernel = vtkFXBilateralBlurPass::Gaussian) {
     Method m{ Kind::FX, method == vtkFXSSAOPass::Horizon ? "vtkfx-gtao" : "vtkfx-ssao" };
     m.Method = method;
     m.Samples = samples;
@@ -115,8 +117,11 @@ std::vector<Method> MakeMethods(int falloff)
     m.Blur = blurRadius > 0;
     m.BlurRadius = std::max(1, blurRadius);
     m.Upsample = half && blurRadius > 0 && upsample;
+    m.BlurKernel = kernel;
+    const bool box = kernel == vtkFXBilateralBlurPass::Box;
     m.Setting = std::to_string(samples) + (half ? " half" : " full") +
-      (blurRadius > 0 ? " blur" + std::to_string(blurRadius) : " noblur") + (m.Upsample ? " up" : "");
+      (blurRadius > 0 ? (box ? " box" : " blur") + std::to_string(blurRadius) : " noblur") +
+      (m.Upsample ? " up" : "");
     for (const auto& other : methods)
     {
       if (other.Name == m.Name && other.Setting == m.Setting)
@@ -126,9 +131,9 @@ std::vector<Method> MakeMethods(int falloff)
     }
     methods.push_back(m);
   };
+  vtkFXBilateralBlurPass* blur = defaults->GetOcclusionBlurPass();
   fx(ssao->GetMethod(), ssao->GetNumberOfSamples(), ssao->GetHalfResolution(),
-    defaults->GetOcclusionBlurPass()->GetEnabled() ? defaults->GetOcclusionBlurPass()->GetRadius()
-                                                    : 0);
+    blur->GetEnabled() ? blur->GetRadius() : 0, false, blur->GetKernel());
   // The presets of both falloffs, and neighbours of the default.
   for (int samples : { 8, 16, 32 })
   {
@@ -144,6 +149,13 @@ std::vector<Method> MakeMethods(int falloff)
   fx(vtkFXSSAOPass::Horizon, 16, true, 2, true);
   fx(vtkFXSSAOPass::Horizon, 8, false, 2);
   fx(vtkFXSSAOPass::Horizon, 16, false, 2);
+  const int box = vtkFXBilateralBlurPass::Box;
+  for (int samples : { 8, 16 })
+  {
+    fx(vtkFXSSAOPass::Hemisphere, samples, true, 2, false, box);
+    fx(vtkFXSSAOPass::Horizon, samples, true, 2, false, box);
+  }
+  fx(vtkFXSSAOPass::Horizon, 16, false, 2, false, box);
   for (int kernel : { 16, 32, 64, 128 })
   {
     for (bool blur : { false, true })
@@ -204,6 +216,7 @@ void Install(Method& m, double radius, int falloff)
         pipeline->GetSSAOPass()->SetFalloff(falloff);
         pipeline->GetOcclusionBlurPass()->SetEnabled(m.Blur);
         pipeline->GetOcclusionBlurPass()->SetRadius(m.BlurRadius);
+        pipeline->GetOcclusionBlurPass()->SetKernel(m.BlurKernel);
         pipeline->GetOcclusionBlurPass()->SetUpsample(m.Upsample);
       }
       m.Renderer->SetPass(pipeline);

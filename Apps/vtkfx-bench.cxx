@@ -4,10 +4,11 @@
 //   vtkfx-bench pipeline|ao [INPUT ...] [--size WxH] [--frames N] --out DIR
 //
 // "ao": see vtkFXBenchAO.cxx.
-// "pipeline": the vtkFX pipeline with no effect against VTK's forward render
-// of the same scene (the exact result it must reproduce). Two windows hold
-// identical copies of the scene, one with each renderer, and frames are
-// interleaved so that both see the same machine load. Writes
+// "pipeline": the vtkFX pipeline with no effect (which must reproduce VTK's
+// forward render of the same scene) and with its default ambient occlusion,
+// against that forward render. Three windows hold identical copies of the
+// scene, one per renderer, and frames are interleaved so that all see the
+// same machine load. Writes
 // DIR/pipeline.csv (scene, method, setting, ms, rmse, psnr) with the median
 // frame time over N frames (PSNR over the pixels that show data), and
 // prints the time ratio and the pipeline's per-pass GPU times per scene.
@@ -48,60 +49,90 @@ int BenchPipeline(const Options& o)
   }
   csv << "scene,method,setting,ms,rmse,psnr\n";
   vtkNew<vtkTimerLog> timer;
+  // VTK's forward render, then vtkFX with no effect and with its default
+  // ambient occlusion, each in its own window, frames interleaved so that
+  // all three see the same machine load.
+  struct Variant
+  {
+    std::string Setting;
+    bool AmbientOcclusion;
+    vtkSmartPointer<vtkRenderWindow> Window;
+    vtkSmartPointer<vtkFXPipelinePass> Pipeline;
+    std::vector<double> Ms;
+    std::map<std::string, std::vector<double>> PassMs;
+  };
   auto forward = MakeWindow(o);
-  auto deferred = MakeWindow(o);
+  std::vector<Variant> variants = { { "effects=none", false, MakeWindow(o) },
+    { "effects=ao", true, MakeWindow(o) } };
   for (size_t s = 0; s < o.Inputs.size(); ++s)
   {
     const std::string& input = o.Inputs[s];
     std::string error;
     auto forwardRenderer = Stage(forward, input, error);
-    auto deferredRenderer = Stage(deferred, input, error);
-    if (!forwardRenderer || !deferredRenderer)
+    if (!forwardRenderer)
     {
       std::cerr << "vtkfx-bench: " << error << "\n";
       return 1;
     }
-    vtkNew<vtkFXPipelinePass> pipeline;
-    deferredRenderer->SetPass(pipeline);
-    // Warm up: shader compilation and allocation are not part of a frame.
+    for (auto& v : variants)
+    {
+      auto renderer = Stage(v.Window, input, error);
+      if (!renderer)
+      {
+        std::cerr << "vtkfx-bench: " << error << "\n";
+        return 1;
+      }
+      v.Pipeline = vtkSmartPointer<vtkFXPipelinePass>::New();
+      v.Pipeline->SetAmbientOcclusion(v.AmbientOcclusion);
+      renderer->SetPass(v.Pipeline);
+      v.Ms.clear();
+      v.PassMs.clear();
+      v.Window->Render(); // warm up: shader compilation and allocation are not part of a frame
+    }
     forward->Render();
-    deferred->Render();
-    std::vector<double> vtkMs, fxMs;
-    std::map<std::string, std::vector<double>> passMs;
+    std::vector<double> vtkMs;
     for (int f = 0; f < o.Frames; ++f)
     {
       std::cerr << "\r[" << s + 1 << "/" << o.Inputs.size() << "] " << input << ": frame "
                 << f + 1 << "/" << o.Frames << std::flush;
       vtkMs.push_back(TimedRender(forward, timer));
-      fxMs.push_back(TimedRender(deferred, timer));
-      for (int i = 0; i < pipeline->GetNumberOfPassesThatRan(); ++i)
+      for (auto& v : variants)
       {
-        const double ms = pipeline->GetPassMilliseconds(pipeline->GetPassThatRan(i));
-        if (ms >= 0.0)
+        v.Ms.push_back(TimedRender(v.Window, timer));
+        for (int i = 0; i < v.Pipeline->GetNumberOfPassesThatRan(); ++i)
         {
-          passMs[pipeline->GetPassThatRan(i)].push_back(ms);
+          const std::string pass = v.Pipeline->GetPassThatRan(i);
+          const double ms = v.Pipeline->GetPassMilliseconds(pass.c_str());
+          if (ms >= 0.0)
+          {
+            v.PassMs[pass].push_back(ms);
+          }
         }
       }
     }
     std::cerr << "\n";
     const auto reference = vtkFXScenes::Capture(forward);
-    const auto image = vtkFXScenes::Capture(deferred);
     unsigned char background[3];
     vtkFXScenes::BackgroundBytes(forwardRenderer, background);
-    const double psnr = vtkFXScenes::PSNR(reference, image, background);
-    const double vtk = Median(vtkMs), fx = Median(fxMs);
+    const double vtk = Median(vtkMs);
     csv << input << ",vtk-forward,default," << vtk << ",0,inf\n";
-    csv << input << ",vtkfx-pipeline,effects=none," << fx << "," << RMSE(reference, image) << ","
-        << psnr << "\n";
-    std::ostringstream line;
-    line << std::fixed << std::setprecision(2) << input << ": VTK " << vtk << " ms, vtkFX " << fx
-         << " ms, ratio " << fx / vtk << ", PSNR " << psnr << " dB, G-buffer "
-         << pipeline->GetGBufferBytesPerPixel() << " B/px; GPU ms:";
-    for (const auto& pass : passMs)
+    for (auto& v : variants)
     {
-      line << " " << pass.first << " " << Median(pass.second);
+      const auto image = vtkFXScenes::Capture(v.Window);
+      const double psnr = vtkFXScenes::PSNR(reference, image, background);
+      const double fx = Median(v.Ms);
+      csv << input << ",vtkfx-pipeline," << v.Setting << "," << fx << ","
+          << RMSE(reference, image) << "," << psnr << "\n";
+      std::ostringstream line;
+      line << std::fixed << std::setprecision(2) << input << ": VTK " << vtk << " ms, vtkFX "
+           << v.Setting << " " << fx << " ms, ratio " << fx / vtk << ", PSNR " << psnr
+           << " dB, G-buffer " << v.Pipeline->GetGBufferBytesPerPixel() << " B/px; GPU ms:";
+      for (const auto& pass : v.PassMs)
+      {
+        line << " " << pass.first << " " << Median(pass.second);
+      }
+      std::cout << line.str() << std::endl;
     }
-    std::cout << line.str() << std::endl;
   }
   std::cout << "wrote " << csvPath << " (" << o.Width << "x" << o.Height << ", median of "
             << o.Frames << " interleaved frames)\n";
@@ -112,8 +143,9 @@ void Usage(std::ostream& os)
 {
   os << "usage: vtkfx-bench pipeline|ao [INPUT ...] [--size WxH] [--frames N]\n"
         "                   [--falloff binary|cuberoot] --out DIR\n"
-        "pipeline: vtkFX without effects against VTK's forward render (default: every\n"
-        "          built-in scene, the bunny and the fandisk, 1280x720)\n"
+        "pipeline: vtkFX without effects and with its default ambient occlusion against\n"
+        "          VTK's forward render (default: every built-in scene, the bunny and\n"
+        "          the fandisk, 1280x720)\n"
         "ao:       ambient occlusion against a ray-traced reference, vtkFX's and VTK's\n"
         "          (default: scene:corner, bunny, fandisk, 1crn.pdb, 640x480), with\n"
         "          visibility within R (--falloff binary, the default) or the\n"

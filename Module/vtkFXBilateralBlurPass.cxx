@@ -67,7 +67,8 @@ void vtkFXBilateralBlurPass::RunStage(int mode, vtkOpenGLRenderWindow* window,
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
     "//VTK::System::Dec\n#define FX_MODE " + std::to_string(mode) + "\n#define FX_PACKED " +
       (packed ? "1" : "0") + "\n#define FX_NORMAL_POWER " +
-      std::to_string(packed ? 0 : this->NormalPower) + "\n",
+      std::to_string(packed ? 0 : this->NormalPower) + "\n#define FX_BOX " +
+      (this->Kernel == Box ? "1" : "0") + "\n",
     false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXJointUpsample::Dec", vtkFXJointUpsample, false);
@@ -204,5 +205,6 @@ void vtkFXBilateralBlurPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DepthSigma: " << this->DepthSigma << "\n";
   os << indent << "NormalPower: " << this->NormalPower << "\n";
   os << indent << "NumberOfComponents: " << this->NumberOfComponents << "\n";
+  os << indent << "Kernel: " << (this->Kernel == Box ? "Box" : "Gaussian") << "\n";
   os << indent << "Upsample: " << this->Upsample << "\n";
 }

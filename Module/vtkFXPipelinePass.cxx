@@ -643,12 +643,15 @@ void vtkFXPipelinePass::ApplyAmbientOcclusionPreset()
   {
     int Method, Samples;
     bool Half;
-    int BlurRadius;
+    int BlurRadius, BlurKernel;
   };
   using S = vtkFXSSAOPass;
+  const int gauss = vtkFXBilateralBlurPass::Gaussian, box = vtkFXBilateralBlurPass::Box;
   static const Preset presets[2][3] = {
-    { { S::Hemisphere, 8, true, 4 }, { S::Horizon, 16, true, 4 }, { S::Horizon, 16, false, 2 } },
-    { { S::Hemisphere, 8, true, 4 }, { S::Horizon, 8, true, 4 }, { S::Hemisphere, 16, true, 4 } },
+    { { S::Hemisphere, 8, true, 4, gauss }, { S::Horizon, 16, true, 4, gauss },
+      { S::Horizon, 16, false, 2, box } },
+    { { S::Hemisphere, 8, true, 4, gauss }, { S::Horizon, 8, true, 4, gauss },
+      { S::Hemisphere, 16, true, 4, gauss } },
   };
   const Preset& p = presets[this->SSAOPass->GetFalloff() == S::CubeRoot ? 1 : 0]
                            [this->AmbientOcclusionQuality];
@@ -656,6 +659,7 @@ void vtkFXPipelinePass::ApplyAmbientOcclusionPreset()
   this->SSAOPass->SetNumberOfSamples(p.Samples);
   this->SSAOPass->SetHalfResolution(p.Half);
   this->OcclusionBlurPass->SetRadius(p.BlurRadius);
+  this->OcclusionBlurPass->SetKernel(p.BlurKernel);
   this->OcclusionBlurPass->EnabledOn();
 }
 

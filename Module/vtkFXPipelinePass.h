@@ -156,7 +156,9 @@ public:
    *   preset        Binary (default)              CubeRoot
    *   Low           hemisphere 8, half, blur 4    hemisphere 8, half, blur 4
    *   Medium (def.) horizon 16, half, blur 4      horizon 8, half, blur 4
-   *   High          horizon 16, full, blur 2      hemisphere 16, half, blur 4
+   *   High          horizon 16, full, box 2       hemisphere 16, half, blur 4
+   *
+   * (blur N: Gaussian of radius N; box 2: vtkFXBilateralBlurPass::Box.)
    *
    * Medium is ahead of every vtkSSAOPass setting on PSNR at a lower cost on
    * the bench scenes; Low costs about the same (cheaper on some scenes) and,

@@ -29,6 +29,9 @@ namespace
 {
 using GB = vtkFXGBufferPass;
 
+// Slices of the horizon method: its samples are 2 sides x steps x slices.
+constexpr int HorizonSlices = 2;
+
 // Radical inverse of i in `base`: a low-discrepancy sequence in [0,1), so
 // that few samples already cover the hemisphere evenly and deterministically.
 double RadicalInverse(unsigned int i, unsigned int base)
@@ -177,14 +180,44 @@ void vtkFXSSAOPass::SetKernelUniforms(vtkShaderProgram* program) const
   // 4x4 tile of rotations within one azimuth stratum (2 pi / n), in the
   // order of a 4x4 ordered-dither matrix so that neighbours differ most.
   static const int order[16] = { 0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5 };
-  float noise[32];
+  float tile[16][4];
   for (int i = 0; i < 16; ++i)
   {
-    const double angle = 2.0 * vtkMath::Pi() / n * (order[i] + 0.5) / 16.0;
-    noise[2 * i] = static_cast<float>(std::cos(angle));
-    noise[2 * i + 1] = static_cast<float>(std::sin(angle));
+    // The entry's place within the stratum, in [0, 1).
+    const double jitter = (order[i] + 0.5) / 16.0;
+    if (this->Method == Hemisphere)
+    {
+      const double angle = 2.0 * vtkMath::Pi() / n * jitter;
+      tile[i][0] = static_cast<float>(std::cos(angle));
+      tile[i][1] = static_cast<float>(std::sin(angle));
+      tile[i][2] = 0.0f;
+    }
+    else
+    {
+      // The horizon method's slices cover half a turn (each looks both
+      // ways); the steps' offset takes the low bits of the rank (see
+      // fxHorizonOcclusion).
+      const double angle = vtkMath::Pi() * jitter / HorizonSlices;
+      tile[i][0] = static_cast<float>(std::cos(angle));
+      tile[i][1] = static_cast<float>(std::sin(angle));
+      tile[i][2] = static_cast<float>(jitter * 4.0 - std::floor(jitter * 4.0));
+    }
+    tile[i][3] = 0.0f;
   }
-  program->SetUniform2fv("fxNoise", 16, reinterpret_cast<const float(*)[2]>(noise));
+  if (this->Method == Hemisphere)
+  {
+    float noise[16][2];
+    for (int i = 0; i < 16; ++i)
+    {
+      noise[i][0] = tile[i][0];
+      noise[i][1] = tile[i][1];
+    }
+    program->SetUniform2fv("fxNoise", 16, noise);
+  }
+  else
+  {
+    program->SetUniform4fv("fxTile", 16, tile);
+  }
 }
 
 void vtkFXSSAOPass::Render(const vtkRenderState* s)
@@ -208,7 +241,7 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   this->Occlusion->SetMagnificationFilter(vtkTextureObject::Linear);
 
   std::ostringstream defines;
-  const int slices = 2;
+  const int slices = HorizonSlices;
   defines << "//VTK::System::Dec\n#define FX_SAMPLES " << this->NumberOfSamples
           << "\n#define FX_METHOD " << this->Method << "\n#define FX_FALLOFF " << this->Falloff
           << "\n#define FX_SLICES " << slices

@@ -13,6 +13,10 @@
 //                                          near 0 and cheaper than exp)
 //   max(0, n . n0)^p                      (no bleeding across creases; p is
 //                                          a compile-time integer, FX_NORMAL_POWER)
+// With FX_BOX the distance weight is a box whose two end taps weigh 1/2:
+// every phase of a period-(2 x radius) pattern, such as the SSAO pass's
+// tiled noise, then counts once, up to the depth weights (the tiled-noise
+// blur of Crytek's SSAO, Mittring 2007, centred).
 // The upsample is vtkFXJointUpsample.glsl's.
 // FX_MODE: 3 guide: normal and depth of each input texel, once, so that the
 //            taps below fetch one texel instead of two and decode nothing;
@@ -108,7 +112,12 @@ void main()
       continue;
     }
     vec4 tap = texelFetch(fxInput, q, 0);
-    float w = exp(-0.5 * float(i * i) / (sigma * sigma)) * fxGuideWeight(d0, n0, fxTapGuide(q, tap, n0));
+#if FX_BOX
+    float distanceWeight = abs(i) == fxRadius ? 0.5 : 1.0;
+#else
+    float distanceWeight = exp(-0.5 * float(i * i) / (sigma * sigma));
+#endif
+    float w = distanceWeight * fxGuideWeight(d0, n0, fxTapGuide(q, tap, n0));
     sum += w * tap;
     total += w;
   }

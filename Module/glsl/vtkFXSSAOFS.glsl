@@ -42,8 +42,10 @@ uniform vec3 fxRayDirection[3];
 uniform mat4 fxProjection;    // view -> clip coordinates
 #if FX_METHOD == 0
 uniform vec4 fxKernel[FX_SAMPLES];
+uniform vec2 fxNoise[16];     // rotation (cos, sin) per entry of the 4x4 tile
+#else
+uniform vec4 fxTile[16];      // first slice direction (x, y), step offset
 #endif
-uniform vec2 fxNoise[16];
 uniform float fxRadius;       // world units
 uniform float fxBias;         // world units
 const float fxPi = 3.14159265358979;
@@ -143,7 +145,7 @@ float fxFastAcos(float x)
 // height field with enough steps; with FX_STEPS of 2 to 8 an estimate. A
 // horizon sample counts fully within R (FX_FALLOFF 0) or fades out
 // (towards the lowest horizon) from 0.385 R to R (FX_FALLOFF 1).
-float fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec2 rotation)
+float fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec4 tile)
 {
   vec3 rayOrigin, rayDirection;
   fxTexelRay(texel, rayOrigin, rayDirection);
@@ -157,27 +159,29 @@ float fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec2 rotation
   // bright by up to 0.08 in a band, the step by about half that; the step
   // also measured 0.5 to 1.3 dB closer to the ray-traced reference on three
   // of the four bench scenes).
-  float falloffRange = (FX_FALLOFF == 0 ? 0.001 : 0.615) * fxRadius;
+#if FX_FALLOFF == 1
+  float falloffRange = 0.615 * fxRadius;
   float falloffMul = -1.0 / falloffRange;
   float falloffAdd = (fxRadius - falloffRange) / falloffRange + 1.0;
-  // The tile's rotation, within one stratum of 2 pi / FX_SAMPLES, as [0, 1).
-  float jitter = fract(atan(rotation.y, rotation.x) * float(FX_SAMPLES) / (2.0 * fxPi));
-  // The steps' own offset over a whole step, from the low bits of the tile
-  // entry's rank: each offset meets rotations spread over the whole
-  // stratum, so the blur averages step positions independently of
-  // directions. (The high bits, a finer 2x2 pattern, follow the rotation:
-  // offset and direction then move together and draw arcs at the step
-  // distances around raised objects, as did an offset spread over half a
-  // step. The low bits form 2x2 blocks, which any blur of radius 2 or more
-  // averages.) Shifted by half a step so the steps sample out to R
-  // (starting at 0, the last step stopped at 0.77 R on average and creases
-  // read too open); clamped there.
-  float stepJitter = fract(jitter * 4.0);
+#endif
+  float radiusSquared = fxRadius * fxRadius;
+  // The tile entry: the first slice's direction, at (jitter / FX_SLICES) x pi
+  // for the entry's jitter within its stratum, and the steps' offset (both
+  // computed once on the CPU, vtkFXSSAOPass::SetKernelUniforms). The offset
+  // comes from the low bits of the entry's rank: each offset meets
+  // rotations spread over the whole stratum, so the blur averages step
+  // positions independently of directions. (The high bits, a finer 2x2
+  // pattern, follow the rotation: offset and direction then move together
+  // and draw arcs at the step distances around raised objects, as did an
+  // offset spread over half a step. The low bits form 2x2 blocks, which any
+  // blur of radius 2 or more averages.) Shifted by half a step so the steps
+  // sample out to R (starting at 0, the last step stopped at 0.77 R on
+  // average and creases read too open); clamped there.
+  vec3 direction = vec3(tile.xy, 0.0);
+  float stepJitter = tile.z;
   float visibility = 0.0;
-  // Slice directions at (slice + jitter) / FX_SLICES x pi: the first from
-  // cos and sin, the next ones by rotating it (no trigonometry per slice).
-  float phi = jitter / float(FX_SLICES) * fxPi;
-  vec3 direction = vec3(cos(phi), sin(phi), 0.0);
+  // The next slices' directions by rotating the first (no trigonometry per
+  // slice).
   const float sliceStep = fxPi / float(FX_SLICES);
   const vec2 sliceRotation = vec2(cos(sliceStep), sin(sliceStep));
   for (int slice = 0; slice < FX_SLICES; ++slice)
@@ -219,13 +223,19 @@ float fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec2 rotation
         vec3 o, d;
         fxTexelRay(q, o, d);
         vec3 delta = o + sampleDepth * d - p;
-        float distance = length(delta);
+        float distanceSquared = dot(delta, delta);
         // The texel is off the slice by up to half a texel: measure its
         // elevation within the slice plane, or a flat receiver's own
-        // texels would rise above its tangent line.
-        delta -= axis * dot(delta, axis);
-        float weight = clamp(distance * falloffMul + falloffAdd, 0.0, 1.0);
-        float c = dot(normalize(delta), view);
+        // texels would rise above its tangent line. With `axis`
+        // perpendicular to `view`, removing delta's part along `axis`
+        // leaves its part along `view` unchanged: only the length shrinks.
+        float offSlice = dot(delta, axis);
+        float c = dot(delta, view) * inversesqrt(max(distanceSquared - offSlice * offSlice, 1e-30));
+#if FX_FALLOFF == 0
+        float weight = distanceSquared < radiusSquared ? 1.0 : 0.0;
+#else
+        float weight = clamp(sqrt(distanceSquared) * falloffMul + falloffAdd, 0.0, 1.0);
+#endif
         if (side == 0)
         {
           horizon0 = max(horizon0, mix(lowest0, c, weight));
@@ -271,11 +281,11 @@ void main()
   vec3 p = fxViewPosition(ndc, depth);
   vec3 n = fxDecodeNormal(code);
 
-  vec2 rotation = fxNoise[(pixel.x & 3) + 4 * (pixel.y & 3)];
+  int tileEntry = (pixel.x & 3) + 4 * (pixel.y & 3);
 #if FX_METHOD == 0
-  float ao = fxHemisphereOcclusion(p, n, depth, rotation);
+  float ao = fxHemisphereOcclusion(p, n, depth, fxNoise[tileEntry]);
 #else
-  float ao = fxHorizonOcclusion(texel, p, n, depth, rotation);
+  float ao = fxHorizonOcclusion(texel, p, n, depth, fxTile[tileEntry]);
 #endif
   // The depth rides along as the blur's guide.
   gl_FragData[0] = vec4(ao, depth, 0.0, 1.0);

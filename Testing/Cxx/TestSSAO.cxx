@@ -166,6 +166,31 @@ void ViewPlane(Setup& s, double elevation)
 
 // Lowest occlusion (values above 1 count as 1) over the pixels of that
 // plane more than `margin` from its border; `inside` counts them.
+// Mean |v(x) - v(x + 2)| over horizontal and vertical pairs of texels that
+// both show a surface, in a (value, depth) image of w x h: what a pattern
+// of period 4 leaves (its two halves differ) and a smooth image does not.
+double TileResidual(const std::vector<float>& values, int w, int h)
+{
+  double sum = 0.0;
+  int count = 0;
+  for (int y = 0; y + 2 < h; ++y)
+  {
+    for (int x = 0; x + 2 < w; ++x)
+    {
+      const size_t i = 2 * (static_cast<size_t>(y) * w + x);
+      for (size_t j : { i + 4, i + 4 * static_cast<size_t>(w) })
+      {
+        if (values[i + 1] > 0.0f && values[j + 1] > 0.0f)
+        {
+          sum += std::fabs(values[i] - values[j]);
+          ++count;
+        }
+      }
+    }
+  }
+  return count ? sum / count : 0.0;
+}
+
 float LowestOnPlane(const std::vector<float>& ao,
   const std::vector<std::array<double, 4>>& world, double margin, int& inside)
 {
@@ -432,6 +457,27 @@ int TestSSAO(int, char*[])
     // what the horizon-based mode guarantees (stated in vtkFXSSAOPass.h;
     // measured 0.941 at 20 degrees).
     FX_CHECK(inside > 1000 && lowest >= 0.93f, "a flat plane is nearly unoccluded (horizon-based)");
+
+    // Left at half resolution, the 4x4 noise tile shows as values that
+    // differ between texels 2 apart (half its period). The box kernel of
+    // radius 2 holds each tile entry once, up to the depth weights, and
+    // should leave less of it than the Gaussian of the same radius.
+    double tileResidual[2] = { 0.0, 0.0 };
+    for (int kernel : { vtkFXBilateralBlurPass::Gaussian, vtkFXBilateralBlurPass::Box })
+    {
+      s.Pipeline->GetOcclusionBlurPass()->SetKernel(kernel);
+      s.Pipeline->GetOcclusionBlurPass()->SetRadius(2);
+      s.Pipeline->GetOcclusionBlurPass()->UpsampleOff();
+      window->Render();
+      vtkTextureObject* half = s.Pipeline->GetOcclusionBlurPass()->GetOutputTexture();
+      tileResidual[kernel] = TileResidual(vtkFXTest::Download(half, 2),
+        static_cast<int>(half->GetWidth()), static_cast<int>(half->GetHeight()));
+    }
+    s.Pipeline->GetOcclusionBlurPass()->SetKernel(vtkFXBilateralBlurPass::Gaussian);
+    s.Pipeline->GetOcclusionBlurPass()->SetRadius(4);
+    std::cout << "  noise tile left by a blur of radius 2 (mean |v(x) - v(x + 2)|): Gaussian "
+              << tileResidual[0] << ", box " << tileResidual[1] << std::endl;
+    FX_CHECK(tileResidual[1] < 0.5 * tileResidual[0], "the box kernel cancels the noise tile");
   }
   return EXIT_SUCCESS;
 }
