@@ -436,8 +436,10 @@ int main(int argc, char* argv[])
               << (ssao->GetMethod() == vtkFXSSAOPass::Horizon ? "horizon" : "hemisphere") << " "
               << ssao->GetNumberOfSamples() << " samples, "
               << (ssao->GetHalfResolution() ? "half" : "full") << " resolution, "
-              << (blur->GetEnabled() ? "blur radius " + std::to_string(blur->GetRadius())
-                                     : std::string("no blur"))
+              << (blur->GetEnabled()
+                       ? std::string(blur->GetKernel() == vtkFXBilateralBlurPass::Box ? "box " : "") +
+                         "blur radius " + std::to_string(blur->GetRadius())
+                       : std::string("no blur"))
               << "\n";
   }
 
