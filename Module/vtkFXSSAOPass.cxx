@@ -183,41 +183,19 @@ void vtkFXSSAOPass::SetKernelUniforms(vtkShaderProgram* program) const
   float tile[16][4];
   for (int i = 0; i < 16; ++i)
   {
-    // The entry's place within the stratum, in [0, 1).
+    // The entry's place within the stratum, in [0, 1). The hemisphere's
+    // rotation covers a stratum of the whole turn; the horizon method's
+    // slices cover half a turn (each looks both ways) and take a step
+    // offset from the low bits of the rank (see fxHorizonOcclusion).
     const double jitter = (order[i] + 0.5) / 16.0;
-    if (this->Method == Hemisphere)
-    {
-      const double angle = 2.0 * vtkMath::Pi() / n * jitter;
-      tile[i][0] = static_cast<float>(std::cos(angle));
-      tile[i][1] = static_cast<float>(std::sin(angle));
-      tile[i][2] = 0.0f;
-    }
-    else
-    {
-      // The horizon method's slices cover half a turn (each looks both
-      // ways); the steps' offset takes the low bits of the rank (see
-      // fxHorizonOcclusion).
-      const double angle = vtkMath::Pi() * jitter / HorizonSlices;
-      tile[i][0] = static_cast<float>(std::cos(angle));
-      tile[i][1] = static_cast<float>(std::sin(angle));
-      tile[i][2] = static_cast<float>(jitter * 4.0 - std::floor(jitter * 4.0));
-    }
+    const double angle = this->Method == Hemisphere ? 2.0 * vtkMath::Pi() / n * jitter
+                                                    : vtkMath::Pi() * jitter / HorizonSlices;
+    tile[i][0] = static_cast<float>(std::cos(angle));
+    tile[i][1] = static_cast<float>(std::sin(angle));
+    tile[i][2] = static_cast<float>(jitter * 4.0 - std::floor(jitter * 4.0));
     tile[i][3] = 0.0f;
   }
-  if (this->Method == Hemisphere)
-  {
-    float noise[16][2];
-    for (int i = 0; i < 16; ++i)
-    {
-      noise[i][0] = tile[i][0];
-      noise[i][1] = tile[i][1];
-    }
-    program->SetUniform2fv("fxNoise", 16, noise);
-  }
-  else
-  {
-    program->SetUniform4fv("fxTile", 16, tile);
-  }
+  program->SetUniform4fv("fxTile", 16, tile);
 }
 
 void vtkFXSSAOPass::Render(const vtkRenderState* s)

@@ -42,10 +42,11 @@ uniform vec3 fxRayDirection[3];
 uniform mat4 fxProjection;    // view -> clip coordinates
 #if FX_METHOD == 0
 uniform vec4 fxKernel[FX_SAMPLES];
-uniform vec2 fxNoise[16];     // rotation (cos, sin) per entry of the 4x4 tile
-#else
-uniform vec4 fxTile[16];      // first slice direction (x, y), step offset
 #endif
+// Per entry of the 4x4 tile: the kernel's rotation (hemisphere) or the
+// first slice's direction (horizon) as (cos, sin), and the horizon steps'
+// offset.
+uniform vec4 fxTile[16];
 uniform float fxRadius;       // world units
 uniform float fxBias;         // world units
 const float fxPi = 3.14159265358979;
@@ -283,7 +284,7 @@ void main()
 
   int tileEntry = (pixel.x & 3) + 4 * (pixel.y & 3);
 #if FX_METHOD == 0
-  float ao = fxHemisphereOcclusion(p, n, depth, fxNoise[tileEntry]);
+  float ao = fxHemisphereOcclusion(p, n, depth, fxTile[tileEntry].xy);
 #else
   float ao = fxHorizonOcclusion(texel, p, n, depth, fxTile[tileEntry]);
 #endif
