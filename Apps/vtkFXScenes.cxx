@@ -834,3 +834,33 @@ void vtkFXScenes::BackgroundBytes(vtkRenderer* renderer, unsigned char rgb[3])
     rgb[c] = static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, std::max(0.0, bg[c]))));
   }
 }
+
+bool vtkFXScenes::LoadRGB(const std::string& path, std::vector<unsigned char>& rgb, int size[2])
+{
+  vtkNew<vtkPNGReader> reader;
+  if (!reader->CanReadFile(path.c_str()))
+  {
+    return false;
+  }
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  vtkUnsignedCharArray* scalars =
+    vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
+  if (!scalars)
+  {
+    return false;
+  }
+  const int comps = scalars->GetNumberOfComponents();
+  size[0] = image->GetDimensions()[0];
+  size[1] = image->GetDimensions()[1];
+  rgb.clear();
+  for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      rgb.push_back(scalars->GetValue(i * comps + std::min(c, comps - 1)));
+    }
+  }
+  return true;
+}

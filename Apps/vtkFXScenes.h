@@ -78,6 +78,12 @@ void BackgroundBytes(vtkRenderer* renderer, unsigned char rgb[3]);
  * The window's current image as RGB bytes (bottom row first).
  */
 std::vector<unsigned char> Capture(vtkRenderWindow* window);
+
+/**
+ * A PNG file as RGB bytes (bottom row first, as Capture), and its size;
+ * false when it cannot be read.
+ */
+bool LoadRGB(const std::string& path, std::vector<unsigned char>& rgb, int size[2]);
 }
 
 #endif

@@ -5,16 +5,19 @@
 //
 // "ao": see vtkFXBenchAO.cxx.
 // "pipeline": the vtkFX pipeline with no effect (which must reproduce VTK's
-// forward render of the same scene) and with its default ambient occlusion,
-// against that forward render. Three windows hold identical copies of the
+// forward render of the same scene), with its default ambient occlusion and
+// with toon shading (bands and feature lines, vtkFXToonPass's defaults),
+// against that forward render. Four windows hold identical copies of the
 // scene, one per renderer, and frames are interleaved so that all see the
 // same machine load. Writes
 // DIR/pipeline.csv (scene, method, setting, ms, rmse, psnr) with the median
 // frame time over N frames (PSNR over the pixels that show data), and
-// prints the time ratio and the pipeline's per-pass GPU times per scene.
+// prints the time ratios (to VTK, and to vtkFX without effects) and the
+// pipeline's per-pass GPU times per scene.
 #include "vtkFXBench.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
+#include "vtkFXToonPass.h"
 
 #include "vtkNew.h"
 #include "vtkRenderWindow.h"
@@ -27,6 +30,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -49,21 +53,26 @@ int BenchPipeline(const Options& o)
   }
   csv << "scene,method,setting,ms,rmse,psnr\n";
   vtkNew<vtkTimerLog> timer;
-  // VTK's forward render, then vtkFX with no effect and with its default
-  // ambient occlusion, each in its own window, frames interleaved so that
-  // all three see the same machine load.
+  // VTK's forward render, then vtkFX with no effect, with its default
+  // ambient occlusion and with toon shading, each in its own window, frames
+  // interleaved so that all see the same machine load.
   struct Variant
   {
     std::string Setting;
-    bool AmbientOcclusion;
+    std::function<void(vtkFXPipelinePass*)> Configure;
     vtkSmartPointer<vtkRenderWindow> Window;
     vtkSmartPointer<vtkFXPipelinePass> Pipeline;
     std::vector<double> Ms;
     std::map<std::string, std::vector<double>> PassMs;
   };
   auto forward = MakeWindow(o);
-  std::vector<Variant> variants = { { "effects=none", false, MakeWindow(o) },
-    { "effects=ao", true, MakeWindow(o) } };
+  const auto toon = [](vtkFXPipelinePass* p) {
+    vtkNew<vtkFXToonPass> effect;
+    p->AddEffect("toon", effect);
+  };
+  std::vector<Variant> variants = { { "effects=none", [](vtkFXPipelinePass*) {}, MakeWindow(o) },
+    { "effects=ao", [](vtkFXPipelinePass* p) { p->AmbientOcclusionOn(); }, MakeWindow(o) },
+    { "effects=toon", toon, MakeWindow(o) } };
   for (size_t s = 0; s < o.Inputs.size(); ++s)
   {
     const std::string& input = o.Inputs[s];
@@ -83,7 +92,7 @@ int BenchPipeline(const Options& o)
         return 1;
       }
       v.Pipeline = vtkSmartPointer<vtkFXPipelinePass>::New();
-      v.Pipeline->SetAmbientOcclusion(v.AmbientOcclusion);
+      v.Configure(v.Pipeline);
       renderer->SetPass(v.Pipeline);
       v.Ms.clear();
       v.PassMs.clear();
@@ -115,6 +124,7 @@ int BenchPipeline(const Options& o)
     unsigned char background[3];
     vtkFXScenes::BackgroundBytes(forwardRenderer, background);
     const double vtk = Median(vtkMs);
+    const double none = Median(variants.front().Ms);
     csv << input << ",vtk-forward,default," << vtk << ",0,inf\n";
     for (auto& v : variants)
     {
@@ -125,7 +135,8 @@ int BenchPipeline(const Options& o)
           << RMSE(reference, image) << "," << psnr << "\n";
       std::ostringstream line;
       line << std::fixed << std::setprecision(2) << input << ": VTK " << vtk << " ms, vtkFX "
-           << v.Setting << " " << fx << " ms, ratio " << fx / vtk << ", PSNR " << psnr
+           << v.Setting << " " << fx << " ms, ratio " << fx / vtk << " (" << fx / none
+           << " x effects=none), PSNR " << psnr
            << " dB, G-buffer " << v.Pipeline->GetGBufferBytesPerPixel() << " B/px; GPU ms:";
       for (const auto& pass : v.PassMs)
       {
@@ -143,7 +154,8 @@ void Usage(std::ostream& os)
 {
   os << "usage: vtkfx-bench pipeline|ao [INPUT ...] [--size WxH] [--frames N]\n"
         "                   [--falloff binary|cuberoot] --out DIR\n"
-        "pipeline: vtkFX without effects and with its default ambient occlusion against\n"
+        "pipeline: vtkFX without effects, with its default ambient occlusion and with\n"
+        "          toon shading against\n"
         "          VTK's forward render (default: every built-in scene, the bunny and\n"
         "          the fandisk, 1280x720)\n"
         "ao:       ambient occlusion against a ray-traced reference, vtkFX's and VTK's\n"

@@ -5,48 +5,12 @@
 // Exits 1 when the images differ in size or the PSNR is below --min-psnr.
 #include "vtkFXScenes.h"
 
-#include "vtkImageData.h"
 #include "vtkNew.h"
-#include "vtkPNGReader.h"
-#include "vtkPointData.h"
-#include "vtkUnsignedCharArray.h"
 
 #include <cstdlib>
 #include <iostream>
 #include <string>
 
-namespace
-{
-bool LoadRGB(const std::string& path, std::vector<unsigned char>& rgb, int size[2])
-{
-  vtkNew<vtkPNGReader> reader;
-  if (!reader->CanReadFile(path.c_str()))
-  {
-    return false;
-  }
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkImageData* image = reader->GetOutput();
-  vtkUnsignedCharArray* scalars =
-    vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
-  if (!scalars)
-  {
-    return false;
-  }
-  const int comps = scalars->GetNumberOfComponents();
-  size[0] = image->GetDimensions()[0];
-  size[1] = image->GetDimensions()[1];
-  rgb.clear();
-  for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      rgb.push_back(scalars->GetValue(i * comps + std::min(c, comps - 1)));
-    }
-  }
-  return true;
-}
-}
 
 int main(int argc, char* argv[])
 {
@@ -59,7 +23,7 @@ int main(int argc, char* argv[])
   int sa[2], sb[2];
   for (int i = 1; i <= 2; ++i)
   {
-    if (!LoadRGB(argv[i], i == 1 ? a : b, i == 1 ? sa : sb))
+    if (!vtkFXScenes::LoadRGB(argv[i], i == 1 ? a : b, i == 1 ? sa : sb))
     {
       std::cerr << "vtkfx-compare: cannot read '" << argv[i] << "' as a PNG image\n";
       return 2;

@@ -10,6 +10,7 @@
 
 #include "vtkFXBilateralBlurPass.h"
 #include "vtkFXSSAOPass.h"
+#include "vtkFXToonPass.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
@@ -52,9 +53,10 @@ struct Arguments
   bool AOOptions = false; // any --ao-* option given
 };
 
-// Effects the pipeline knows: "ssao" (screen-space ambient occlusion) and
-// "blur" (its depth/normal-aware blur and upsampling).
-const std::vector<std::string> KnownEffects = { "ssao", "blur" };
+// Effects the pipeline knows: "ssao" (screen-space ambient occlusion),
+// "blur" (its depth/normal-aware blur and upsampling), "toon" (banded
+// diffuse light and feature lines) and "lines" (the feature lines alone).
+const std::vector<std::string> KnownEffects = { "ssao", "blur", "toon", "lines" };
 
 void Usage(std::ostream& os)
 {
@@ -64,6 +66,8 @@ void Usage(std::ostream& os)
         "                                     occlusion]\n"
         "                    [--no-ground] [--ao-radius R | --ao-radius-fraction F]\n"
         "                    [--ao-quality low|medium|high] [--ao-falloff binary|cuberoot]\n"
+        "LIST: comma-separated effects: ssao, blur (ssao,blur: ambient occlusion),\n"
+        "      toon (banded light and feature lines) or lines (feature lines alone)\n"
         "INPUT: a .obj, .ply, .stl, .vtp, .vtk or .pdb file, or one of:";
   for (const auto& name : vtkFXScenes::BuiltInSceneNames())
   {
@@ -268,6 +272,11 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
     error = "effect 'blur' blurs an occlusion effect: use --effects ssao,blur";
     return false;
   }
+  if (has("toon") && has("lines"))
+  {
+    error = "'toon' already draws feature lines: give --effects toon, or lines without bands";
+    return false;
+  }
   if (args.AORadius > 0.0 && args.AORadiusFraction > 0.0)
   {
     error = "give --ao-radius (world units) or --ao-radius-fraction, not both";
@@ -359,6 +368,12 @@ int main(int argc, char* argv[])
       pipeline->GetSSAOPass()->SetRadiusFraction(args.AORadiusFraction);
     }
     pipeline->GetOcclusionBlurPass()->SetEnabled(has("blur"));
+    if (has("toon") || has("lines"))
+    {
+      vtkNew<vtkFXToonPass> toon;
+      toon->SetBands(has("toon"));
+      pipeline->AddEffect("toon", toon);
+    }
     if (args.DebugChannel == "occlusion")
     {
       pipeline->GetCompositePass()->DebugOcclusionOn();
@@ -441,6 +456,23 @@ int main(int argc, char* argv[])
                          "blur radius " + std::to_string(blur->GetRadius())
                        : std::string("no blur"))
               << "\n";
+  }
+  auto* toon = args.PlainVTK ? nullptr : vtkFXToonPass::SafeDownCast(pipeline->GetEffect("toon"));
+  if (toon)
+  {
+    std::cout << "toon: ";
+    if (toon->GetBands())
+    {
+      std::cout << "bands at";
+      for (int i = 0; i < toon->GetNumberOfBandThresholds(); ++i)
+      {
+        std::cout << " " << toon->GetBandThreshold(i);
+      }
+      std::cout << ", ";
+    }
+    std::cout << "lines " << toon->GetLineWidth() << " px at " << toon->GetLineReferenceHeight()
+              << " rows (" << toon->GetEffectiveLineWidth(args.Height) << " px here), crease angle "
+              << toon->GetCreaseAngle() << " degrees\n";
   }
 
   if (!args.Stats.empty())

@@ -257,6 +257,8 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
   vtkShaderProgram::Substitute(
     fs, "//VTK::FXEffects::Ambient", hooks[vtkFXEffectPass::Ambient], false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXEffects::Color", hooks[vtkFXEffectPass::Color], false);
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::FXEffects::DiffuseResponse", hooks[vtkFXEffectPass::DiffuseResponse], false);
   return fs;
 }
 

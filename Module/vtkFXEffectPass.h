@@ -25,7 +25,8 @@
  * - Composite: no pass of its own; contributes composite code only;
  * - PostProcess: after the lit image, forward-opaque, translucent props and
  *   volumes, before the 2D overlay; it draws into the pipeline's HDR target
- *   (RGBA16F), which the pipeline allocates only while such an effect runs.
+ *   (RGBA16F), which the pipeline allocates only while such an effect runs
+ *   and needs it (GetNeedsHDRTarget), else into the framebuffer.
  *
  * Composite hook points (CompositeHook), in the order they run per pixel:
  * - Declarations: uniforms and functions;
@@ -37,6 +38,12 @@
  *   `diffuseLight` and `specularLight`;
  * - Color: may change the final `color` (vec3) of lit and unlit pixels
  *   (`lit` tells which).
+ * - DiffuseResponse: inside each light's computation, may reshape `df`,
+ *   the light's diffuse factor (max(0, n.l) times its attenuation), before
+ *   it multiplies the light's colour (toon bands); highlights keep the
+ *   raw factor. It sees `df` only (a function of its own).
+ * The hooks are listed in enum order; DiffuseResponse runs within the
+ * lights, between LightVisibility calls.
  * Background pixels never reach a hook. LightVisibility and Ambient run for
  * lit pixels only (lighting on, no debug channel shown); Color runs for
  * every covered pixel. They see `texCoord`, `n` (view space; +z for unlit
@@ -109,6 +116,16 @@ public:
   virtual bool HasWork(const vtkFXSceneInfo& scene);
 
   /**
+   * Whether the effect, at the PostProcess stage, needs the pipeline's HDR
+   * target (it reads the lit image or writes values above 1). Default
+   * true; an effect that only blends displayable colours over the image
+   * (feature lines) returns false, and when no running effect needs the
+   * target the pipeline leaves it out (it costs a copy in and a full-screen
+   * pass out).
+   */
+  virtual bool GetNeedsHDRTarget() { return true; }
+
+  /**
    * What an output holds after the effect rendered.
    */
   struct Output
@@ -175,6 +192,7 @@ public:
     LightVisibility,
     Ambient,
     Color,
+    DiffuseResponse,
     NumberOfCompositeHooks
   };
 

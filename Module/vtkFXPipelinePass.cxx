@@ -521,10 +521,11 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
   }
   this->ActivateEffects(order, window);
 
-  bool postProcess = false;
+  bool postProcess = false; // a post-process effect needs the HDR target
   for (size_t i : order)
   {
-    postProcess = postProcess || this->Effects[i].Effect->GetStage() == E::PostProcess;
+    E* effect = this->Effects[i].Effect;
+    postProcess = postProcess || (effect->GetStage() == E::PostProcess && effect->GetNeedsHDRTarget());
   }
   if (this->HDRTargetRan && !postProcess)
   {

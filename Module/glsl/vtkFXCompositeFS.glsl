@@ -10,7 +10,8 @@
 // so no world-space position is stored.
 //
 // Effects add code at the hook tags (see vtkFXEffectPass): declarations,
-// per-light visibility, the ambient visibility, and the final colour.
+// per-light visibility, each light's diffuse response, the ambient
+// visibility, and the final colour.
 //
 // Defines set by vtkFXCompositePass: FX_LIGHTING (0..3), FX_LIGHT_TEXTURE,
 // FX_HAS_SPECULAR, FX_HAS_AMBIENT, FX_HAS_EMISSION, FX_NEEDS_POSITION,
@@ -55,9 +56,17 @@ uniform vec2 fxDepthRange;
 
 //VTK::Light::Dec
 
-//VTK::FXLighting::Dec
-
 //VTK::FXEffects::Dec
+
+// One light's diffuse factor (max(0, n.l) times attenuation) as the
+// effects' DiffuseResponse hooks reshape it; `df` in, `df` out.
+float fxDiffuseResponse(float df)
+{
+  //VTK::FXEffects::DiffuseResponse
+  return df;
+}
+
+//VTK::FXLighting::Dec
 
 //VTK::Output::Dec
 

@@ -6,13 +6,16 @@
 // light that reaches the surface; the caller multiplies by the material:
 //   colour = ambient + diffuseLight * diffuseColor + specularLight * specularColor
 // which is VTK's "ambientColor + diffuse + specular".
+// Each light's diffuse factor passes through fxDiffuseResponse (identity
+// unless an effect reshapes it, e.g. toon bands); highlights keep the raw
+// factor.
 
 // Complexity 1: one headlight; light and view both along +z.
 void fxHeadlight(vec3 n, vec3 lightColor, float specularPower,
   inout vec3 diffuseLight, inout vec3 specularLight)
 {
   float df = max(0.0, n.z);
-  diffuseLight += df * lightColor;
+  diffuseLight += fxDiffuseResponse(df) * lightColor;
 #if FX_HAS_SPECULAR
   float sf = pow(df, specularPower);
   specularLight += sf * lightColor;
@@ -25,7 +28,7 @@ void fxDirectionalLight(vec3 n, vec3 view, vec3 lightDirection, vec3 lightColor,
   float specularPower, inout vec3 diffuseLight, inout vec3 specularLight)
 {
   float df = max(0.0, dot(n, -lightDirection));
-  diffuseLight += df * lightColor;
+  diffuseLight += fxDiffuseResponse(df) * lightColor;
 #if FX_HAS_SPECULAR
   float sf = sign(df) * pow(max(0.0, dot(reflect(lightDirection, n), view)), specularPower);
   specularLight += sf * lightColor;
@@ -57,7 +60,7 @@ void fxPositionalLight(vec3 n, vec3 position, vec3 view, int positional,
     }
   }
   float df = max(0.0, attenuation * dot(n, -toSurface));
-  diffuseLight += df * lightColor;
+  diffuseLight += fxDiffuseResponse(df) * lightColor;
 #if FX_HAS_SPECULAR
   float sf = sign(df) * attenuation * pow(max(0.0, dot(reflect(toSurface, n), view)), specularPower);
   specularLight += sf * lightColor;

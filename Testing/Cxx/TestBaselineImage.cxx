@@ -3,14 +3,17 @@
 // given by -V, either the lit image ("lit"), one G-buffer channel shown by
 // the pipeline's debug view ("normal", "depth", "albedo", ...), or ambient
 // occlusion: "ssao-raw" (the occlusion view without the blur), "ssao-blur"
-// (the occlusion view after it) and "ssao-lit" (the lit image with it).
-//   TestBaselineImage INPUT lit|CHANNEL|ssao-raw|ssao-blur|ssao-lit -V baseline.png -T outdir
+// (the occlusion view after it) and "ssao-lit" (the lit image with it), or
+// toon shading: "toon" (bands and feature lines) and "lines" (lines alone).
+//   TestBaselineImage INPUT lit|CHANNEL|ssao-raw|ssao-blur|ssao-lit|toon|lines
+//     -V baseline.png -T outdir
 #include "vtkFXBilateralBlurPass.h"
 #include "vtkFXSSAOPass.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
+#include "vtkFXToonPass.h"
 #include "vtkFXTestUtilities.h"
 
 #include "vtkRenderer.h"
@@ -36,6 +39,12 @@ int TestBaselineImage(int argc, char* argv[])
     }
     pipeline->GetOcclusionBlurPass()->SetEnabled(view.rfind("ssao-raw", 0) != 0);
     pipeline->GetCompositePass()->SetDebugOcclusion(view.rfind("ssao-lit", 0) != 0);
+  }
+  else if (view == "toon" || view == "lines")
+  {
+    vtkNew<vtkFXToonPass> toon;
+    toon->SetBands(view == "toon");
+    pipeline->AddEffect("toon", toon);
   }
   else if (view != "lit")
   {

@@ -13,12 +13,7 @@
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
 
-#include "vtkActor.h"
-#include "vtkActorCollection.h"
-#include "vtkCamera.h"
-#include "vtkMatrix4x4.h"
 #include "vtkRendererCollection.h"
-#include "vtkTransform.h"
 
 namespace
 {
@@ -42,39 +37,7 @@ std::vector<unsigned char> Render(vtkRenderWindow* window, const std::string& in
     std::cerr << error << std::endl;
     return {};
   }
-  vtkNew<vtkTransform> transform;
-  transform->Translate(v.Offset, v.Offset, v.Offset);
-  transform->Scale(v.Scale, v.Scale, v.Scale);
-  vtkActorCollection* actors = renderer->GetActors();
-  vtkCollectionSimpleIterator it;
-  actors->InitTraversal(it);
-  while (vtkActor* actor = actors->GetNextActor(it))
-  {
-    actor->SetUserMatrix(transform->GetMatrix());
-  }
-  vtkCamera* camera = renderer->GetActiveCamera();
-  // The clipping range scales with the scene (VTK's automatic range is not
-  // exactly proportional: it would clip the far ground differently).
-  double range[2];
-  camera->GetClippingRange(range);
-  double position[3], focal[3];
-  camera->GetPosition(position);
-  camera->GetFocalPoint(focal);
-  transform->TransformPoint(position, position);
-  transform->TransformPoint(focal, focal);
-  camera->SetPosition(position);
-  camera->SetFocalPoint(focal);
-  camera->SetParallelProjection(parallel);
-  camera->SetParallelScale(camera->GetParallelScale() * v.Scale);
-  if (v.NearRatio > 0.0)
-  {
-    const double d = camera->GetDistance();
-    camera->SetClippingRange(1e-4 * d, 1e-4 * d / v.NearRatio);
-  }
-  else
-  {
-    camera->SetClippingRange(range[0] * v.Scale, range[1] * v.Scale);
-  }
+  vtkFXTest::MoveScene(renderer, v.Scale, v.Offset, parallel, v.NearRatio);
   vtkNew<vtkFXPipelinePass> pipeline;
   pipeline->AmbientOcclusionOn();
   pipeline->SetAmbientOcclusionFalloff(falloff);

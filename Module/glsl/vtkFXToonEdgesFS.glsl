@@ -1,0 +1,128 @@
+//VTK::System::Dec
+// vtkFXToonEdgesFS: where feature lines go, between G-buffer pixels.
+//
+// The deferred toon shader of seed 004 marks a pixel as an edge when its
+// depth or normal differs "obviously" from its neighbours'. Here the two
+// tests are made to hold at any scene scale and viewing angle:
+// - silhouette: one pixel is background and the other is not, or the
+//   positions p, q (view space, from linear depth and the frustum ray)
+//   are off each other's tangent planes,
+//     max(|n_p . (q - p)|, |n_q . (p - q)|) > threshold x min(depth),
+//   which is 0 for two pixels of one plane at any angle (a raw depth
+//   difference grows without bound at grazing angles) and scales with the
+//   scene; unlit pixels have no normal and compare depths directly;
+// - crease: n_p . n_q < cos(crease angle), both pixels lit.
+// Output (R8): (r + 2 g) / 3 with r = 1 where the pixel and its right
+// neighbour are separated, g = 1 for the neighbour above. FX_SILHOUETTES,
+// FX_CREASES select the tests; FX_GATHER reads 2x2 blocks with
+// textureGather (GL 4.0 / ARB_gpu_shader5) where the context has it.
+
+// Texels are addressed through gl_FragCoord; texCoord is read once only so
+// that the quad's texture-coordinate attribute stays in the program
+// (vtkOpenGLQuadHelper binds it and complains when it is optimised away).
+in vec2 texCoord;
+
+uniform sampler2D fxLinearDepth;
+uniform sampler2D fxNormal;
+uniform ivec2 fxGBufferSize;
+uniform vec3 fxRayOrigin[3];
+uniform vec3 fxRayDirection[3];
+uniform float fxSilhouetteThreshold; // fraction of the depth
+uniform float fxCreaseCosine;
+
+//VTK::FXNormalCoding::Dec
+
+//VTK::Output::Dec
+
+struct fxSurface
+{
+  bool covered;
+  bool lit;
+  vec3 position; // view space
+  vec3 normal;
+  float depth;
+};
+
+fxSurface fxSurfaceOf(ivec2 texel, float depth, vec2 encoded)
+{
+  fxSurface s;
+  s.depth = depth;
+  // Background is cleared to depth 0; NaN depth counts as background too.
+  s.covered = s.depth > 0.0;
+  s.lit = s.covered && !fxIsUnlit(encoded);
+  s.normal = s.lit ? fxDecodeNormal(encoded) : vec3(0.0, 0.0, 1.0);
+  vec2 ndc = 2.0 * (vec2(texel) + 0.5) / vec2(fxGBufferSize) - 1.0;
+  vec3 origin = fxRayOrigin[0] + ndc.x * fxRayOrigin[1] + ndc.y * fxRayOrigin[2];
+  vec3 direction = fxRayDirection[0] + ndc.x * fxRayDirection[1] + ndc.y * fxRayDirection[2];
+  s.position = origin + s.depth * direction;
+  return s;
+}
+
+#if !FX_GATHER
+fxSurface fxSurfaceAt(ivec2 texel)
+{
+  ivec2 t = min(texel, fxGBufferSize - 1);
+  return fxSurfaceOf(texel, texelFetch(fxLinearDepth, t, 0).r, texelFetch(fxNormal, t, 0).rg);
+}
+#endif
+
+float fxSeparated(fxSurface a, fxSurface b)
+{
+  if (!a.covered && !b.covered)
+  {
+    return 0.0;
+  }
+#if FX_SILHOUETTES
+  if (a.covered != b.covered)
+  {
+    return 1.0;
+  }
+  vec3 d = b.position - a.position;
+  float gap = abs(b.depth - a.depth);
+  if (a.lit || b.lit)
+  {
+    gap = max(a.lit ? abs(dot(a.normal, d)) : 0.0, b.lit ? abs(dot(b.normal, d)) : 0.0);
+  }
+  if (gap > fxSilhouetteThreshold * min(a.depth, b.depth))
+  {
+    return 1.0;
+  }
+#endif
+#if FX_CREASES
+  if (a.lit && b.lit && dot(a.normal, b.normal) < fxCreaseCosine)
+  {
+    return 1.0;
+  }
+#endif
+  return 0.0;
+}
+
+void main()
+{
+  if (texCoord.x < -1.0)
+  {
+    discard; // never: see the declaration of texCoord
+  }
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+#if FX_GATHER
+  // One gather per value fetches the 2x2 block whose corner is this
+  // pixel's: (w) here, (z) right, (x) above; a software rasteriser pays
+  // per fetch, and three gathers replace six fetches.
+  vec2 corner = vec2(texel + 1) / vec2(fxGBufferSize);
+  vec4 depths = textureGather(fxLinearDepth, corner, 0);
+  vec4 normalX = textureGather(fxNormal, corner, 0);
+  vec4 normalY = textureGather(fxNormal, corner, 1);
+  fxSurface here = fxSurfaceOf(texel, depths.w, vec2(normalX.w, normalY.w));
+  fxSurface right = fxSurfaceOf(texel + ivec2(1, 0), depths.z, vec2(normalX.z, normalY.z));
+  fxSurface above = fxSurfaceOf(texel + ivec2(0, 1), depths.x, vec2(normalX.x, normalY.x));
+#else
+  fxSurface here = fxSurfaceAt(texel);
+  fxSurface right = fxSurfaceAt(texel + ivec2(1, 0));
+  fxSurface above = fxSurfaceAt(texel + ivec2(0, 1));
+#endif
+  float r = texel.x + 1 < fxGBufferSize.x ? fxSeparated(here, right) : 0.0;
+  float g = texel.y + 1 < fxGBufferSize.y ? fxSeparated(here, above) : 0.0;
+  // Both marks in one byte (0, 1/3, 2/3, 1), so one gather reads four
+  // pixels' marks in vtkFXToonLinesFS.
+  gl_FragData[0] = vec4((r + 2.0 * g) / 3.0, 0.0, 0.0, 1.0);
+}

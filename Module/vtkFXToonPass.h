@@ -1,0 +1,201 @@
+/**
+ * @class   vtkFXToonPass
+ * @brief   Toon shading: diffuse light in bands, and feature lines from the G-buffer.
+ *
+ * Two parts, each can be used alone.
+ *
+ * Bands (composite code, no pass of its own): each light's diffuse factor
+ * (max(0, n.l) times its attenuation) is raised to the next band value, as
+ * in the deferred toon shader of seed 004: with thresholds t0 < t1 < ... <
+ * tk, a factor below t0 becomes 0, one in [ti, ti+1) becomes ti+1, and one
+ * at or above tk becomes 1. The default thresholds are the seed's 0.05,
+ * 0.25, 0.5, 0.75 (bands 0, 0.25, 0.5, 0.75, 1). Highlights, ambient and
+ * emission are left as they are.
+ *
+ * Feature lines (a post-process step drawn onto the lit HDR image, before
+ * the 2D overlay): between two neighbouring G-buffer pixels there is
+ * - a silhouette where one is background and the other is not, or where
+ *   either pixel's view-space position lies off the other's tangent plane by
+ *   more than SilhouetteThreshold times the nearer depth: a test relative
+ *   to depth, so it does not depend on the scene's scale, and exact for
+ *   planes at any angle, so a plane seen at a grazing angle is not taken
+ *   for an edge;
+ * - a crease where the two normals differ by more than CreaseAngle.
+ * Lines of LineWidth pixels (at LineReferenceHeight output rows; the width
+ * scales with the viewport's height) are centred on those pixel
+ * boundaries, with a coverage ramp of one pixel (anti-aliased), in
+ * LineColor. Lines are drawn over translucent props and volumes in front
+ * of them.
+ *
+ * Reads: the G-buffer's normals (bands and lines) and linear depth (lines).
+ * Writes: composite code (bands); lines blended onto the image (the
+ * framebuffer, or the HDR target when another effect has the pipeline keep
+ * one). With lines on, its stage is PostProcess, otherwise Composite.
+ * Cost: bands, a few instructions per light and pixel; lines, one
+ * full-screen pass of 3 gathers of G-buffer 2x2 blocks per pixel into an
+ * R8 edge texture (1 byte per pixel), and one of 1 (lines under 1 px),
+ * 4 (under 3 px) or 9 (under 5 px) gathers of edge blocks per pixel.
+ * Where GL lacks textureGather (GLSL 4.00 or ARB_gpu_shader5), each
+ * gather becomes 4 texel fetches.
+ */
+#ifndef vtkFXToonPass_h
+#define vtkFXToonPass_h
+
+#include "vtkFXEffectPass.h"
+#include "vtkFXModule.h"
+#include "vtkSmartPointer.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+
+class VTKFX_EXPORT vtkFXToonPass : public vtkFXEffectPass
+{
+public:
+  static vtkFXToonPass* New();
+  vtkTypeMacro(vtkFXToonPass, vtkFXEffectPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Quantise the diffuse light into bands (default on).
+   */
+  vtkSetMacro(Bands, bool);
+  vtkGetMacro(Bands, bool);
+  vtkBooleanMacro(Bands, bool);
+
+  ///@{
+  /**
+   * Band thresholds, increasing, in (0, 1]; at most 16.
+   * AddBandThreshold refuses (with an error) a value that is not above the
+   * last one or outside (0, 1]. SetDefaultBandThresholds restores the seed's
+   * 0.05, 0.25, 0.5, 0.75. With no threshold, every lit side is 1.
+   */
+  void AddBandThreshold(double threshold);
+  void RemoveAllBandThresholds();
+  void SetDefaultBandThresholds();
+  int GetNumberOfBandThresholds() const;
+  double GetBandThreshold(int i) const;
+  ///@}
+
+  /**
+   * Draw feature lines (default on). Changes the stage: PostProcess with
+   * lines, Composite without.
+   */
+  virtual void SetFeatureLines(bool lines);
+  vtkGetMacro(FeatureLines, bool);
+  vtkBooleanMacro(FeatureLines, bool);
+
+  /**
+   * Lines at silhouettes (depth discontinuities; default on).
+   */
+  vtkSetMacro(Silhouettes, bool);
+  vtkGetMacro(Silhouettes, bool);
+  vtkBooleanMacro(Silhouettes, bool);
+
+  /**
+   * Lines at creases (normal discontinuities; default on).
+   */
+  vtkSetMacro(Creases, bool);
+  vtkGetMacro(Creases, bool);
+  vtkBooleanMacro(Creases, bool);
+
+  /**
+   * Smallest gap between a pixel's position and its neighbour's tangent
+   * plane that makes a silhouette, as a fraction of the nearer depth
+   * (1e-5..10, default 0.02).
+   */
+  vtkSetClampMacro(SilhouetteThreshold, double, 1e-5, 10.0);
+  vtkGetMacro(SilhouetteThreshold, double);
+
+  /**
+   * Smallest angle between neighbouring normals that makes a crease, in
+   * degrees (1..179, default 30, vtkPolyDataNormals' feature angle).
+   */
+  vtkSetClampMacro(CreaseAngle, double, 1.0, 179.0);
+  vtkGetMacro(CreaseAngle, double);
+
+  /**
+   * Line width in pixels at LineReferenceHeight rows of output
+   * (0.25..16, default 2); in a viewport of H rows lines are
+   * LineWidth x H / LineReferenceHeight pixels wide, at least a quarter
+   * of a pixel, so an image rendered at twice the size shows the same
+   * drawing.
+   */
+  vtkSetClampMacro(LineWidth, double, 0.25, 16.0);
+  vtkGetMacro(LineWidth, double);
+
+  /**
+   * Output rows at which lines are LineWidth pixels wide (1..100000,
+   * default 720).
+   */
+  vtkSetClampMacro(LineReferenceHeight, int, 1, 100000);
+  vtkGetMacro(LineReferenceHeight, int);
+
+  /**
+   * Line colour, linear RGB (components 0..65504, HDR allowed; default
+   * black).
+   */
+  vtkSetVector3Macro(LineColor, double);
+  vtkGetVector3Macro(LineColor, double);
+
+  /**
+   * Line width in pixels for a viewport `height` rows high (see LineWidth).
+   */
+  double GetEffectiveLineWidth(int height) const;
+
+  /**
+   * The R8 edge texture of the last frame with lines: (r + 2 g) / 3, r = 1
+   * at an edge between a pixel and its right neighbour, g = 1 with the one
+   * above (for tests and debugging).
+   */
+  vtkTextureObject* GetEdgeTexture();
+
+  /**
+   * Work when bands or lines are on and some prop is in the G-buffer.
+   */
+  bool HasWork(const vtkFXSceneInfo& scene) override;
+  unsigned int GetRequiredChannels() override;
+  /** Lines blend displayable colours: no HDR target needed. */
+  bool GetNeedsHDRTarget() override { return false; }
+  std::string GetCompositeCode(int hook) override;
+  void BindCompositeResources(vtkShaderProgram* program, const std::string& prefix) override;
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+protected:
+  vtkFXToonPass();
+  ~vtkFXToonPass() override;
+
+  bool FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
+  void DrawLines(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
+
+  bool Bands = true;
+  std::vector<double> BandThresholds;
+  bool FeatureLines = true;
+  bool Silhouettes = true;
+  bool Creases = true;
+  double SilhouetteThreshold = 0.02;
+  double CreaseAngle = 30.0;
+  double LineWidth = 2.0;
+  int LineReferenceHeight = 720;
+  double LineColor[3] = { 0.0, 0.0, 0.0 };
+
+  vtkSmartPointer<vtkTextureObject> Edges;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> EdgeFrameBuffer;
+  std::unique_ptr<vtkOpenGLQuadHelper> EdgeQuad;
+  std::string EdgeQuadSource;
+  std::unique_ptr<vtkOpenGLQuadHelper> LineQuad;
+  std::string LineQuadSource;
+
+private:
+  vtkFXToonPass(const vtkFXToonPass&) = delete;
+  void operator=(const vtkFXToonPass&) = delete;
+};
+
+#endif

@@ -1,0 +1,385 @@
+// vtkFXToonPass:
+// - bands: a white sphere under one directional light, seen in parallel
+//   projection, so each pixel's normal and diffuse factor n.l are known in
+//   closed form; every pixel away from a band threshold shows exactly the
+//   band value the factor falls in (default and custom thresholds);
+// - lines: on the sphere, lines lie on the silhouette only (none in the
+//   smooth interior), go all the way round, and cover the width asked for;
+//   at twice the resolution they are twice as wide in pixels (the same
+//   drawing); on the fandisk (normals split at 30 degrees, as CAD parts are
+//   shown) creases add lines inside the part;
+// - the same image at scene scales 1e-6 and 1e6, translated 1e6 from the
+//   origin, with a near/far ratio of 1e-6, in both projections.
+#include "vtkFXPipelinePass.h"
+#include "vtkFXScenes.h"
+#include "vtkFXTestUtilities.h"
+#include "vtkFXToonPass.h"
+
+#include "vtkLight.h"
+#include "vtkOBJReader.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkProperty.h"
+#include "vtkRendererCollection.h"
+#include "vtkSphereSource.h"
+
+#include <map>
+
+namespace
+{
+const double Pi = 3.14159265358979323846;
+// Toward the light, in view (and world) coordinates: 60 degrees off the
+// view direction, so the lit and dark sides both show.
+const double LightDirection[3] = { 0.8660254037844386, 0.0, 0.5 };
+
+// A scene in `window`: one renderer with the toon effect in a pipeline, a
+// grey background and one directional light along LightDirection; the
+// camera looks down -z at the origin.
+vtkFXToonPass* MakeScene(vtkRenderWindow* window, vtkActor* actor, bool parallel)
+{
+  window->GetRenderers()->RemoveAllItems();
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  renderer->SetBackground(0.5, 0.5, 0.5);
+  renderer->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->PositionalOff();
+  light->SetPosition(LightDirection);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->AddLight(light);
+  renderer->AddActor(actor);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0.0, 0.0, 5.0);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetParallelProjection(parallel);
+  camera->SetParallelScale(1.0);
+  camera->SetViewAngle(30.0);
+  camera->SetClippingRange(1.0, 10.0);
+  vtkNew<vtkFXPipelinePass> pipeline;
+  vtkNew<vtkFXToonPass> toon;
+  pipeline->AddEffect("toon", toon);
+  renderer->SetPass(pipeline);
+  return toon;
+}
+
+// A sphere of radius 0.8 at the origin: under the parallel camera above its
+// disc has radius 0.4 x the window's height, at the window's centre.
+vtkSmartPointer<vtkActor> Sphere(double ambient, double diffuse)
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetRadius(0.8);
+  source->SetThetaResolution(128);
+  source->SetPhiResolution(128);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(1.0, 1.0, 1.0);
+  actor->GetProperty()->SetAmbient(ambient);
+  actor->GetProperty()->SetDiffuse(diffuse);
+  actor->GetProperty()->SetSpecular(0.0);
+  return actor;
+}
+
+// What the seed's rule makes of a diffuse factor under `thresholds`.
+double Band(double df, const std::vector<double>& thresholds)
+{
+  double level = thresholds.empty() ? 1.0 : 0.0;
+  for (size_t i = 0; i < thresholds.size(); ++i)
+  {
+    if (df >= thresholds[i])
+    {
+      level = i + 1 < thresholds.size() ? thresholds[i + 1] : 1.0;
+    }
+  }
+  return df > 0.0 ? level : 0.0;
+}
+
+// Renders the lit sphere with bands only and checks every pixel at least
+// 2 px inside the disc whose n.l is at least 0.02 from a threshold (the
+// tessellation's normals are that close to the sphere's): its red value is
+// the band's within 2 / 255. Each band value must show on 100+ pixels.
+int CheckBands(const std::vector<double>& thresholds)
+{
+  const int width = 400, height = 300;
+  auto window = vtkFXTest::MakeWindow(width, height);
+  vtkFXToonPass* toon = MakeScene(window, Sphere(0.0, 1.0), true);
+  toon->FeatureLinesOff();
+  toon->RemoveAllBandThresholds();
+  for (double t : thresholds)
+  {
+    toon->AddBandThreshold(t);
+  }
+  window->Render();
+  const auto image = vtkFXScenes::Capture(window);
+  const double r = 0.4 * height;
+  std::map<int, int> seen; // band value (x 1000) -> pixels
+  int checked = 0, wrong = 0;
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      const double nx = (x + 0.5 - 0.5 * width) / r, ny = (y + 0.5 - 0.5 * height) / r;
+      const double rho2 = nx * nx + ny * ny;
+      if (std::sqrt(rho2) * r > r - 2.0)
+      {
+        continue;
+      }
+      const double n[3] = { nx, ny, std::sqrt(1.0 - rho2) };
+      const double df = std::max(0.0, vtkMath::Dot(n, LightDirection));
+      bool nearThreshold = false;
+      for (double t : thresholds)
+      {
+        nearThreshold = nearThreshold || std::fabs(df - t) < 0.02;
+      }
+      if (nearThreshold)
+      {
+        continue;
+      }
+      const double expected = Band(df, thresholds);
+      const int red = image[3 * (y * width + x)];
+      ++checked;
+      ++seen[static_cast<int>(std::lround(1000 * expected))];
+      if (std::fabs(red - 255.0 * expected) > 2.0)
+      {
+        if (++wrong <= 5)
+        {
+          std::cerr << "pixel " << x << "," << y << ": n.l " << df << ", red " << red
+                    << ", band " << expected << std::endl;
+        }
+      }
+    }
+  }
+  std::cout << "bands (" << thresholds.size() << " thresholds): " << checked << " pixels, "
+            << wrong << " off their band, " << seen.size() << " band values seen" << std::endl;
+  FX_CHECK(checked > 20000 && wrong == 0, wrong << " of " << checked << " pixels off their band");
+  FX_CHECK(seen.size() == thresholds.size() + 1, seen.size() << " band values seen");
+  for (const auto& band : seen)
+  {
+    FX_CHECK(band.second >= 100, "band " << band.first / 1000.0 << " on " << band.second << " px");
+  }
+  return EXIT_SUCCESS;
+}
+
+// Line coverage per pixel: 1 - (image with lines) / (image without), in the
+// green channel (black lines over a grey background and a sphere whose
+// ambient term keeps it above 0.4).
+// `plain` receives the image without lines.
+std::vector<double> LineCoverage(
+  vtkRenderWindow* window, vtkFXToonPass* toon, std::vector<unsigned char>* plainImage = nullptr)
+{
+  toon->FeatureLinesOn();
+  window->Render();
+  const auto lined = vtkFXScenes::Capture(window);
+  toon->FeatureLinesOff();
+  window->Render();
+  const auto plain = vtkFXScenes::Capture(window);
+  toon->FeatureLinesOn();
+  std::vector<double> coverage(plain.size() / 3, 0.0);
+  for (size_t i = 0; i < coverage.size(); ++i)
+  {
+    const double base = plain[3 * i + 1];
+    coverage[i] = base > 0.0 ? std::max(0.0, 1.0 - lined[3 * i + 1] / base) : 0.0;
+  }
+  if (plainImage)
+  {
+    *plainImage = plain;
+  }
+  return coverage;
+}
+
+// Lines on the sphere at height rows: none farther than w/2 + 1.5 px from
+// the silhouette circle, some all the way round, and a total coverage of
+// (2 pi r) x w within 12% (the contour through the pixel sides' midpoints
+// follows the circle to a fraction of a pixel; measured: +3% at 0.83 px,
+// +9% at 1.67 px). Returns the measured width.
+int CheckSphereLines(int height, double& measuredWidth)
+{
+  const int width = height * 4 / 3;
+  auto window = vtkFXTest::MakeWindow(width, height);
+  vtkFXToonPass* toon = MakeScene(window, Sphere(0.4, 0.6), true);
+  toon->BandsOff();
+  const auto coverage = LineCoverage(window, toon);
+  const double r = 0.4 * height;
+  const double w = toon->GetEffectiveLineWidth(height);
+  double total = 0.0;
+  int stray = 0;
+  std::vector<double> around(64, 0.0); // largest coverage near the circle, per angle
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      const double dx = x + 0.5 - 0.5 * width, dy = y + 0.5 - 0.5 * height;
+      const double offCircle = std::fabs(std::hypot(dx, dy) - r);
+      const double c = coverage[y * width + x];
+      total += c;
+      if (offCircle > 0.5 * w + 1.5 && c > 0.04)
+      {
+        if (++stray <= 5)
+        {
+          std::cerr << "line pixel " << x << "," << y << " is " << offCircle
+                    << " px off the silhouette (coverage " << c << ")" << std::endl;
+        }
+      }
+      if (offCircle < 1.5)
+      {
+        const double angle = std::atan2(dy, dx) + Pi;
+        const size_t sector = std::min<size_t>(63, static_cast<size_t>(angle / (2 * Pi) * 64));
+        around[sector] = std::max(around[sector], c);
+      }
+    }
+  }
+  measuredWidth = total / (2 * Pi * r);
+  const double weakest = *std::min_element(around.begin(), around.end());
+  std::cout << "sphere lines at " << width << "x" << height << ": width " << w << " px asked, "
+            << measuredWidth << " px measured, " << stray << " stray pixels, weakest sector "
+            << weakest << std::endl;
+  FX_CHECK(stray == 0, stray << " line pixels away from the silhouette");
+  FX_CHECK(weakest > 0.25, "a gap in the silhouette line (coverage " << weakest << ")");
+  FX_CHECK(std::fabs(measuredWidth - w) < 0.12 * w, "width " << measuredWidth << " for " << w);
+  return EXIT_SUCCESS;
+}
+
+// Fandisk pixels at least 3 px from the background with line coverage
+// above 0.2 (lines are 0.83 px wide here), with creases on or off.
+int InteriorLinePixels(bool creases, int& interior, int& object)
+{
+  const int width = 400, height = 300;
+  auto window = vtkFXTest::MakeWindow(width, height);
+  vtkNew<vtkOBJReader> reader;
+  reader->SetFileName((vtkFXScenes::DataDirectory() + "/fandisk.obj").c_str());
+  vtkNew<vtkPolyDataNormals> normals; // splitting at 30 degrees, VTK's default
+  normals->SetInputConnection(reader->GetOutputPort());
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(normals->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetAmbient(0.4);
+  actor->GetProperty()->SetDiffuse(0.6);
+  vtkFXToonPass* toon = MakeScene(window, actor, false);
+  vtkRenderer* renderer = window->GetRenderers()->GetFirstRenderer();
+  renderer->ResetCamera();
+  renderer->GetActiveCamera()->Azimuth(40);
+  renderer->GetActiveCamera()->Elevation(25);
+  renderer->ResetCameraClippingRange();
+  toon->BandsOff();
+  toon->SetCreases(creases);
+  std::vector<unsigned char> image;
+  const auto coverage = LineCoverage(window, toon, &image);
+  unsigned char bg[3];
+  vtkFXScenes::BackgroundBytes(renderer, bg);
+  const auto background = [&](int x, int y) {
+    if (x < 0 || y < 0 || x >= width || y >= height)
+    {
+      return true;
+    }
+    const unsigned char* p = &image[3 * (y * width + x)];
+    return p[0] == bg[0] && p[1] == bg[1] && p[2] == bg[2];
+  };
+  interior = object = 0;
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      bool inside = true;
+      for (int dy = -3; dy <= 3 && inside; ++dy)
+      {
+        for (int dx = -3; dx <= 3 && inside; ++dx)
+        {
+          inside = !background(x + dx, y + dy);
+        }
+      }
+      object += inside ? 1 : 0;
+      interior += (inside && coverage[y * width + x] > 0.2) ? 1 : 0;
+    }
+  }
+  return EXIT_SUCCESS;
+}
+
+int CheckFandiskCreases()
+{
+  int withCreases = 0, withoutCreases = 0, object = 0;
+  InteriorLinePixels(true, withCreases, object);
+  InteriorLinePixels(false, withoutCreases, object);
+  std::cout << "fandisk: " << object << " interior pixels, " << withCreases
+            << " on lines with creases, " << withoutCreases << " without" << std::endl;
+  FX_CHECK(object > 10000, "the fandisk covers " << object << " interior pixels");
+  FX_CHECK(withCreases > 300 && withCreases > 2 * withoutCreases + 100,
+    "creases add too few lines: " << withCreases << " against " << withoutCreases);
+  FX_CHECK(withCreases < object / 5, "lines everywhere: " << withCreases << " of " << object);
+  return EXIT_SUCCESS;
+}
+
+// The bunny scene with bands and lines, moved as TestSSAOScale moves it.
+std::vector<unsigned char> RenderMoved(vtkRenderWindow* window, double scale, double offset,
+  bool parallel, double nearRatio)
+{
+  window->GetRenderers()->RemoveAllItems();
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  std::string error;
+  if (!vtkFXScenes::Populate(renderer,
+        vtkFXScenes::DataDirectory() + "/stanford-bunny.obj", vtkFXScenes::Options(), error))
+  {
+    std::cerr << error << std::endl;
+    return {};
+  }
+  vtkFXTest::MoveScene(renderer, scale, offset, parallel, nearRatio);
+  vtkNew<vtkFXPipelinePass> pipeline;
+  vtkNew<vtkFXToonPass> toon;
+  pipeline->AddEffect("toon", toon);
+  renderer->SetPass(pipeline);
+  window->Render();
+  return vtkFXScenes::Capture(window);
+}
+
+int CheckScaleInvariance()
+{
+  auto window = vtkFXTest::MakeWindow(320, 240);
+  struct Variant
+  {
+    const char* Name;
+    double Scale, Offset, NearRatio;
+  };
+  const Variant variants[] = { { "scaled 1e-6", 1e-6, 0.0, 0.0 }, { "scaled 1e6", 1e6, 0.0, 0.0 },
+    { "translated 1e6", 1.0, 1e6, 0.0 }, { "near/far 1e-6", 1.0, 0.0, 1e-6 } };
+  int failures = 0;
+  for (bool parallel : { false, true })
+  {
+    const auto base = RenderMoved(window, 1.0, 0.0, parallel, 0.0);
+    FX_CHECK(!base.empty(), "the bunny did not render");
+    for (const Variant& v : variants)
+    {
+      const auto image = RenderMoved(window, v.Scale, v.Offset, parallel, v.NearRatio);
+      const double psnr = vtkFXScenes::PSNR(base, image);
+      std::cout << "toon bunny " << (parallel ? "parallel" : "perspective") << ", " << v.Name
+                << ": PSNR " << psnr << " dB" << std::endl;
+      failures += psnr >= 35.0 ? 0 : 1;
+    }
+  }
+  FX_CHECK(failures == 0, failures << " variant(s) below 35 dB");
+  return EXIT_SUCCESS;
+}
+}
+
+int TestToon(int, char*[])
+{
+  // Refused thresholds leave the list alone.
+  vtkNew<vtkFXToonPass> toon;
+  toon->AddBandThreshold(0.5); // not above 0.75: refused with an error
+  toon->AddBandThreshold(1.5); // outside (0, 1]
+  FX_CHECK(toon->GetNumberOfBandThresholds() == 4, toon->GetNumberOfBandThresholds());
+
+  FX_CHECK(CheckBands({ 0.05, 0.25, 0.5, 0.75 }) == EXIT_SUCCESS, "seed's bands");
+  FX_CHECK(CheckBands({ 0.3, 0.6 }) == EXIT_SUCCESS, "custom bands");
+  double width1 = 0.0, width2 = 0.0;
+  FX_CHECK(CheckSphereLines(300, width1) == EXIT_SUCCESS, "lines at 400x300");
+  FX_CHECK(CheckSphereLines(600, width2) == EXIT_SUCCESS, "lines at 800x600");
+  FX_CHECK(std::fabs(width2 / width1 - 2.0) < 0.2,
+    "lines at twice the size are " << width2 / width1 << " times as wide");
+  FX_CHECK(CheckFandiskCreases() == EXIT_SUCCESS, "fandisk creases");
+  FX_CHECK(CheckScaleInvariance() == EXIT_SUCCESS, "scale invariance");
+  return EXIT_SUCCESS;
+}
