@@ -21,13 +21,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 vtkStandardNewMacro(vtkFXToonPass);
 
 namespace
 {
 using GB = vtkFXGBufferPass;
-const int MaximumBandThresholds = 16; // the size of the shader's array
+const int MaximumBandThresholds = 16; // each one is a step in the composite
 
 // After the version line: FX_GATHER 1 where textureGather can read any
 // component (GLSL 4.00, or GLSL 1.50 with ARB_gpu_shader5); both line
@@ -128,6 +129,31 @@ unsigned int vtkFXToonPass::GetRequiredChannels()
   return channels;
 }
 
+std::string vtkFXToonPass::BandCode() const
+{
+  std::ostringstream steps;
+  steps.precision(9);
+  double below = 0.0; // the band value under the current threshold
+  for (size_t i = 0; i <= this->BandThresholds.size(); ++i)
+  {
+    const double threshold = i == 0 ? 0.0 : this->BandThresholds[i - 1];
+    const double band = i < this->BandThresholds.size() ? this->BandThresholds[i] : 1.0;
+    if (i > 0)
+    {
+      steps << "  level += step(" << std::fixed << threshold << ", df) * " << band - below
+            << ";\n";
+    }
+    below = i > 0 ? band : 0.0;
+  }
+  if (this->BandThresholds.empty())
+  {
+    steps << "  level = 1.0;\n";
+  }
+  std::string code = vtkFXToonBands;
+  vtkShaderProgram::Substitute(code, "//VTK::FXToonBands::Steps", steps.str(), false);
+  return code;
+}
+
 std::string vtkFXToonPass::GetCompositeCode(int hook)
 {
   if (!this->Bands)
@@ -137,25 +163,12 @@ std::string vtkFXToonPass::GetCompositeCode(int hook)
   switch (hook)
   {
     case Declarations:
-      return vtkFXToonBands;
+      return this->BandCode();
     case DiffuseResponse:
       return "df = @band(df);";
     default:
       return std::string();
   }
-}
-
-void vtkFXToonPass::BindCompositeResources(vtkShaderProgram* program, const std::string& prefix)
-{
-  if (!this->Bands)
-  {
-    return;
-  }
-  float thresholds[MaximumBandThresholds] = {};
-  std::transform(this->BandThresholds.begin(), this->BandThresholds.end(), thresholds,
-    [](double t) { return static_cast<float>(t); });
-  program->SetUniform1fv((prefix + "thresholds").c_str(), MaximumBandThresholds, thresholds);
-  program->SetUniformi((prefix + "count").c_str(), this->GetNumberOfBandThresholds());
 }
 
 bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* window)

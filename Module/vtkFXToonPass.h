@@ -163,7 +163,6 @@ public:
   /** Lines blend displayable colours: no HDR target needed. */
   bool GetNeedsHDRTarget() override { return false; }
   std::string GetCompositeCode(int hook) override;
-  void BindCompositeResources(vtkShaderProgram* program, const std::string& prefix) override;
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -172,6 +171,7 @@ protected:
   vtkFXToonPass();
   ~vtkFXToonPass() override;
 
+  std::string BandCode() const;
   bool FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
   void DrawLines(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
 

@@ -2,20 +2,14 @@
 // Each light's diffuse factor is raised to the band above it, as in the
 // deferred toon shader of seed 004 (0-0.05 -> 0, 0.05-0.25 -> 0.25, ...,
 // 0.75-1 -> 1): with thresholds t[0] < ... < t[k-1], df < t[0] gives 0,
-// t[i] <= df < t[i+1] gives t[i+1], df >= t[k-1] gives 1.
-uniform float @thresholds[16];
-uniform int @count;
-
+// t[i] <= df < t[i+1] gives t[i+1], df >= t[k-1] gives 1. The thresholds
+// are compiled in, as a sum of steps, each adding the rise from the band
+// below (step(t[i], df) * (t[i+1] - t[i])): a few instructions per light,
+// no loop and no uniforms; changing them rebuilds the composite.
 float @band(float df)
 {
-  float level = @count > 0 ? 0.0 : 1.0;
-  for (int i = 0; i < @count; ++i)
-  {
-    if (df >= @thresholds[i])
-    {
-      level = i + 1 < @count ? @thresholds[i + 1] : 1.0;
-    }
-  }
+  float level = 0.0;
+  //VTK::FXToonBands::Steps
   // NaN factors (degenerate normals) stay dark rather than lit.
   return df > 0.0 ? level : 0.0;
 }
