@@ -1,5 +1,7 @@
 #include "vtkFXScenes.h"
 
+#include "vtkFXGBufferPass.h"
+
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCompositeDataDisplayAttributes.h"
@@ -20,6 +22,7 @@
 #include "vtkGenericDataObjectReader.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkLightKit.h"
 #include "vtkLookupTable.h"
@@ -379,6 +382,25 @@ void SceneSplats(vtkRenderer* renderer)
   renderer->AddActor(actor);
 }
 
+// Emissive data for glow: three lit spheres carrying an EMISSIVE_COLOR
+// (one above 1, an HDR emission), among the plain spheres of scene:spheres.
+void SceneGlow(vtkRenderer* renderer)
+{
+  SceneSpheres(renderer);
+  const double emissive[3][4] = { { -0.6, 0.2, 0.9, 0.2 }, { 0.5, 0.15, 0.2, 0.15 },
+    { 0.0, 0.25, -0.5, 0.25 } };
+  const double emission[3][3] = { { 4.0, 1.2, 0.3 }, { 0.2, 0.9, 1.0 }, { 0.9, 0.9, 0.3 } };
+  for (int i = 0; i < 3; ++i)
+  {
+    auto actor = MakeActor(Sphere(emissive[i][0], emissive[i][1], emissive[i][2], emissive[i][3]),
+      0.2, 0.2, 0.2);
+    vtkNew<vtkInformation> keys;
+    keys->Set(vtkFXGBufferPass::EMISSIVE_COLOR(), emission[i], 3);
+    actor->SetPropertyKeys(keys);
+    renderer->AddActor(actor);
+  }
+}
+
 void SceneLights(vtkRenderer* renderer)
 {
   SceneSpheres(renderer);
@@ -554,6 +576,8 @@ bool PopulateBuiltIn(vtkRenderer* renderer, const std::string& name, std::string
     SceneSplats(renderer);
   else if (name == "scene:lights")
     SceneLights(renderer);
+  else if (name == "scene:glow")
+    SceneGlow(renderer);
   else if (name == "scene:mixed")
     SceneMixed(renderer);
   else if (name == "scene:volume")
@@ -585,7 +609,7 @@ std::vector<std::string> vtkFXScenes::BuiltInSceneNames()
 {
   return { "scene:spheres", "scene:corner", "scene:scalars", "scene:textured", "scene:glyphs",
     "scene:composite", "scene:splats", "scene:lights", "scene:mixed", "scene:volume", "scene:edges",
-    "scene:molecule" };
+    "scene:molecule", "scene:glow" };
 }
 
 bool vtkFXScenes::Populate(vtkRenderer* renderer, const std::string& input,

@@ -9,6 +9,7 @@
 #include "vtkFXScenes.h"
 
 #include "vtkFXBilateralBlurPass.h"
+#include "vtkFXBloomPass.h"
 #include "vtkFXSSAOPass.h"
 #include "vtkFXToonPass.h"
 #include "vtkFXCompositePass.h"
@@ -55,8 +56,9 @@ struct Arguments
 
 // Effects the pipeline knows: "ssao" (screen-space ambient occlusion),
 // "blur" (its depth/normal-aware blur and upsampling), "toon" (banded
-// diffuse light and feature lines) and "lines" (the feature lines alone).
-const std::vector<std::string> KnownEffects = { "ssao", "blur", "toon", "lines" };
+// diffuse light and feature lines), "lines" (the feature lines alone) and
+// "bloom" (glow of emissive props).
+const std::vector<std::string> KnownEffects = { "ssao", "blur", "toon", "lines", "bloom" };
 
 void Usage(std::ostream& os)
 {
@@ -67,7 +69,8 @@ void Usage(std::ostream& os)
         "                    [--no-ground] [--ao-radius R | --ao-radius-fraction F]\n"
         "                    [--ao-quality low|medium|high] [--ao-falloff binary|cuberoot]\n"
         "LIST: comma-separated effects: ssao, blur (ssao,blur: ambient occlusion),\n"
-        "      toon (banded light and feature lines) or lines (feature lines alone)\n"
+        "      toon (banded light and feature lines) or lines (feature lines alone),\n"
+        "      bloom (glow of emissive props)\n"
         "INPUT: a .obj, .ply, .stl, .vtp, .vtk or .pdb file, or one of:";
   for (const auto& name : vtkFXScenes::BuiltInSceneNames())
   {
@@ -374,6 +377,11 @@ int main(int argc, char* argv[])
       toon->SetBands(has("toon"));
       pipeline->AddEffect("toon", toon);
     }
+    if (has("bloom"))
+    {
+      vtkNew<vtkFXBloomPass> bloom;
+      pipeline->AddEffect("bloom", bloom);
+    }
     if (args.DebugChannel == "occlusion")
     {
       pipeline->GetCompositePass()->DebugOcclusionOn();
@@ -440,6 +448,15 @@ int main(int argc, char* argv[])
     std::cout << ", G-buffer " << pipeline->GetGBufferBytesPerPixel() << " bytes/pixel";
   }
   std::cout << "\n";
+  if (!args.PlainVTK)
+  {
+    std::cout << "passes:";
+    for (size_t i = 0; i < passesThatRan.size(); ++i)
+    {
+      std::cout << (i ? "," : " ") << passesThatRan[i];
+    }
+    std::cout << "\n";
+  }
   if (!args.PlainVTK && pipeline->GetAmbientOcclusion())
   {
     vtkFXSSAOPass* ssao = pipeline->GetSSAOPass();

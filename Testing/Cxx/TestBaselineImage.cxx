@@ -4,10 +4,12 @@
 // the pipeline's debug view ("normal", "depth", "albedo", ...), or ambient
 // occlusion: "ssao-raw" (the occlusion view without the blur), "ssao-blur"
 // (the occlusion view after it) and "ssao-lit" (the lit image with it), or
-// toon shading: "toon" (bands and feature lines) and "lines" (lines alone).
-//   TestBaselineImage INPUT lit|CHANNEL|ssao-raw|ssao-blur|ssao-lit|toon|lines
+// toon shading: "toon" (bands and feature lines) and "lines" (lines alone),
+// or "bloom" (the glow of emissive props).
+//   TestBaselineImage INPUT lit|CHANNEL|ssao-raw|ssao-blur|ssao-lit|toon|lines|bloom
 //     -V baseline.png -T outdir
 #include "vtkFXBilateralBlurPass.h"
+#include "vtkFXBloomPass.h"
 #include "vtkFXSSAOPass.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
@@ -45,6 +47,11 @@ int TestBaselineImage(int argc, char* argv[])
     vtkNew<vtkFXToonPass> toon;
     toon->SetBands(view == "toon");
     pipeline->AddEffect("toon", toon);
+  }
+  else if (view == "bloom")
+  {
+    vtkNew<vtkFXBloomPass> bloom;
+    pipeline->AddEffect("bloom", bloom);
   }
   else if (view != "lit")
   {

@@ -71,6 +71,9 @@ Result RenderAndCompare(
 int TestPipelineMatchesVTK(int argc, char* argv[])
 {
   std::vector<std::string> inputs = vtkFXScenes::BuiltInSceneNames();
+  // scene:glow's emission (vtkFXGBufferPass::EMISSIVE_COLOR) is vtkFX's own:
+  // VTK's forward render has nothing to compare it with.
+  inputs.erase(std::remove(inputs.begin(), inputs.end(), "scene:glow"), inputs.end());
   const std::string data = vtkFXScenes::DataDirectory();
   inputs.push_back(data + "/stanford-bunny.obj");
   inputs.push_back(data + "/fandisk.obj");

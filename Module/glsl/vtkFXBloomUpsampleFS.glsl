@@ -1,0 +1,40 @@
+//VTK::System::Dec
+// vtkFXBloomUpsampleFS: one step up the bloom's pyramid (Jimenez 2014): a
+// 3x3 tent ([1 2 1] x [1 2 1] / 16) of bilinear taps one texel apart in
+// the coarser level, added to this level's own share:
+//   up_k = w_k down_k + tent(up_k+1),
+// so the full-resolution result is the sum over levels of w_k times level
+// k brought up, and with sum w_k = 1 its total equals the source's total
+// (energy kept: each normalised filter moves light, never adds any).
+// FX_FINAL: the last step, to full resolution, scaled by the intensity and
+// added onto the image by blending (no own share).
+
+in vec2 texCoord;
+
+uniform sampler2D fxCoarse;   // up_k+1 (or the last down level)
+uniform sampler2D fxLevel;    // down_k (not FX_FINAL)
+uniform vec2 fxCoarseTexel;   // 1 / size of fxCoarse
+uniform float fxCoarseScale;  // factor on fxCoarse (w_N when it is the last down level)
+uniform float fxShare;        // w_k
+uniform float fxIntensity;    // FX_FINAL
+
+//VTK::Output::Dec
+
+void main()
+{
+  vec2 t = fxCoarseTexel;
+  vec3 tent = 4.0 * texture(fxCoarse, texCoord).rgb;
+  tent += 2.0 * (texture(fxCoarse, texCoord + vec2(t.x, 0.0)).rgb +
+                  texture(fxCoarse, texCoord - vec2(t.x, 0.0)).rgb +
+                  texture(fxCoarse, texCoord + vec2(0.0, t.y)).rgb +
+                  texture(fxCoarse, texCoord - vec2(0.0, t.y)).rgb);
+  tent += texture(fxCoarse, texCoord + t).rgb + texture(fxCoarse, texCoord - t).rgb +
+    texture(fxCoarse, texCoord + vec2(t.x, -t.y)).rgb +
+    texture(fxCoarse, texCoord + vec2(-t.x, t.y)).rgb;
+  tent *= fxCoarseScale / 16.0;
+#if FX_FINAL
+  gl_FragData[0] = vec4(fxIntensity * tent, 0.0);
+#else
+  gl_FragData[0] = vec4(fxShare * texture(fxLevel, texCoord).rgb + tent, 1.0);
+#endif
+}

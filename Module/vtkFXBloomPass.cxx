@@ -1,0 +1,332 @@
+#include "vtkFXBloomPass.h"
+
+#include "vtkFXBloomDownsampleFS.h"
+#include "vtkFXBloomUpsampleFS.h"
+#include "vtkFXGBufferPass.h"
+#include "vtkFXRenderUtilities.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkFXBloomPass);
+
+namespace
+{
+using GB = vtkFXGBufferPass;
+const int MaximumLevels = 10;
+}
+
+// One level of the pyramid: the step down and the step up, each with the
+// framebuffer that writes it.
+struct vtkFXBloomPass::Level
+{
+  vtkSmartPointer<vtkTextureObject> Down;
+  vtkSmartPointer<vtkTextureObject> Up;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> DownTarget;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> UpTarget;
+};
+
+vtkFXBloomPass::vtkFXBloomPass()
+{
+  this->Stage = PostProcess;
+}
+
+vtkFXBloomPass::~vtkFXBloomPass() = default;
+
+bool vtkFXBloomPass::HasWork(const vtkFXSceneInfo& scene)
+{
+  const bool source = (this->UseEmission && !scene.EmissiveProps.empty()) || this->Threshold >= 0.0;
+  return source && this->Intensity > 0.0 && this->Superclass::HasWork(scene);
+}
+
+unsigned int vtkFXBloomPass::GetRequiredChannels()
+{
+  return this->UseEmission ? GB::ChannelBit(GB::Emission) : 0u;
+}
+
+int vtkFXBloomPass::GetNumberOfLevels(int width, int height) const
+{
+  const double reach = std::max(2.0, this->Radius * height);
+  int levels = std::min(MaximumLevels, static_cast<int>(std::ceil(std::log2(reach))));
+  // Stop before a level would be smaller than 2 x 2 texels.
+  while (levels > 1 && ((width >> levels) < 2 || (height >> levels) < 2))
+  {
+    --levels;
+  }
+  return std::max(1, levels);
+}
+
+double vtkFXBloomPass::GetLevelSigma(int k)
+{
+  double variance = 0.0;
+  for (int j = 0; j < k; ++j)
+  {
+    variance += 1.75 * std::pow(4.0, j);                   // down from level j
+    variance += (0.5 + 1.0 / 6.0) * std::pow(4.0, j + 1); // up from level j + 1
+  }
+  return std::sqrt(variance);
+}
+
+vtkTextureObject* vtkFXBloomPass::GetGlowTexture()
+{
+  return this->Levels.empty() ? nullptr : this->Levels[0]->Up.GetPointer();
+}
+
+vtkShaderProgram* vtkFXBloomPass::ReadyProgram(
+  int which, vtkOpenGLRenderWindow* window, const std::string& fs)
+{
+  return vtkFXRenderUtilities::ReadyQuad(this->Quads[which], this->QuadSources[which], window, fs);
+}
+
+bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject* color, int levels)
+{
+  vtkTextureObject* emission =
+    this->UseEmission && this->GBuffer ? this->GBuffer->GetChannelTexture(GB::Emission) : nullptr;
+  const bool threshold = this->Threshold >= 0.0 && color;
+  if (!emission && !threshold)
+  {
+    return false;
+  }
+  vtkTextureObject* full = emission ? emission : color;
+  int width = static_cast<int>(full->GetWidth());
+  int height = static_cast<int>(full->GetHeight());
+  for (int k = 0; k < levels; ++k)
+  {
+    const int sourceSize[2] = { width, height };
+    width = std::max(1, (width + 1) / 2);
+    height = std::max(1, (height + 1) / 2);
+    Level& level = *this->Levels[k];
+    vtkFXRenderUtilities::EnsureTexture(
+      level.Down, window, width, height, vtkFXRenderUtilities::RGBA16F);
+    level.Down->SetMinificationFilter(vtkTextureObject::Linear);
+    level.Down->SetMagnificationFilter(vtkTextureObject::Linear);
+
+    std::string fs = vtkFXBloomDownsampleFS;
+    const bool first = k == 0;
+    vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
+      std::string("//VTK::System::Dec\n#define FX_FIRST ") + (first ? "1" : "0") +
+        "\n#define FX_EMISSION " + (emission ? "1" : "0") + "\n#define FX_THRESHOLD " +
+        (threshold ? "1" : "0") + "\n#define FX_KARIS " +
+        (first && this->FireflySuppression ? "1" : "0") + "\n",
+      false);
+    vtkFXRenderUtilities::RenderTargetScope target(window, level.DownTarget, level.Down);
+    vtkShaderProgram* program = this->ReadyProgram(first ? FirstDown : Down, window, fs);
+    if (!program)
+    {
+      return false;
+    }
+    const float texel[2] = { 1.0f / sourceSize[0], 1.0f / sourceSize[1] };
+    program->SetUniform2f("fxSourceTexel", texel);
+    std::vector<vtkTextureObject*> read;
+    if (first)
+    {
+      // The sources are other passes' textures, filtered nearest: read them
+      // bilinearly through a sampler object instead of changing them.
+      if (emission)
+      {
+        read.push_back(emission);
+        emission->Activate();
+        program->SetUniformi("fxEmission", emission->GetTextureUnit());
+      }
+      if (threshold)
+      {
+        read.push_back(color);
+        color->Activate();
+        program->SetUniformi("fxColor", color->GetTextureUnit());
+        program->SetUniformf("fxThreshold", static_cast<float>(this->Threshold));
+        program->SetUniformf("fxKnee", static_cast<float>(this->Knee * this->Threshold));
+      }
+      for (vtkTextureObject* t : read)
+      {
+        glBindSampler(t->GetTextureUnit(), this->LinearSampler);
+      }
+    }
+    else
+    {
+      vtkTextureObject* above = this->Levels[k - 1]->Down;
+      read.push_back(above);
+      above->Activate();
+      program->SetUniformi("fxSource", above->GetTextureUnit());
+    }
+    this->Quads[first ? FirstDown : Down]->Render();
+    for (vtkTextureObject* t : read)
+    {
+      if (first)
+      {
+        glBindSampler(t->GetTextureUnit(), 0);
+      }
+      t->Deactivate();
+    }
+  }
+  return true;
+}
+
+void vtkFXBloomPass::Upsample(vtkOpenGLRenderWindow* window, int levels)
+{
+  // Equal shares: the glow is the mean of the levels brought up.
+  const float share = 1.0f / levels;
+  for (int k = levels - 2; k >= 0; --k)
+  {
+    Level& level = *this->Levels[k];
+    const bool coarsest = k + 1 == levels - 1;
+    vtkTextureObject* coarse = coarsest ? this->Levels[k + 1]->Down : this->Levels[k + 1]->Up;
+    vtkFXRenderUtilities::EnsureTexture(level.Up, window, static_cast<int>(level.Down->GetWidth()),
+      static_cast<int>(level.Down->GetHeight()), vtkFXRenderUtilities::RGBA16F);
+    level.Up->SetMinificationFilter(vtkTextureObject::Linear);
+    level.Up->SetMagnificationFilter(vtkTextureObject::Linear);
+    std::string fs = vtkFXBloomUpsampleFS;
+    vtkShaderProgram::Substitute(
+      fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define FX_FINAL 0\n", false);
+    vtkFXRenderUtilities::RenderTargetScope target(window, level.UpTarget, level.Up);
+    vtkShaderProgram* program = this->ReadyProgram(Up, window, fs);
+    if (!program)
+    {
+      return;
+    }
+    coarse->Activate();
+    level.Down->Activate();
+    program->SetUniformi("fxCoarse", coarse->GetTextureUnit());
+    program->SetUniformi("fxLevel", level.Down->GetTextureUnit());
+    const float texel[2] = { 1.0f / coarse->GetWidth(), 1.0f / coarse->GetHeight() };
+    program->SetUniform2f("fxCoarseTexel", texel);
+    program->SetUniformf("fxCoarseScale", coarsest ? share : 1.0f);
+    program->SetUniformf("fxShare", share);
+    this->Quads[Up]->Render();
+    coarse->Deactivate();
+    level.Down->Deactivate();
+  }
+}
+
+void vtkFXBloomPass::AddGlow(vtkOpenGLRenderWindow* window, int levels)
+{
+  // With one level, its own share is the whole glow.
+  vtkTextureObject* glow = levels > 1 ? this->Levels[0]->Up : this->Levels[0]->Down;
+  std::string fs = vtkFXBloomUpsampleFS;
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define FX_FINAL 1\n", false);
+  vtkShaderProgram* program = this->ReadyProgram(Final, window, fs);
+  if (!program)
+  {
+    return;
+  }
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
+  vtkOpenGLState::ScopedglDepthMask depthMask(state);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_FALSE);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE); // light adds; alpha stays
+  glow->Activate();
+  program->SetUniformi("fxCoarse", glow->GetTextureUnit());
+  const float texel[2] = { 1.0f / glow->GetWidth(), 1.0f / glow->GetHeight() };
+  program->SetUniform2f("fxCoarseTexel", texel);
+  program->SetUniformf("fxCoarseScale", 1.0f);
+  program->SetUniformf("fxIntensity", static_cast<float>(this->Intensity));
+  this->Quads[Final]->Render();
+  glow->Deactivate();
+}
+
+void vtkFXBloomPass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  vtkOpenGLRenderWindow* window =
+    vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  // The lit HDR image, for the threshold: the colour of the framebuffer
+  // the pipeline renders into.
+  auto* target = vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer());
+  vtkTextureObject* color = target ? target->GetColorAttachmentAsTextureObject(0) : nullptr;
+  if (this->Threshold >= 0.0 && !color)
+  {
+    vtkWarningMacro("vtkFXBloomPass's threshold reads the lit image of an HDR target "
+                    "(vtkFXPipelinePass provides one); only emission glows.");
+  }
+  vtkTextureObject* emission = this->GBuffer ? this->GBuffer->GetChannelTexture(GB::Emission) : nullptr;
+  vtkTextureObject* full = emission ? emission : color;
+  if (!full)
+  {
+    vtkErrorMacro("vtkFXBloomPass needs the G-buffer's emission channel or a threshold on the "
+                  "HDR target's image.");
+    return;
+  }
+  if (!this->LinearSampler)
+  {
+    glGenSamplers(1, &this->LinearSampler);
+    glSamplerParameteri(this->LinearSampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(this->LinearSampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(this->LinearSampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(this->LinearSampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  const int levels =
+    this->GetNumberOfLevels(static_cast<int>(full->GetWidth()), static_cast<int>(full->GetHeight()));
+  while (static_cast<int>(this->Levels.size()) > levels)
+  {
+    Level& last = *this->Levels.back();
+    for (auto* t : { &last.Down, &last.Up })
+    {
+      vtkFXRenderUtilities::Release(*t, window);
+    }
+    for (auto* f : { &last.DownTarget, &last.UpTarget })
+    {
+      vtkFXRenderUtilities::Release(*f, window);
+    }
+    this->Levels.pop_back();
+  }
+  while (static_cast<int>(this->Levels.size()) < levels)
+  {
+    this->Levels.emplace_back(new Level);
+  }
+  if (this->Downsample(window, color, levels))
+  {
+    this->Upsample(window, levels);
+    this->AddGlow(window, levels);
+  }
+}
+
+void vtkFXBloomPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  for (int i = 0; i < NumberOfPrograms; ++i)
+  {
+    vtkFXRenderUtilities::ReleaseQuad(this->Quads[i], this->QuadSources[i], w);
+  }
+  for (auto& level : this->Levels)
+  {
+    vtkFXRenderUtilities::Release(level->Down, w);
+    vtkFXRenderUtilities::Release(level->Up, w);
+    vtkFXRenderUtilities::Release(level->DownTarget, w);
+    vtkFXRenderUtilities::Release(level->UpTarget, w);
+  }
+  this->Levels.clear();
+  if (this->LinearSampler)
+  {
+    if (auto* window = vtkOpenGLRenderWindow::SafeDownCast(w))
+    {
+      window->MakeCurrent();
+    }
+    glDeleteSamplers(1, &this->LinearSampler);
+    this->LinearSampler = 0;
+  }
+}
+
+void vtkFXBloomPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Intensity: " << this->Intensity << "\n";
+  os << indent << "Radius: " << this->Radius << "\n";
+  os << indent << "UseEmission: " << this->UseEmission << "\n";
+  os << indent << "Threshold: " << this->Threshold << "\n";
+  os << indent << "Knee: " << this->Knee << "\n";
+  os << indent << "FireflySuppression: " << this->FireflySuppression << "\n";
+}

@@ -1,0 +1,169 @@
+/**
+ * @class   vtkFXBloomPass
+ * @brief   Glow around emissive props (and, optionally, bright light) on the HDR image.
+ *
+ * Reads the G-buffer's emission channel (the EMISSIVE_COLOR of lit props,
+ * see vtkFXGBufferPass, and the colour of unlit ones) and, with a
+ * threshold set, the lit HDR image's light above it (soft knee). Builds a
+ * pyramid by repeated 13-tap downsampling (Jimenez 2014; firefly
+ * suppression by Karis averaging on the first step), climbs back with 3x3
+ * tent upsampling, each level adding an equal share, and adds Intensity
+ * times the result onto the pipeline's HDR target. Each filter is
+ * normalised, so the glow's total equals Intensity times the total of the
+ * source (the emission plus the light above the threshold), away from the
+ * image's borders and with FireflySuppression off (it deliberately takes
+ * energy from isolated bright pixels).
+ *
+ * The glow reaches about Radius x the viewport's height: the pyramid has
+ * ceil(log2(Radius x height)) levels below full resolution (at least 1,
+ * at most 10, fewer when a level would be under 2 pixels).
+ *
+ * NaN and infinite sources never spread: NaN counts as 0 and anything
+ * above 65504 (the largest half float) as 65504; with FireflySuppression
+ * on, such a pixel adds about what one pixel of value 1 adds.
+ *
+ * Stage PostProcess; vtkFXPipelinePass keeps its HDR target while it runs.
+ * Work: when a visible prop is emissive (vtkFXSceneInfo::EmissiveProps) or
+ * a threshold is set; otherwise the pass, its textures and the emission
+ * channel are left out and the image is exactly the one without bloom.
+ * Cost: one pass per level down and up, the first at half resolution with
+ * 13 (26 with a threshold) bilinear source reads per texel, each next one
+ * at a quarter of the texels of the one before; one full-resolution pass
+ * of 9 bilinear reads, blended. Memory: two RGBA16F textures per level
+ * (about 2 x 8 / 3 bytes per full-resolution pixel).
+ */
+#ifndef vtkFXBloomPass_h
+#define vtkFXBloomPass_h
+
+#include "vtkFXEffectPass.h"
+#include "vtkFXModule.h"
+#include "vtkSmartPointer.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+
+class VTKFX_EXPORT vtkFXBloomPass : public vtkFXEffectPass
+{
+public:
+  static vtkFXBloomPass* New();
+  vtkTypeMacro(vtkFXBloomPass, vtkFXEffectPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Total glow as a fraction of the total source light (0..100, default
+   * 0.5).
+   */
+  vtkSetClampMacro(Intensity, double, 0.0, 100.0);
+  vtkGetMacro(Intensity, double);
+
+  /**
+   * How far the glow reaches, as a fraction of the viewport's height
+   * (0.001..1, default 0.05).
+   */
+  vtkSetClampMacro(Radius, double, 0.001, 1.0);
+  vtkGetMacro(Radius, double);
+
+  /**
+   * Glow from the emission channel (default on).
+   */
+  vtkSetMacro(UseEmission, bool);
+  vtkGetMacro(UseEmission, bool);
+  vtkBooleanMacro(UseEmission, bool);
+
+  /**
+   * Glow also from lit light brighter than Threshold (linear units, as in
+   * the HDR image; 0..65504). A negative value (default -1) turns this
+   * off.
+   */
+  vtkSetClampMacro(Threshold, double, -1.0, 65504.0);
+  vtkGetMacro(Threshold, double);
+
+  /**
+   * Width of the soft knee below the threshold, as a fraction of it
+   * (0..1, default 0.5): light from Threshold x (1 - Knee) up glows
+   * partly.
+   */
+  vtkSetClampMacro(Knee, double, 0.0, 1.0);
+  vtkGetMacro(Knee, double);
+
+  /**
+   * Karis averaging on the first step (default on): isolated very bright
+   * pixels (fireflies, or a 1e30 emission) do not grow into squares.
+   */
+  vtkSetMacro(FireflySuppression, bool);
+  vtkGetMacro(FireflySuppression, bool);
+  vtkBooleanMacro(FireflySuppression, bool);
+
+  /**
+   * Levels below full resolution for a viewport of width x height.
+   */
+  int GetNumberOfLevels(int width, int height) const;
+
+  /**
+   * Standard deviation, in full-resolution pixels per axis, of the blur
+   * that level k (1 = half resolution) receives on its way down and up:
+   * the sum of the variances of its filters. Down, a 13-tap step from a
+   * level of texel size 2^j pixels adds 1.75 x 4^j (its taps' spread, 1.5
+   * texels^2, plus their 2x2 bilinear boxes, 0.25); up, a tent step from a
+   * level of texel size 2^m adds (1/2 + 1/6) x 4^m (the [1 2 1] tent, plus
+   * the bilinear interpolation's triangle). So level k's glow is close to
+   * a Gaussian of that deviation (2.1, 4.7, 9.6, 19.4, ... pixels), and
+   * the whole glow close to the mean of those Gaussians: the reference
+   * vtkfx-bench bloom compares with.
+   */
+  static double GetLevelSigma(int k);
+
+  /**
+   * Blurred glow of the last frame, at half resolution, before Intensity
+   * (for tests and debugging; nullptr before the first frame).
+   */
+  vtkTextureObject* GetGlowTexture();
+
+  bool HasWork(const vtkFXSceneInfo& scene) override;
+  unsigned int GetRequiredChannels() override;
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+protected:
+  vtkFXBloomPass();
+  ~vtkFXBloomPass() override;
+
+  struct Level;
+  bool Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject* color, int levels);
+  void Upsample(vtkOpenGLRenderWindow* window, int levels);
+  void AddGlow(vtkOpenGLRenderWindow* window, int levels);
+  vtkShaderProgram* ReadyProgram(int which, vtkOpenGLRenderWindow* window, const std::string& fs);
+
+  double Intensity = 0.5;
+  double Radius = 0.05;
+  bool UseEmission = true;
+  double Threshold = -1.0;
+  double Knee = 0.5;
+  bool FireflySuppression = true;
+
+  std::vector<std::unique_ptr<Level>> Levels;
+  unsigned int LinearSampler = 0; // GL sampler for reading the G-buffer's emission bilinearly
+  enum
+  {
+    FirstDown = 0,
+    Down,
+    Up,
+    Final,
+    NumberOfPrograms
+  };
+  std::unique_ptr<vtkOpenGLQuadHelper> Quads[NumberOfPrograms];
+  std::string QuadSources[NumberOfPrograms];
+
+private:
+  vtkFXBloomPass(const vtkFXBloomPass&) = delete;
+  void operator=(const vtkFXBloomPass&) = delete;
+};
+
+#endif

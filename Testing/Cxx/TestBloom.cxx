@@ -1,0 +1,225 @@
+// vtkFXBloomPass:
+// - energy: with firefly suppression off, the glow's total (its half-
+//   resolution texture summed, times 4) equals the emission channel's
+//   total within 2% (every filter of the pyramid is normalised; the rest is
+//   half-float rounding and bilinear reads at the object's rim), and the
+//   8-bit image gains Intensity times that total within 10% (glow below
+//   half a level rounds away far out);
+// - no emission and no threshold: the effect is left out, with the HDR
+//   target and the emission channel, and the image is bit-identical to
+//   the one without it;
+// - a 1e30 pixel and a NaN pixel in the lit HDR image, with a threshold:
+//   the glow stays finite, and with firefly suppression the 1e30 pixel
+//   adds at most about what one pixel of value 1 adds (no bright square).
+#include "vtkFXBloomPass.h"
+#include "vtkFXEffectPass.h"
+#include "vtkFXGBufferPass.h"
+#include "vtkFXPipelinePass.h"
+#include "vtkFXRenderUtilities.h"
+#include "vtkFXScenes.h"
+#include "vtkFXTestUtilities.h"
+
+#include "vtkInformation.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderState.h"
+#include "vtkRendererCollection.h"
+#include "vtkShaderProgram.h"
+#include "vtkSphereSource.h"
+
+#include <limits>
+
+namespace
+{
+using GB = vtkFXGBufferPass;
+
+// Writes 1e30 into one pixel and NaN into another of the image it is
+// drawn onto (the HDR target), at the post-process stage.
+class HotPixelProbe : public vtkFXEffectPass
+{
+public:
+  static HotPixelProbe* New();
+  vtkTypeMacro(HotPixelProbe, vtkFXEffectPass);
+  HotPixelProbe() { this->Stage = PostProcess; }
+  unsigned int GetRequiredChannels() override { return 0; }
+  bool HasWork(const vtkFXSceneInfo&) override { return true; }
+  void Render(const vtkRenderState* s) override
+  {
+    auto* window = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+    // The values are computed at run time: a compiler may not fold 1e30
+    // into a half float or NaN away.
+    const std::string fs = "//VTK::System::Dec\nin vec2 texCoord;\nuniform float big;\n"
+                           "//VTK::Output::Dec\n"
+                           "void main() {\n"
+                           "  ivec2 p = ivec2(gl_FragCoord.xy);\n"
+                           "  float zero = texCoord.x < -1.0 ? 1.0 : 0.0;\n"
+                           "  if (p == ivec2(100, 150)) gl_FragData[0] = vec4(vec3(big), 1.0);\n"
+                           "  else if (p == ivec2(300, 150)) gl_FragData[0] = vec4(zero / zero);\n"
+                           "  else discard;\n"
+                           "}\n";
+    vtkShaderProgram* program = vtkFXRenderUtilities::ReadyQuad(this->Quad, this->Source, window, fs);
+    if (program)
+    {
+      program->SetUniformf("big", 1e30f);
+      this->Quad->Render();
+    }
+  }
+  void ReleaseGraphicsResources(vtkWindow* w) override
+  {
+    vtkFXRenderUtilities::ReleaseQuad(this->Quad, this->Source, w);
+  }
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  std::string Source;
+};
+vtkStandardNewMacro(HotPixelProbe);
+
+// A black scene (no light, black background) with a sphere whose only
+// light is its EMISSIVE_COLOR, or no emission at all.
+vtkRenderer* MakeScene(vtkRenderWindow* window, const double emission[3])
+{
+  window->GetRenderers()->RemoveAllItems();
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  vtkNew<vtkSphereSource> source;
+  source->SetRadius(0.3);
+  source->SetThetaResolution(64);
+  source->SetPhiResolution(64);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.0, 0.0, 0.0);
+  actor->GetProperty()->SetSpecular(0.0);
+  if (emission)
+  {
+    vtkNew<vtkInformation> keys;
+    keys->Set(GB::EMISSIVE_COLOR(), emission, 3);
+    actor->SetPropertyKeys(keys);
+  }
+  renderer->AddActor(actor);
+  renderer->ResetCamera();
+  return renderer;
+}
+
+double Sum(const std::vector<float>& values, int components, int used)
+{
+  double sum = 0.0;
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    sum += (static_cast<int>(i % components) < used) ? values[i] : 0.0;
+  }
+  return sum;
+}
+
+double ImageSum(const std::vector<unsigned char>& image)
+{
+  double sum = 0.0;
+  for (unsigned char v : image)
+  {
+    sum += v / 255.0;
+  }
+  return sum;
+}
+
+int CheckEnergy(vtkRenderWindow* window)
+{
+  window->SetSize(400, 300);
+  const double emission[3] = { 0.5, 0.4, 0.3 };
+  vtkRenderer* renderer = MakeScene(window, emission);
+  vtkNew<vtkFXPipelinePass> pipeline;
+  renderer->SetPass(pipeline);
+  window->Render();
+  const auto without = vtkFXScenes::Capture(window);
+
+  vtkNew<vtkFXBloomPass> bloom;
+  bloom->FireflySuppressionOff();
+  bloom->SetIntensity(0.5);
+  pipeline->AddEffect("bloom", bloom);
+  window->Render();
+  const auto with = vtkFXScenes::Capture(window);
+  FX_CHECK(vtkFXTest::Passes(pipeline).find("bloom") != std::string::npos, vtkFXTest::Passes(pipeline));
+
+  const double source = Sum(vtkFXTest::Download(pipeline->GetGBufferPass()->GetChannelTexture(GB::Emission), 4), 4, 3);
+  const double glow = 4.0 * Sum(vtkFXTest::Download(bloom->GetGlowTexture(), 4), 4, 3);
+  const double added = ImageSum(with) - ImageSum(without);
+  std::cout << "energy: emission " << source << ", glow " << glow << " (ratio " << glow / source
+            << "), added to the image " << added << " (ratio to intensity x emission "
+            << added / (0.5 * source) << "), " << bloom->GetNumberOfLevels(400, 300) << " levels"
+            << std::endl;
+  FX_CHECK(source > 1000.0, "the sphere emits " << source);
+  FX_CHECK(std::fabs(glow / source - 1.0) < 0.02, "glow " << glow << " for emission " << source);
+  FX_CHECK(std::fabs(added / (0.5 * source) - 1.0) < 0.10, "image gained " << added);
+  return EXIT_SUCCESS;
+}
+
+int CheckNothingToDo(vtkRenderWindow* window)
+{
+  window->SetSize(200, 150);
+  vtkRenderer* renderer = MakeScene(window, nullptr);
+  vtkNew<vtkFXPipelinePass> pipeline;
+  renderer->SetPass(pipeline);
+  window->Render();
+  const auto without = vtkFXScenes::Capture(window);
+  vtkNew<vtkFXBloomPass> bloom;
+  pipeline->AddEffect("bloom", bloom);
+  window->Render();
+  const auto with = vtkFXScenes::Capture(window);
+  const std::string passes = vtkFXTest::Passes(pipeline);
+  std::cout << "no emission: passes " << passes << std::endl;
+  FX_CHECK(passes.find("bloom") == std::string::npos && passes.find("hdr-target") == std::string::npos,
+    passes);
+  FX_CHECK(!(pipeline->GetGBufferChannels() & GB::ChannelBit(GB::Emission)),
+    "an emission channel nobody reads");
+  FX_CHECK(with == without, "the image changed");
+  return EXIT_SUCCESS;
+}
+
+int CheckHotPixels(vtkRenderWindow* window)
+{
+  window->SetSize(400, 300);
+  vtkRenderer* renderer = MakeScene(window, nullptr);
+  vtkNew<vtkFXPipelinePass> pipeline;
+  renderer->SetPass(pipeline);
+  vtkNew<HotPixelProbe> probe;
+  pipeline->AddEffect("hot", probe);
+  vtkNew<vtkFXBloomPass> bloom;
+  bloom->SetThreshold(1.0);
+  pipeline->AddEffect("bloom", bloom);
+  for (bool suppress : { true, false })
+  {
+    bloom->SetFireflySuppression(suppress);
+    window->Render();
+    const std::string passes = vtkFXTest::Passes(pipeline);
+    FX_CHECK(passes.find("hot") < passes.find("bloom"), passes);
+    const auto glow = vtkFXTest::Download(bloom->GetGlowTexture(), 4);
+    FX_CHECK(!glow.empty(), "no glow texture");
+    float largest = 0.0f;
+    for (size_t i = 0; i < glow.size(); ++i)
+    {
+      FX_CHECK(std::isfinite(glow[i]), "a non-finite glow value");
+      largest = i % 4 == 3 ? largest : std::max(largest, glow[i]); // RGB, not alpha
+    }
+    std::cout << "hot pixels, firefly suppression " << (suppress ? "on" : "off")
+              << ": largest glow " << largest << std::endl;
+    // On, the 1e30 pixel (clamped to 65504, minus the threshold) weighs
+    // like one of value ~1 in the first box: its glow stays below 1.
+    FX_CHECK(!suppress || largest < 1.0f, "a firefly grew a glow of " << largest);
+  }
+  return EXIT_SUCCESS;
+}
+}
+
+int TestBloom(int, char*[])
+{
+  // One window for every part: a window per part can exhaust a virtual X
+  // server's connections.
+  auto window = vtkFXTest::MakeWindow(400, 300);
+  FX_CHECK(CheckEnergy(window) == EXIT_SUCCESS, "energy");
+  FX_CHECK(CheckNothingToDo(window) == EXIT_SUCCESS, "no emission");
+  FX_CHECK(CheckHotPixels(window) == EXIT_SUCCESS, "hot pixels");
+  return EXIT_SUCCESS;
+}
