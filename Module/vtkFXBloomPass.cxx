@@ -220,15 +220,8 @@ void vtkFXBloomPass::AddGlow(vtkOpenGLRenderWindow* window, int levels)
   {
     return;
   }
-  vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
-  vtkOpenGLState::ScopedglDepthMask depthMask(state);
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_FALSE);
-  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE); // light adds; alpha stays
+  // Light adds; alpha stays.
+  vtkFXRenderUtilities::BlendOntoScope blend(window, GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
   glow->Activate();
   program->SetUniformi("fxCoarse", glow->GetTextureUnit());
   const float texel[2] = { 1.0f / glow->GetWidth(), 1.0f / glow->GetHeight() };

@@ -161,6 +161,20 @@ vtkFXRenderUtilities::RenderTargetScope::~RenderTargetScope()
   this->State->PopFramebufferBindings();
 }
 
+vtkFXRenderUtilities::BlendOntoScope::BlendOntoScope(vtkOpenGLRenderWindow* window,
+  unsigned int srcRGB, unsigned int dstRGB, unsigned int srcAlpha, unsigned int dstAlpha)
+  : Blend(window->GetState(), GL_BLEND)
+  , DepthTest(window->GetState(), GL_DEPTH_TEST)
+  , BlendFunc(window->GetState())
+  , DepthMask(window->GetState())
+{
+  vtkOpenGLState* state = window->GetState();
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_FALSE);
+  state->vtkglBlendFuncSeparate(srcRGB, dstRGB, srcAlpha, dstAlpha);
+}
+
 void vtkFXRenderUtilities::GetViewportSize(vtkRenderer* renderer, int& width, int& height)
 {
   int x, y;

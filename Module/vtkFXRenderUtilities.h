@@ -143,6 +143,25 @@ public:
     vtkOpenGLState::ScopedglEnableDisable Scissor;
   };
 
+  /**
+   * While it lives, draws blend onto the current framebuffer with
+   * glBlendFuncSeparate(srcRGB, dstRGB, srcAlpha, dstAlpha), with depth
+   * test and depth writes off (a post-process drawing over the image).
+   * Those switches come back when it is destroyed.
+   */
+  class VTKFX_EXPORT BlendOntoScope
+  {
+  public:
+    BlendOntoScope(vtkOpenGLRenderWindow* window, unsigned int srcRGB, unsigned int dstRGB,
+      unsigned int srcAlpha, unsigned int dstAlpha);
+
+  private:
+    vtkOpenGLState::ScopedglEnableDisable Blend;
+    vtkOpenGLState::ScopedglEnableDisable DepthTest;
+    vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunc;
+    vtkOpenGLState::ScopedglDepthMask DepthMask;
+  };
+
 protected:
   vtkFXRenderUtilities() = default;
   ~vtkFXRenderUtilities() override = default;

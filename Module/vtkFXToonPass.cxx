@@ -224,22 +224,15 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
   // Onto the image the pipeline is drawing (its HDR target, or whatever
   // framebuffer a hand-built chain renders to), blended by coverage; the
   // alpha of what is under a line becomes opaque where the line covers it.
-  vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
-  vtkOpenGLState::ScopedglDepthMask depthMask(state);
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_FALSE);
-  state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  vtkFXRenderUtilities::BlendOntoScope blend(
+    window, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
   const int size[2] = { static_cast<int>(this->Edges->GetWidth()),
     static_cast<int>(this->Edges->GetHeight()) };
   // gl_FragCoord counts from the framebuffer's corner, the edges from the
   // viewport's.
   int viewport[4];
-  state->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+  window->GetState()->vtkglGetIntegerv(GL_VIEWPORT, viewport);
   program->SetUniform2i("fxOrigin", viewport);
   const double width = this->GetEffectiveLineWidth(size[1]);
   this->Edges->Activate();

@@ -125,22 +125,30 @@ double ImageSum(const std::vector<unsigned char>& image)
   return sum;
 }
 
+// The scene of MakeScene rendered through `pipeline` without, then with
+// `bloom`.
+void RenderWithoutAndWith(vtkRenderWindow* window, const double emission[3],
+  vtkFXPipelinePass* pipeline, vtkFXBloomPass* bloom, std::vector<unsigned char>& without,
+  std::vector<unsigned char>& with)
+{
+  MakeScene(window, emission)->SetPass(pipeline);
+  window->Render();
+  without = vtkFXScenes::Capture(window);
+  pipeline->AddEffect("bloom", bloom);
+  window->Render();
+  with = vtkFXScenes::Capture(window);
+}
+
 int CheckEnergy(vtkRenderWindow* window)
 {
   window->SetSize(400, 300);
   const double emission[3] = { 0.5, 0.4, 0.3 };
-  vtkRenderer* renderer = MakeScene(window, emission);
   vtkNew<vtkFXPipelinePass> pipeline;
-  renderer->SetPass(pipeline);
-  window->Render();
-  const auto without = vtkFXScenes::Capture(window);
-
   vtkNew<vtkFXBloomPass> bloom;
   bloom->FireflySuppressionOff();
   bloom->SetIntensity(0.5);
-  pipeline->AddEffect("bloom", bloom);
-  window->Render();
-  const auto with = vtkFXScenes::Capture(window);
+  std::vector<unsigned char> without, with;
+  RenderWithoutAndWith(window, emission, pipeline, bloom, without, with);
   FX_CHECK(vtkFXTest::Passes(pipeline).find("bloom") != std::string::npos, vtkFXTest::Passes(pipeline));
 
   const double source = Sum(vtkFXTest::Download(pipeline->GetGBufferPass()->GetChannelTexture(GB::Emission), 4), 4, 3);
@@ -159,15 +167,10 @@ int CheckEnergy(vtkRenderWindow* window)
 int CheckNothingToDo(vtkRenderWindow* window)
 {
   window->SetSize(200, 150);
-  vtkRenderer* renderer = MakeScene(window, nullptr);
   vtkNew<vtkFXPipelinePass> pipeline;
-  renderer->SetPass(pipeline);
-  window->Render();
-  const auto without = vtkFXScenes::Capture(window);
   vtkNew<vtkFXBloomPass> bloom;
-  pipeline->AddEffect("bloom", bloom);
-  window->Render();
-  const auto with = vtkFXScenes::Capture(window);
+  std::vector<unsigned char> without, with;
+  RenderWithoutAndWith(window, nullptr, pipeline, bloom, without, with);
   const std::string passes = vtkFXTest::Passes(pipeline);
   std::cout << "no emission: passes " << passes << std::endl;
   FX_CHECK(passes.find("bloom") == std::string::npos && passes.find("hdr-target") == std::string::npos,
