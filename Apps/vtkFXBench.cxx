@@ -2,9 +2,22 @@
 
 #include "vtkFXScenes.h"
 
+#include "vtkAxis.h"
+#include "vtkChartXY.h"
+#include "vtkContextScene.h"
+#include "vtkContextView.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkPlot.h"
+#include "vtkPlotPoints.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
+#include "vtkTable.h"
+#include "vtkTextActor.h"
+#include "vtkTextProperty.h"
 #include "vtkTimerLog.h"
 
 #include <algorithm>
@@ -57,5 +70,112 @@ vtkSmartPointer<vtkRenderer> Stage(
   return vtkFXScenes::Populate(renderer, input, vtkFXScenes::Options(), error, dataBounds)
     ? renderer
     : nullptr;
+}
+
+std::string FileTag(const std::string& input)
+{
+  std::string tag = input.substr(input.find_last_of("/:") + 1);
+  return tag.substr(0, tag.find('.'));
+}
+
+void WritePNG(vtkImageData* image, const std::string& path)
+{
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+}
+
+void WriteRGBStrip(const std::vector<const std::vector<unsigned char>*>& images, int width,
+  int height, const std::string& path)
+{
+  vtkNew<vtkImageData> strip;
+  strip->SetDimensions(width * static_cast<int>(images.size()), height, 1);
+  strip->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* out = static_cast<unsigned char*>(strip->GetScalarPointer());
+  for (size_t k = 0; k < images.size(); ++k)
+  {
+    for (int y = 0; y < height; ++y)
+    {
+      const size_t row = static_cast<size_t>(y) * width * 3;
+      std::copy(images[k]->begin() + row, images[k]->begin() + row + 3 * width,
+        out + (static_cast<size_t>(y) * images.size() + k) * width * 3);
+    }
+  }
+  WritePNG(strip, path);
+}
+
+void WritePointsPlot(const std::vector<PlotFamily>& families, const std::vector<PlotPoint>& points,
+  const std::string& title, const std::string& xTitle, const std::string& yTitle,
+  const std::string& path)
+{
+  const int width = 900, height = 600;
+  vtkNew<vtkContextView> view;
+  view->GetRenderWindow()->SetOffScreenRendering(1);
+  view->GetRenderWindow()->SetSize(width, height);
+  view->GetRenderer()->SetBackground(1, 1, 1);
+  vtkNew<vtkChartXY> chart;
+  view->GetScene()->AddItem(chart);
+  chart->SetTitle(title);
+  chart->SetShowLegend(true);
+  chart->GetAxis(vtkAxis::BOTTOM)->SetTitle(xTitle);
+  chart->GetAxis(vtkAxis::LEFT)->SetTitle(yTitle);
+  for (size_t f = 0; f < families.size(); ++f)
+  {
+    const PlotFamily& family = families[f];
+    vtkNew<vtkTable> table;
+    vtkNew<vtkFloatArray> x, y;
+    x->SetName("x");
+    y->SetName(family.Name.c_str());
+    for (const auto& p : points)
+    {
+      if (p.Family == static_cast<int>(f))
+      {
+        x->InsertNextValue(static_cast<float>(p.X));
+        y->InsertNextValue(static_cast<float>(p.Y));
+      }
+    }
+    table->AddColumn(x);
+    table->AddColumn(y);
+    vtkPlot* plot = chart->AddPlot(vtkChart::POINTS);
+    plot->SetInputData(table, 0, 1);
+    plot->SetColor(family.R, family.G, family.B, 255);
+    vtkPlotPoints::SafeDownCast(plot)->SetMarkerStyle(family.Marker);
+    vtkPlotPoints::SafeDownCast(plot)->SetMarkerSize(8);
+  }
+  view->GetRenderWindow()->Render();
+  // Labels: each point's setting beside it, placed from the axes' ranges
+  // and screen positions of the rendered chart.
+  vtkAxis* xAxis = chart->GetAxis(vtkAxis::BOTTOM);
+  vtkAxis* yAxis = chart->GetAxis(vtkAxis::LEFT);
+  const float* x0 = xAxis->GetPoint1();
+  const float* x1 = xAxis->GetPoint2();
+  const float* y0 = yAxis->GetPoint1();
+  const float* y1 = yAxis->GetPoint2();
+  for (const auto& p : points)
+  {
+    const PlotFamily& family = families[p.Family];
+    const double fx =
+      (p.X - xAxis->GetMinimum()) / std::max(1e-9, xAxis->GetMaximum() - xAxis->GetMinimum());
+    const double fy =
+      (p.Y - yAxis->GetMinimum()) / std::max(1e-9, yAxis->GetMaximum() - yAxis->GetMinimum());
+    vtkNew<vtkTextActor> label;
+    label->SetInput(p.Label.c_str());
+    label->GetTextProperty()->SetFontSize(11);
+    label->GetTextProperty()->SetColor(family.R / 255.0, family.G / 255.0, family.B / 255.0);
+    // Right of the point, or left of it near the right border.
+    const bool left = fx > 0.8;
+    label->GetTextProperty()->SetJustification(left ? VTK_TEXT_RIGHT : VTK_TEXT_LEFT);
+    label->SetDisplayPosition(static_cast<int>(x0[0] + fx * (x1[0] - x0[0])) + (left ? -6 : 6),
+      static_cast<int>(y0[1] + fy * (y1[1] - y0[1])) - 4);
+    view->GetRenderer()->AddActor2D(label);
+  }
+  view->GetRenderWindow()->Render();
+  vtkNew<vtkImageData> image;
+  std::vector<unsigned char> pixels = vtkFXScenes::Capture(view->GetRenderWindow());
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  std::copy(pixels.begin(), pixels.end(), static_cast<unsigned char*>(image->GetScalarPointer()));
+  WritePNG(image, path);
 }
 }

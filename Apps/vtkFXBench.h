@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+class vtkImageData;
 class vtkRenderWindow;
 class vtkRenderer;
 class vtkTimerLog;
@@ -42,8 +43,39 @@ vtkSmartPointer<vtkRenderWindow> MakeWindow(const Options& o);
 vtkSmartPointer<vtkRenderer> Stage(vtkRenderWindow* window, const std::string& input,
   std::string& error, double dataBounds[6] = nullptr);
 
+// Scatter plots of error against time: points in families (one colour
+// and marker each, in the legend), each point labelled with its setting.
+struct PlotFamily
+{
+  std::string Name;
+  unsigned char R, G, B;
+  int Marker; // vtkPlotPoints marker style
+};
+struct PlotPoint
+{
+  int Family; // index into the families
+  std::string Label;
+  double X, Y;
+};
+void WritePointsPlot(const std::vector<PlotFamily>& families, const std::vector<PlotPoint>& points,
+  const std::string& title, const std::string& xTitle, const std::string& yTitle,
+  const std::string& path);
+
+void WritePNG(vtkImageData* image, const std::string& path);
+
+// A name for files about `input`: "bunny" for ".../bunny.obj", "glow" for
+// "scene:glow".
+std::string FileTag(const std::string& input);
+
+// RGB byte images (bottom row first) of one size, side by side.
+void WriteRGBStrip(const std::vector<const std::vector<unsigned char>*>& images, int width,
+  int height, const std::string& path);
+
 // The "ao" benchmark (vtkFXBenchAO.cxx).
 int BenchAO(const Options& o);
+
+// The "bloom" benchmark (vtkFXBenchBloom.cxx).
+int BenchBloom(const Options& o);
 }
 
 #endif

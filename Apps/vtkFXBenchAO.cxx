@@ -278,20 +278,6 @@ void Compare(const std::vector<float>& ao, const std::vector<float>& reference, 
   psnr = rmse > 0.0 ? 20.0 * std::log10(1.0 / rmse) : 99.0;
 }
 
-std::string FileTag(const std::string& input)
-{
-  std::string tag = input.substr(input.find_last_of("/:") + 1);
-  tag = tag.substr(0, tag.find('.'));
-  return tag;
-}
-
-void WritePNG(vtkImageData* image, const std::string& path)
-{
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(image);
-  writer->SetFileName(path.c_str());
-  writer->Write();
-}
 
 // Reference | vtkFX default | best vtkSSAOPass | none, as grey images.
 void WriteStrip(const std::vector<const std::vector<float>*>& images, int w, int h,
@@ -321,84 +307,19 @@ void WriteStrip(const std::vector<const std::vector<float>*>& images, int w, int
 void WritePlot(const std::vector<Method>& methods, const std::string& title,
   const std::string& yTitle, double (*value)(const Method&), const std::string& path)
 {
-  const int width = 900, height = 600;
-  vtkNew<vtkContextView> view;
-  view->GetRenderWindow()->SetOffScreenRendering(1);
-  view->GetRenderWindow()->SetSize(width, height);
-  view->GetRenderer()->SetBackground(1, 1, 1);
-  vtkNew<vtkChartXY> chart;
-  view->GetScene()->AddItem(chart);
-  chart->SetTitle(title);
-  chart->SetShowLegend(true);
-  chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("AO time (ms per frame)");
-  chart->GetAxis(vtkAxis::LEFT)->SetTitle(yTitle);
-  const struct
-  {
-    Kind Type;
-    const char* Label;
-    unsigned char R, G, B;
-    int Marker;
-  } families[] = { { Kind::FX, "vtkFX", 200, 60, 30, vtkPlotPoints::CIRCLE },
-    { Kind::VTK, "VTK vtkSSAOPass", 30, 80, 200, vtkPlotPoints::SQUARE } };
-  for (const auto& family : families)
-  {
-    vtkNew<vtkTable> table;
-    vtkNew<vtkFloatArray> ms, y;
-    ms->SetName("ms");
-    y->SetName(family.Label);
-    for (const auto& m : methods)
-    {
-      if (m.Type == family.Type)
-      {
-        ms->InsertNextValue(static_cast<float>(std::max(0.0, m.Ms)));
-        y->InsertNextValue(static_cast<float>(value(m)));
-      }
-    }
-    table->AddColumn(ms);
-    table->AddColumn(y);
-    vtkPlot* points = chart->AddPlot(vtkChart::POINTS);
-    points->SetInputData(table, 0, 1);
-    points->SetColor(family.R, family.G, family.B, 255);
-    vtkPlotPoints::SafeDownCast(points)->SetMarkerStyle(family.Marker);
-    vtkPlotPoints::SafeDownCast(points)->SetMarkerSize(8);
-  }
-  view->GetRenderWindow()->Render();
-  // Labels: each point's setting beside it, placed from the axes' ranges
-  // and screen positions of the rendered chart.
-  vtkAxis* xAxis = chart->GetAxis(vtkAxis::BOTTOM);
-  vtkAxis* yAxis = chart->GetAxis(vtkAxis::LEFT);
-  const float* x0 = xAxis->GetPoint1();
-  const float* x1 = xAxis->GetPoint2();
-  const float* y0 = yAxis->GetPoint1();
-  const float* y1 = yAxis->GetPoint2();
+  const std::vector<PlotFamily> families = { { "vtkFX", 200, 60, 30, vtkPlotPoints::CIRCLE },
+    { "VTK vtkSSAOPass", 30, 80, 200, vtkPlotPoints::SQUARE } };
+  std::vector<PlotPoint> points;
   for (const auto& m : methods)
   {
-    if (m.Type != Kind::FX && m.Type != Kind::VTK)
+    if (m.Type == Kind::FX || m.Type == Kind::VTK)
     {
-      continue;
+      points.push_back({ m.Type == Kind::VTK ? 1 : 0,
+        (m.Type == Kind::VTK ? "vtk " : m.Method ? "gtao " : "hemi ") + m.Setting,
+        std::max(0.0, m.Ms), value(m) });
     }
-    const double fx = (std::max(0.0, m.Ms) - xAxis->GetMinimum()) /
-      std::max(1e-9, xAxis->GetMaximum() - xAxis->GetMinimum());
-    const double fy =
-      (value(m) - yAxis->GetMinimum()) / std::max(1e-9, yAxis->GetMaximum() - yAxis->GetMinimum());
-    vtkNew<vtkTextActor> label;
-    label->SetInput(((m.Type == Kind::VTK ? "vtk " : m.Method ? "gtao " : "hemi ") + m.Setting).c_str());
-    label->GetTextProperty()->SetFontSize(11);
-    label->GetTextProperty()->SetColor(m.Type == Kind::VTK ? 0.1 : 0.7, 0.25, m.Type == Kind::VTK ? 0.75 : 0.1);
-    // Right of the point, or left of it near the right border.
-    const bool left = fx > 0.8;
-    label->GetTextProperty()->SetJustification(left ? VTK_TEXT_RIGHT : VTK_TEXT_LEFT);
-    label->SetDisplayPosition(static_cast<int>(x0[0] + fx * (x1[0] - x0[0])) + (left ? -6 : 6),
-      static_cast<int>(y0[1] + fy * (y1[1] - y0[1])) - 4);
-    view->GetRenderer()->AddActor2D(label);
   }
-  view->GetRenderWindow()->Render();
-  vtkNew<vtkImageData> image;
-  std::vector<unsigned char> pixels = vtkFXScenes::Capture(view->GetRenderWindow());
-  image->SetDimensions(width, height, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  std::copy(pixels.begin(), pixels.end(), static_cast<unsigned char*>(image->GetScalarPointer()));
-  WritePNG(image, path);
+  WritePointsPlot(families, points, title, "AO time (ms per frame)", yTitle, path);
 }
 
 double PSNROf(const Method& m)

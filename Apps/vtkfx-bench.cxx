@@ -1,9 +1,9 @@
 // vtkfx-bench: error against run time, in one process, for vtkFX's passes
 // next to VTK's own rendering.
 //
-//   vtkfx-bench pipeline|ao [INPUT ...] [--size WxH] [--frames N] --out DIR
+//   vtkfx-bench pipeline|ao|bloom [INPUT ...] [--size WxH] [--frames N] --out DIR
 //
-// "ao": see vtkFXBenchAO.cxx.
+// "ao": see vtkFXBenchAO.cxx; "bloom": see vtkFXBenchBloom.cxx.
 // "pipeline": the vtkFX pipeline with no effect (which must reproduce VTK's
 // forward render of the same scene), with its default ambient occlusion and
 // with toon shading (bands and feature lines, vtkFXToonPass's defaults),
@@ -152,7 +152,7 @@ int BenchPipeline(const Options& o)
 
 void Usage(std::ostream& os)
 {
-  os << "usage: vtkfx-bench pipeline|ao [INPUT ...] [--size WxH] [--frames N]\n"
+  os << "usage: vtkfx-bench pipeline|ao|bloom [INPUT ...] [--size WxH] [--frames N]\n"
         "                   [--falloff binary|cuberoot] --out DIR\n"
         "pipeline: vtkFX without effects, with its default ambient occlusion and with\n"
         "          toon shading against\n"
@@ -161,7 +161,9 @@ void Usage(std::ostream& os)
         "ao:       ambient occlusion against a ray-traced reference, vtkFX's and VTK's\n"
         "          (default: scene:corner, bunny, fandisk, 1crn.pdb, 640x480), with\n"
         "          visibility within R (--falloff binary, the default) or the\n"
-        "          near-weighted 1 - (t/R)^(1/3) (--falloff cuberoot)\n";
+        "          near-weighted 1 - (t/R)^(1/3) (--falloff cuberoot)\n"
+        "bloom:    vtkFX's glow and the seed's direct 21x21 Gaussian against the exact\n"
+        "          glow computed on the CPU (default: scene:glow, 1280x720)\n";
 }
 }
 
@@ -212,7 +214,7 @@ int main(int argc, char* argv[])
     else
       o.Inputs.push_back(a);
   }
-  if ((o.Effect != "pipeline" && o.Effect != "ao") || o.Out.empty())
+  if ((o.Effect != "pipeline" && o.Effect != "ao" && o.Effect != "bloom") || o.Out.empty())
   {
     std::cerr << "vtkfx-bench: " << (o.Out.empty() ? "--out DIR is required" : "unknown benchmark '" + o.Effect + "'") << "\n";
     Usage(std::cerr);
@@ -233,6 +235,14 @@ int main(int argc, char* argv[])
       o.Height = 480;
     }
     return BenchAO(o);
+  }
+  if (o.Effect == "bloom")
+  {
+    if (o.Inputs.empty())
+    {
+      o.Inputs = { "scene:glow" };
+    }
+    return BenchBloom(o);
   }
   if (o.Inputs.empty())
   {

@@ -57,14 +57,22 @@ unsigned int vtkFXBloomPass::GetRequiredChannels()
 
 int vtkFXBloomPass::GetNumberOfLevels(int width, int height) const
 {
-  const double reach = std::max(2.0, this->Radius * height);
-  int levels = std::min(MaximumLevels, static_cast<int>(std::ceil(std::log2(reach))));
+  // The level whose blur is nearest the reach (on a log scale) is the last.
+  const double reach = std::max(1.0, this->Radius * height);
+  int levels = 1;
+  for (int k = 2; k <= MaximumLevels; ++k)
+  {
+    if (std::fabs(std::log(GetLevelSigma(k) / reach)) < std::fabs(std::log(GetLevelSigma(levels) / reach)))
+    {
+      levels = k;
+    }
+  }
   // Stop before a level would be smaller than 2 x 2 texels.
   while (levels > 1 && ((width >> levels) < 2 || (height >> levels) < 2))
   {
     --levels;
   }
-  return std::max(1, levels);
+  return levels;
 }
 
 double vtkFXBloomPass::GetLevelSigma(int k)

@@ -15,8 +15,9 @@
  * energy from isolated bright pixels).
  *
  * The glow reaches about Radius x the viewport's height: the pyramid has
- * ceil(log2(Radius x height)) levels below full resolution (at least 1,
- * at most 10, fewer when a level would be under 2 pixels).
+ * the levels below full resolution up to the one whose blur
+ * (GetLevelSigma) is nearest that reach (at least 1, at most 10, fewer
+ * when a level would be under 2 pixels).
  *
  * NaN and infinite sources never spread: NaN counts as 0 and anything
  * above 65504 (the largest half float) as 65504; with FireflySuppression
@@ -28,8 +29,8 @@
  * channel are left out and the image is exactly the one without bloom.
  * Cost: one pass per level down and up, the first at half resolution with
  * 13 (26 with a threshold) bilinear source reads per texel, each next one
- * at a quarter of the texels of the one before; one full-resolution pass
- * of 9 bilinear reads, blended. Memory: two RGBA16F textures per level
+ * at a quarter of the texels of the one before, 4 bilinear reads per
+ * texel up; one full-resolution pass of 4 bilinear reads, blended. Memory: two RGBA16F textures per level
  * (about 2 x 8 / 3 bytes per full-resolution pixel).
  */
 #ifndef vtkFXBloomPass_h

@@ -1,7 +1,9 @@
 //VTK::System::Dec
 // vtkFXBloomUpsampleFS: one step up the bloom's pyramid (Jimenez 2014): a
-// 3x3 tent ([1 2 1] x [1 2 1] / 16) of bilinear taps one texel apart in
-// the coarser level, added to this level's own share:
+// 3x3 tent ([1 2 1] x [1 2 1] / 16) of the coarser level, added to this
+// level's own share. The tent is read as four bilinear taps half a texel
+// off diagonally: each averages a 2x2 block, and the four blocks overlap
+// into exactly the [1 2 1] x [1 2 1] weights (4 reads instead of 9):
 //   up_k = w_k down_k + tent(up_k+1),
 // so the full-resolution result is the sum over levels of w_k times level
 // k brought up, and with sum w_k = 1 its total equals the source's total
@@ -22,16 +24,11 @@ uniform float fxIntensity;    // FX_FINAL
 
 void main()
 {
-  vec2 t = fxCoarseTexel;
-  vec3 tent = 4.0 * texture(fxCoarse, texCoord).rgb;
-  tent += 2.0 * (texture(fxCoarse, texCoord + vec2(t.x, 0.0)).rgb +
-                  texture(fxCoarse, texCoord - vec2(t.x, 0.0)).rgb +
-                  texture(fxCoarse, texCoord + vec2(0.0, t.y)).rgb +
-                  texture(fxCoarse, texCoord - vec2(0.0, t.y)).rgb);
-  tent += texture(fxCoarse, texCoord + t).rgb + texture(fxCoarse, texCoord - t).rgb +
+  vec2 t = 0.5 * fxCoarseTexel;
+  vec3 tent = texture(fxCoarse, texCoord + t).rgb + texture(fxCoarse, texCoord - t).rgb +
     texture(fxCoarse, texCoord + vec2(t.x, -t.y)).rgb +
     texture(fxCoarse, texCoord + vec2(-t.x, t.y)).rgb;
-  tent *= fxCoarseScale / 16.0;
+  tent *= 0.25 * fxCoarseScale;
 #if FX_FINAL
   gl_FragData[0] = vec4(fxIntensity * tent, 0.0);
 #else
