@@ -25,6 +25,7 @@ struct Options
   int Frames = 15;
   std::string Out;
   int Falloff = 0; // ao: vtkFXSSAOPass::Falloff (0 Binary, 1 CubeRoot)
+  int MaxVTKLights = 256; // lights: most lights VTK's forward render is timed with
 };
 
 double Median(std::vector<double> v);
@@ -76,6 +77,9 @@ int BenchAO(const Options& o);
 
 // The "bloom" benchmark (vtkFXBenchBloom.cxx).
 int BenchBloom(const Options& o);
+
+// The "lights" benchmark (vtkFXBenchLights.cxx).
+int BenchLights(const Options& o);
 }
 
 #endif

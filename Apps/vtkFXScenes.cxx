@@ -578,6 +578,8 @@ bool PopulateBuiltIn(vtkRenderer* renderer, const std::string& name, std::string
     SceneLights(renderer);
   else if (name == "scene:glow")
     SceneGlow(renderer);
+  else if (name == "scene:pointlights")
+    SceneSpheres(renderer); // Populate adds the lights over the ground
   else if (name == "scene:mixed")
     SceneMixed(renderer);
   else if (name == "scene:volume")
@@ -609,14 +611,14 @@ std::vector<std::string> vtkFXScenes::BuiltInSceneNames()
 {
   return { "scene:spheres", "scene:corner", "scene:scalars", "scene:textured", "scene:glyphs",
     "scene:composite", "scene:splats", "scene:lights", "scene:mixed", "scene:volume", "scene:edges",
-    "scene:molecule", "scene:glow" };
+    "scene:molecule", "scene:glow", "scene:pointlights" };
 }
 
 bool vtkFXScenes::Populate(vtkRenderer* renderer, const std::string& input,
   const Options& options, std::string& error, double dataBounds[6])
 {
   bool ok = false;
-  const bool lightKitScene = input != "scene:lights";
+  const bool lightKitScene = input != "scene:lights" && input != "scene:pointlights";
   if (input.rfind("scene:", 0) == 0)
   {
     ok = PopulateBuiltIn(renderer, input, error);
@@ -667,9 +669,52 @@ bool vtkFXScenes::Populate(vtkRenderer* renderer, const std::string& input,
     vtkNew<vtkLightKit> kit;
     kit->AddLightsToRenderer(renderer);
   }
+  if (input == "scene:pointlights")
+  {
+    vtkFXScenes::AddPointLights(renderer, 256, bounds);
+  }
   renderer->SetBackground(0.32, 0.34, 0.43);
   FrameCamera(renderer, bounds);
   return true;
+}
+
+double vtkFXScenes::AddPointLights(
+  vtkRenderer* renderer, int count, const double b[6], double reach)
+{
+  renderer->RemoveAllLights();
+  // The ground of AddGround: a square of half-size `size` at height b[2].
+  const double dx = b[1] - b[0], dy = b[3] - b[2], dz = b[5] - b[4];
+  const double size = 0.9 * std::max(std::max(dx, dz), 0.5 * dy) + 1e-30;
+  const double cx = 0.5 * (b[0] + b[1]), cz = 0.5 * (b[4] + b[5]);
+  const int side = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count)))));
+  const double spacing = 2.0 * size / side;
+  const double range = reach * spacing;
+  const double cutoff = 1.0 / 512.0;
+  unsigned int state = 12345u; // a fixed sequence: every run places the same lights
+  const auto random = [&state]() {
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) / 16777216.0;
+  };
+  for (int i = 0; i < count; ++i)
+  {
+    const double x = cx - size + spacing * (i % side + random());
+    const double z = cz - size + spacing * (i / side + random());
+    const double hue = random();
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->PositionalOn();
+    light->SetConeAngle(180.0);
+    light->SetPosition(x, b[2] + 0.05 * spacing, z);
+    light->SetFocalPoint(x, b[2], z);
+    double rgb[3];
+    vtkMath::HSVToRGB(hue, 0.6, 1.0, rgb, rgb + 1, rgb + 2);
+    light->SetColor(rgb);
+    light->SetIntensity(1.0);
+    const double brightest = std::max(rgb[0], std::max(rgb[1], rgb[2]));
+    light->SetAttenuationValues(1.0, 0.0, (2.0 * brightest / cutoff - 1.0) / (range * range));
+    renderer->AddLight(light);
+  }
+  return spacing;
 }
 
 std::vector<unsigned char> vtkFXScenes::Capture(vtkRenderWindow* window)

@@ -75,6 +75,17 @@ int MaxDifference(const std::vector<unsigned char>& a, const std::vector<unsigne
 void BackgroundBytes(vtkRenderer* renderer, unsigned char rgb[3]);
 
 /**
+ * Replaces the renderer's lights with `count` coloured point lights on a
+ * jittered grid over the ground that Populate puts under `bounds`, hovering
+ * 1/20 of the grid spacing above it. Each is attenuated as VTK does,
+ * 1 / (1 + k d^2), with k such that it can add at most 1/512 to a colour
+ * (vtkFXCompositePass's default LightCutoff) at `reach` grid spacings: so
+ * each point of the ground is reached by about pi reach^2 lights whatever
+ * the count. Returns the grid spacing.
+ */
+double AddPointLights(vtkRenderer* renderer, int count, const double bounds[6], double reach = 1.5);
+
+/**
  * The window's current image as RGB bytes (bottom row first).
  */
 std::vector<unsigned char> Capture(vtkRenderWindow* window);

@@ -1,9 +1,10 @@
 // vtkfx-bench: error against run time, in one process, for vtkFX's passes
 // next to VTK's own rendering.
 //
-//   vtkfx-bench pipeline|ao|bloom [INPUT ...] [--size WxH] [--frames N] --out DIR
+//   vtkfx-bench pipeline|ao|bloom|lights [INPUT ...] [--size WxH] [--frames N] --out DIR
 //
-// "ao": see vtkFXBenchAO.cxx; "bloom": see vtkFXBenchBloom.cxx.
+// "ao": see vtkFXBenchAO.cxx; "bloom": vtkFXBenchBloom.cxx; "lights":
+// vtkFXBenchLights.cxx.
 // "pipeline": the vtkFX pipeline with no effect (which must reproduce VTK's
 // forward render of the same scene), with its default ambient occlusion and
 // with toon shading (bands and feature lines, vtkFXToonPass's defaults),
@@ -152,8 +153,8 @@ int BenchPipeline(const Options& o)
 
 void Usage(std::ostream& os)
 {
-  os << "usage: vtkfx-bench pipeline|ao|bloom [INPUT ...] [--size WxH] [--frames N]\n"
-        "                   [--falloff binary|cuberoot] --out DIR\n"
+  os << "usage: vtkfx-bench pipeline|ao|bloom|lights [INPUT ...] [--size WxH] [--frames N]\n"
+        "                   [--falloff binary|cuberoot] [--max-vtk-lights N] --out DIR\n"
         "pipeline: vtkFX without effects, with its default ambient occlusion and with\n"
         "          toon shading against\n"
         "          VTK's forward render (default: every built-in scene, the bunny and\n"
@@ -163,7 +164,10 @@ void Usage(std::ostream& os)
         "          visibility within R (--falloff binary, the default) or the\n"
         "          near-weighted 1 - (t/R)^(1/3) (--falloff cuberoot)\n"
         "bloom:    vtkFX's glow and the seed's direct 21x21 Gaussian against the exact\n"
-        "          glow computed on the CPU (default: scene:glow, 1280x720)\n";
+        "          glow computed on the CPU (default: scene:glow, 1280x720)\n"
+        "lights:   frame time with 1 to 1024 point lights, vtkFX against VTK's forward\n"
+        "          render (VTK up to --max-vtk-lights, default 256; default INPUT\n"
+        "          scene:spheres, 1280x720)\n";
 }
 }
 
@@ -185,6 +189,8 @@ int main(int argc, char* argv[])
       }
       o.Falloff = f == "binary" ? 0 : 1;
     }
+    else if (a == "--max-vtk-lights" && i + 1 < argc)
+      o.MaxVTKLights = std::max(0, std::atoi(argv[++i]));
     else if (a == "--frames" && i + 1 < argc)
       o.Frames = std::max(1, std::atoi(argv[++i]));
     else if (a == "--size" && i + 1 < argc)
@@ -214,7 +220,9 @@ int main(int argc, char* argv[])
     else
       o.Inputs.push_back(a);
   }
-  if ((o.Effect != "pipeline" && o.Effect != "ao" && o.Effect != "bloom") || o.Out.empty())
+  const bool known = o.Effect == "pipeline" || o.Effect == "ao" || o.Effect == "bloom" ||
+    o.Effect == "lights";
+  if (!known || o.Out.empty())
   {
     std::cerr << "vtkfx-bench: " << (o.Out.empty() ? "--out DIR is required" : "unknown benchmark '" + o.Effect + "'") << "\n";
     Usage(std::cerr);
@@ -243,6 +251,10 @@ int main(int argc, char* argv[])
       o.Inputs = { "scene:glow" };
     }
     return BenchBloom(o);
+  }
+  if (o.Effect == "lights")
+  {
+    return BenchLights(o);
   }
   if (o.Inputs.empty())
   {

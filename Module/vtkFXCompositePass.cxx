@@ -11,6 +11,7 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkTransform.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -24,6 +25,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 
 vtkStandardNewMacro(vtkFXCompositePass);
@@ -81,18 +83,32 @@ std::string UniformLightCalls(int complexity, int lightCount, const std::string&
   return s.str();
 }
 
-// The same calls in a loop over the light texture (layout: UploadLightTexture).
-std::string TextureLightLoop(int complexity, const std::string& visibilityCode)
+// The same calls in a loop over the light texture (layout: UploadLightTexture),
+// over every light or, with tiles, over the lights of this pixel's tile
+// (vtkFXLightTiles: per tile the first entry and the count; entries hold
+// light rows, IndicesPerRow to a row).
+std::string TextureLightLoop(int complexity, const std::string& visibilityCode, bool tiled)
 {
   const std::string call = complexity == 2
     ? "fxDirectionalLight(n, view, light1.xyz, light0.rgb, specularPower, "
     : "fxPositionalLight(n, position, view, int(light0.a), light1.xyz, light2.xyz, light3.xyz, "
       "light1.w, light2.w, light0.rgb, specularPower, ";
-  return "    for (int i = 0; i < fxLightCount; ++i)\n    {\n"
-         "      vec4 light0 = texelFetch(fxLights, ivec2(0, i), 0);\n"
-         "      vec4 light1 = texelFetch(fxLights, ivec2(1, i), 0);\n"
-         "      vec4 light2 = texelFetch(fxLights, ivec2(2, i), 0);\n"
-         "      vec4 light3 = texelFetch(fxLights, ivec2(3, i), 0);\n" +
+  const std::string perRow = std::to_string(vtkFXLightTiles::IndicesPerRow);
+  const std::string loop = tiled
+    ? "    ivec2 fxTile = ivec2(texCoord * vec2(textureSize(fxAlbedo, 0))) / " +
+      std::to_string(vtkFXLightTiles::TileSize) +
+      ";\n"
+      "    vec2 fxTileList = texelFetch(fxLightTileHeaders, fxTile, 0).rg;\n"
+      "    int fxFirst = int(fxTileList.r);\n"
+      "    for (int entry = fxFirst; entry < fxFirst + int(fxTileList.g); ++entry)\n    {\n"
+      "      int i = int(texelFetch(fxLightTileIndices, ivec2(entry % " +
+      perRow + ", entry / " + perRow + "), 0).r);\n"
+    : "    for (int i = 0; i < fxLightCount; ++i)\n    {\n";
+  return loop +
+    "      vec4 light0 = texelFetch(fxLights, ivec2(0, i), 0);\n"
+    "      vec4 light1 = texelFetch(fxLights, ivec2(1, i), 0);\n"
+    "      vec4 light2 = texelFetch(fxLights, ivec2(2, i), 0);\n"
+    "      vec4 light3 = texelFetch(fxLights, ivec2(3, i), 0);\n" +
     LightTerm(call, "i", visibilityCode) + "    }\n";
 }
 
@@ -231,6 +247,7 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
   defines << "//VTK::System::Dec\n"
           << "#define FX_LIGHTING " << complexity << "\n"
           << "#define FX_LIGHT_TEXTURE " << (lightTexture ? 1 : 0) << "\n"
+          << "#define FX_LIGHT_TILES " << (lightTexture && this->LightCutoff > 0.0 ? 1 : 0) << "\n"
           << "#define FX_HAS_SPECULAR " << (hasSpecular ? 1 : 0) << "\n"
           << "#define FX_HAS_AMBIENT " << (gb->GetChannelTexture(GB::Ambient) ? 1 : 0) << "\n"
           << "#define FX_HAS_EMISSION " << (hasEmission ? 1 : 0) << "\n"
@@ -249,7 +266,7 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
   vtkShaderProgram::Substitute(fs, "//VTK::Light::Dec",
     complexity > 0 && !lightTexture ? ren->GetLightingUniforms() : "", false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXLight::Impl",
-    lightTexture ? TextureLightLoop(complexity, visibility)
+    lightTexture ? TextureLightLoop(complexity, visibility, this->LightCutoff > 0.0)
                  : UniformLightCalls(complexity, lightCount, visibility),
     false);
   vtkShaderProgram::Substitute(
@@ -271,6 +288,7 @@ int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
   vtkTransform* view = ren->GetActiveCamera()->GetModelViewTransformObject();
   vtkTransform* user = ren->GetUserLightTransform();
   std::vector<float> texels;
+  std::vector<vtkFXLightTiles::Light> spheres; // for the tiles
   vtkLightCollection* lights = ren->GetLights();
   vtkCollectionSimpleIterator it;
   lights->InitTraversal(it);
@@ -298,6 +316,10 @@ int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
       directionVC[1], directionVC[2], light->GetConeAngle(), positionVC[0], positionVC[1],
       positionVC[2], light->GetExponent(), attenuation[0], attenuation[1], attenuation[2], 0.0 };
     texels.insert(texels.end(), row, row + LightTexels * 4);
+    const double brightest = intensity * std::max(color[0], std::max(color[1], color[2]));
+    spheres.push_back({ { positionVC[0], positionVC[1], positionVC[2] },
+      light->GetPositional() ? vtkFXLightTiles::Range(brightest, attenuation, this->LightCutoff)
+                             : std::numeric_limits<double>::infinity() });
   }
   const int count = static_cast<int>(texels.size() / (LightTexels * 4));
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
@@ -310,7 +332,32 @@ int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
   {
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, LightTexels, count, GL_RGBA, GL_FLOAT, texels.data());
   }
+  this->LightTilesUsed = this->LightCutoff > 0.0;
+  if (this->LightTilesUsed)
+  {
+    this->BuildLightTiles(ren, spheres);
+  }
   return count;
+}
+
+void vtkFXCompositePass::BuildLightTiles(
+  vtkOpenGLRenderer* ren, const std::vector<vtkFXLightTiles::Light>& lights)
+{
+  vtkTextureObject* albedo = this->GBuffer->GetChannelTexture(GB::Albedo);
+  vtkMatrix4x4* projection =
+    ren->GetActiveCamera()->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1);
+  if (!this->LightTiles)
+  {
+    this->LightTiles.reset(new vtkFXLightTiles);
+  }
+  this->LightTiles->Build(lights, &projection->Element[0][0], static_cast<int>(albedo->GetWidth()),
+    static_cast<int>(albedo->GetHeight()));
+  this->LightTiles->Upload(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()));
+}
+
+double vtkFXCompositePass::GetMeanLightsPerTile() const
+{
+  return this->LightTilesUsed && this->LightTiles ? this->LightTiles->GetMeanLightsPerTile() : 0.0;
 }
 
 void vtkFXCompositePass::SetUniforms(vtkShaderProgram* program, vtkOpenGLRenderer* ren)
@@ -322,10 +369,20 @@ void vtkFXCompositePass::SetUniforms(vtkShaderProgram* program, vtkOpenGLRendere
     const int count = this->UploadLightTexture(ren);
     BindSampler(program, "fxLights", this->LightTexture);
     program->SetUniformi("fxLightCount", count);
+    if (this->LightTilesUsed)
+    {
+      BindSampler(program, "fxLightTileHeaders", this->LightTiles->GetHeaderTexture());
+      BindSampler(program, "fxLightTileIndices", this->LightTiles->GetIndexTexture());
+    }
   }
   else
   {
+    this->LightTilesUsed = false;
     vtkFXRenderUtilities::Release(this->LightTexture, ren->GetRenderWindow());
+    if (this->LightTiles)
+    {
+      this->LightTiles->ReleaseGraphicsResources(ren->GetRenderWindow());
+    }
     // VTK's own light uniforms, exactly as its mappers receive them.
     ren->UpdateLightingUniforms(program);
   }
@@ -420,6 +477,11 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
   {
     this->LightTexture->Deactivate();
   }
+  if (this->LightTilesUsed)
+  {
+    this->LightTiles->GetHeaderTexture()->Deactivate();
+    this->LightTiles->GetIndexTexture()->Deactivate();
+  }
   for (const auto& contributor : this->Contributors)
   {
     contributor->UnbindCompositeResources();
@@ -430,6 +492,10 @@ void vtkFXCompositePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkFXRenderUtilities::ReleaseQuad(this->Quad, this->QuadSource, w);
   vtkFXRenderUtilities::Release(this->LightTexture, w);
+  if (this->LightTiles)
+  {
+    this->LightTiles->ReleaseGraphicsResources(w);
+  }
 }
 
 void vtkFXCompositePass::PrintSelf(ostream& os, vtkIndent indent)

@@ -10,7 +10,11 @@
  * shaders (same formulas, same uniforms). With more lights on than
  * MaximumUniformLights, the same light parameters come from a small float
  * texture (4 RGBA32F texels per light) that the shader loops over, so the
- * light count is a uniform: adding a light recompiles nothing.
+ * light count is a uniform: adding a light recompiles nothing. On that
+ * path lights are culled per 16 x 16 pixel tile (vtkFXLightTiles): a
+ * positional light counts only where its attenuated light can still add
+ * LightCutoff to a colour, so each pixel loops over the lights that reach
+ * it, not over every light in the scene.
  *
  * Writes: the lit colour of every covered pixel into the current framebuffer
  * (blended like VTK's opaque pass), and the G-buffer depth into its depth
@@ -18,8 +22,10 @@
  * depth-tested as usual. Background pixels are left untouched.
  *
  * Cost: one full-screen pass, one texture read per allocated channel and a
- * loop over the lights per pixel (plus 4 texel reads per light on the
- * light-texture path), plus what the contributing effects' code costs.
+ * loop over the lights per pixel (on the light-texture path, over the
+ * lights of the pixel's tile, with 5 texel reads per light, and building
+ * the tiles' lists on the CPU), plus what the contributing effects' code
+ * costs.
  *
  * Effects contribute code at the composite's hook points (declarations,
  * per-light visibility, ambient visibility, final colour; see
@@ -33,6 +39,7 @@
 #define vtkFXCompositePass_h
 
 #include "vtkFXGBufferPass.h" // for the channel count
+#include "vtkFXLightTiles.h" // for the tiles' light entries
 #include "vtkFXModule.h"
 #include "vtkRenderPass.h"
 
@@ -98,11 +105,30 @@ public:
   vtkGetMacro(UseEmission, bool);
 
   /**
-   * Most lights served by VTK's per-light uniforms (1..64, default 8); with
-   * more lights on, they come from a light texture the shader loops over.
+   * Most lights served by VTK's per-light uniforms (0..64, default 8); with
+   * more lights on, they come from a light texture the shader loops over,
+   * culled per tile. 0 sends every light of lighting complexity 2 and 3
+   * through the light texture.
    */
-  vtkSetClampMacro(MaximumUniformLights, int, 1, 64);
+  vtkSetClampMacro(MaximumUniformLights, int, 0, 64);
   vtkGetMacro(MaximumUniformLights, int);
+
+  /**
+   * On the light-texture path, a positional light is left out of a tile
+   * where, by VTK's attenuation, it can add less than LightCutoff to a
+   * colour channel (linear units, 0..1, default 1/512: under half a level
+   * of an 8-bit image). 0 keeps every light in every tile (no culling).
+   * Lights VTK does not attenuate (attenuation 1, 0, 0, VTK's default) and
+   * directional lights reach every tile whatever the cutoff.
+   */
+  vtkSetClampMacro(LightCutoff, double, 0.0, 1.0);
+  vtkGetMacro(LightCutoff, double);
+
+  /**
+   * Mean number of lights per tile in the last frame on the light-texture
+   * path (0 otherwise): what each pixel loops over.
+   */
+  double GetMeanLightsPerTile() const;
 
   ///@{
   /**
@@ -144,6 +170,7 @@ protected:
   std::string EffectCode(int hook) const;
   bool UsesLightTexture(vtkOpenGLRenderer* ren) const;
   int UploadLightTexture(vtkOpenGLRenderer* ren); // returns the lights uploaded
+  void BuildLightTiles(vtkOpenGLRenderer* ren, const std::vector<vtkFXLightTiles::Light>& lights);
   void SetUniforms(vtkShaderProgram* program, vtkOpenGLRenderer* ren);
   void Draw(vtkOpenGLRenderer* ren);
 
@@ -151,6 +178,7 @@ protected:
   double OcclusionDiffuseStrength = 1.0;
   int DebugChannel = -1;
   int MaximumUniformLights = 8;
+  double LightCutoff = 1.0 / 512.0;
   bool DebugOcclusion = false;
   bool UseSpecular = true;
   bool UseAmbient = true;
@@ -161,6 +189,8 @@ protected:
   bool ReportedPositionalWithoutDepth = false;
   std::vector<vtkSmartPointer<vtkFXEffectPass>> Contributors;
   vtkSmartPointer<vtkTextureObject> LightTexture;
+  std::unique_ptr<vtkFXLightTiles> LightTiles;
+  bool LightTilesUsed = false;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   std::string QuadSource;
 

@@ -14,6 +14,7 @@
 // visibility, and the final colour.
 //
 // Defines set by vtkFXCompositePass: FX_LIGHTING (0..3), FX_LIGHT_TEXTURE,
+// FX_LIGHT_TILES,
 // FX_HAS_SPECULAR, FX_HAS_AMBIENT, FX_HAS_EMISSION, FX_NEEDS_POSITION,
 // FX_DEBUG_CHANNEL, FX_DEBUG_OCCLUSION, and the channel numbers
 // FX_CHANNEL_NORMAL, FX_CHANNEL_DEPTH (vtkFXGBufferPass::Channel).
@@ -45,6 +46,11 @@ uniform sampler2D fxEmission;
 // angle; position (view space) and exponent; attenuation.
 uniform sampler2D fxLights;
 uniform int fxLightCount;
+#if FX_LIGHT_TILES
+// Per 16 x 16 pixel tile, the lights that reach it (vtkFXLightTiles).
+uniform sampler2D fxLightTileHeaders; // (first entry, count)
+uniform sampler2D fxLightTileIndices; // light rows
+#endif
 #endif
 uniform float fxOcclusionDiffuseStrength;
 #if FX_DEBUG_CHANNEL >= 0

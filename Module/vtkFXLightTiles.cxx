@@ -1,0 +1,171 @@
+#include "vtkFXLightTiles.h"
+
+#include "vtkFXRenderUtilities.h"
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+vtkFXLightTiles::vtkFXLightTiles() = default;
+vtkFXLightTiles::~vtkFXLightTiles() = default;
+
+double vtkFXLightTiles::Range(double intensity, const double attenuation[3], double cutoff)
+{
+  const double infinity = std::numeric_limits<double>::infinity();
+  if (!(cutoff > 0.0))
+  {
+    return infinity;
+  }
+  // Solve a0 + a1 d + a2 d^2 = 2 intensity / cutoff for the largest d >= 0.
+  const double target = 2.0 * intensity / cutoff;
+  const double a0 = attenuation[0], a1 = attenuation[1], a2 = attenuation[2];
+  if (!(a0 < target))
+  {
+    return -1.0; // dimmer than the cutoff even at the light
+  }
+  if (a2 > 0.0)
+  {
+    return (-a1 + std::sqrt(a1 * a1 + 4.0 * a2 * (target - a0))) / (2.0 * a2);
+  }
+  return a1 > 0.0 ? (target - a0) / a1 : infinity;
+}
+
+bool vtkFXLightTiles::CoveredTiles(const Light& light, const double p[16], int box[4]) const
+{
+  box[0] = 0;
+  box[1] = 0;
+  box[2] = this->TilesX - 1;
+  box[3] = this->TilesY - 1;
+  if (!(light.Radius >= 0.0))
+  {
+    return false; // never brighter than the cutoff (Range < 0)
+  }
+  if (!std::isfinite(light.Radius))
+  {
+    return true;
+  }
+  double lo[2] = { std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity() };
+  double hi[2] = { -lo[0], -lo[1] };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    double v[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      v[a] = light.Center[a] + ((corner >> a) & 1 ? light.Radius : -light.Radius);
+    }
+    const double clip[4] = { p[0] * v[0] + p[1] * v[1] + p[2] * v[2] + p[3],
+      p[4] * v[0] + p[5] * v[1] + p[6] * v[2] + p[7], 0.0,
+      p[12] * v[0] + p[13] * v[1] + p[14] * v[2] + p[15] };
+    if (!(clip[3] > 1e-12 * std::fabs(light.Radius)))
+    {
+      return true; // the sphere reaches the camera's plane: anywhere on screen
+    }
+    for (int a = 0; a < 2; ++a)
+    {
+      lo[a] = std::min(lo[a], clip[a] / clip[3]);
+      hi[a] = std::max(hi[a], clip[a] / clip[3]);
+    }
+  }
+  if (lo[0] > 1.0 || lo[1] > 1.0 || hi[0] < -1.0 || hi[1] < -1.0)
+  {
+    return false; // off screen
+  }
+  const int tiles[2] = { this->TilesX, this->TilesY };
+  for (int a = 0; a < 2; ++a)
+  {
+    const double size = static_cast<double>(tiles[a]) * TileSize;
+    // Pixels from the viewport's corner; tiles past the last are clamped.
+    const double first = std::floor((0.5 * lo[a] + 0.5) * size / TileSize);
+    const double last = std::floor((0.5 * hi[a] + 0.5) * size / TileSize);
+    box[a] = static_cast<int>(std::max(0.0, std::min(first, tiles[a] - 1.0)));
+    box[a + 2] = static_cast<int>(std::max(0.0, std::min(last, tiles[a] - 1.0)));
+  }
+  return true;
+}
+
+void vtkFXLightTiles::Build(
+  const std::vector<Light>& lights, const double projection[16], int width, int height)
+{
+  this->TilesX = std::max(1, (width + TileSize - 1) / TileSize);
+  this->TilesY = std::max(1, (height + TileSize - 1) / TileSize);
+  const size_t tiles = static_cast<size_t>(this->TilesX) * this->TilesY;
+  std::vector<int> boxes(4 * lights.size());
+  std::vector<char> visible(lights.size());
+  std::vector<size_t> counts(tiles, 0);
+  for (size_t i = 0; i < lights.size(); ++i)
+  {
+    int* box = &boxes[4 * i];
+    visible[i] = this->CoveredTiles(lights[i], projection, box);
+    for (int y = box[1]; visible[i] && y <= box[3]; ++y)
+    {
+      for (int x = box[0]; x <= box[2]; ++x)
+      {
+        ++counts[static_cast<size_t>(y) * this->TilesX + x];
+      }
+    }
+  }
+  this->HeaderData.assign(2 * tiles, 0.0f);
+  size_t total = 0;
+  for (size_t t = 0; t < tiles; ++t)
+  {
+    this->HeaderData[2 * t] = static_cast<float>(total);
+    total += counts[t];
+  }
+  this->IndexData.assign(std::max<size_t>(total, 1), 0.0f);
+  std::fill(counts.begin(), counts.end(), 0);
+  for (size_t i = 0; i < lights.size(); ++i)
+  {
+    const int* box = &boxes[4 * i];
+    for (int y = box[1]; visible[i] && y <= box[3]; ++y)
+    {
+      for (int x = box[0]; x <= box[2]; ++x)
+      {
+        const size_t t = static_cast<size_t>(y) * this->TilesX + x;
+        this->IndexData[static_cast<size_t>(this->HeaderData[2 * t]) + counts[t]++] =
+          static_cast<float>(i);
+      }
+    }
+  }
+  for (size_t t = 0; t < tiles; ++t)
+  {
+    this->HeaderData[2 * t + 1] = static_cast<float>(counts[t]);
+  }
+}
+
+void vtkFXLightTiles::Upload(vtkOpenGLRenderWindow* window)
+{
+  vtkFXRenderUtilities::EnsureTexture(
+    this->Headers, window, this->TilesX, this->TilesY, vtkFXRenderUtilities::RG32F);
+  this->Headers->Activate(); // its own unit: binding elsewhere could replace a sampler's texture
+  glTexSubImage2D(
+    GL_TEXTURE_2D, 0, 0, 0, this->TilesX, this->TilesY, GL_RG, GL_FLOAT, this->HeaderData.data());
+  const int entries = static_cast<int>(this->IndexData.size());
+  const int rows = (entries + IndicesPerRow - 1) / IndicesPerRow;
+  const int columns = std::min(entries, static_cast<int>(IndicesPerRow));
+  this->IndexData.resize(static_cast<size_t>(rows) * columns, 0.0f);
+  vtkFXRenderUtilities::EnsureTexture(
+    this->Indices, window, columns, rows, vtkFXRenderUtilities::R32F);
+  this->Indices->Activate();
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, columns, rows, GL_RED, GL_FLOAT, this->IndexData.data());
+}
+
+double vtkFXLightTiles::GetMeanLightsPerTile() const
+{
+  const size_t tiles = this->HeaderData.size() / 2;
+  double sum = 0.0;
+  for (size_t t = 0; t < tiles; ++t)
+  {
+    sum += this->HeaderData[2 * t + 1];
+  }
+  return tiles ? sum / tiles : 0.0;
+}
+
+void vtkFXLightTiles::ReleaseGraphicsResources(vtkWindow* window)
+{
+  vtkFXRenderUtilities::Release(this->Headers, window);
+  vtkFXRenderUtilities::Release(this->Indices, window);
+}

@@ -1,0 +1,100 @@
+/**
+ * @class   vtkFXLightTiles
+ * @brief   Per-screen-tile light lists for the composite's light-texture path.
+ *
+ * The viewport is cut into TileSize x TileSize pixel tiles; each light
+ * goes into the list of every tile its sphere of influence covers on the
+ * screen (the bounding rectangle of the sphere's projected bounding box;
+ * a sphere reaching the camera's near plane covers every tile). A light's
+ * sphere of influence ends where VTK's attenuation, 1 / (a0 + a1 d + a2 d^2),
+ * brings the most it can add to a colour (twice its intensity times
+ * colour: diffuse and specular coefficients at most 1 each) below a
+ * cutoff (Range); a light that VTK never attenuates (a1 = a2 = 0), a
+ * directional light, and any light when the cutoff is 0 go into every
+ * tile. The composite then loops per pixel over its tile's list only, so
+ * the cost grows with the lights that reach a pixel, not with the lights
+ * in the scene; the error is below the cutoff per light and channel.
+ *
+ * Textures (uploaded by Upload): headers, RG32F, one texel per tile
+ * (first entry, count); indices, R32F, 4096 entries per row, each a light's
+ * row in the composite's light texture. Floats hold the integers exactly
+ * up to 2^24 entries.
+ *
+ * A plain C++ helper of vtkFXCompositePass (not wrapped).
+ */
+#ifndef vtkFXLightTiles_h
+#define vtkFXLightTiles_h
+
+#include "vtkFXModule.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h" // for the textures held
+
+#include <vector>
+
+class vtkOpenGLRenderWindow;
+class vtkWindow;
+
+class VTKFX_EXPORT vtkFXLightTiles
+{
+public:
+  static const int TileSize = 16;       // pixels
+  static const int IndicesPerRow = 4096;
+
+  vtkFXLightTiles();
+  ~vtkFXLightTiles();
+
+  /**
+   * Distance at which a positional light of `intensity` (the largest of
+   * its colour's components times its intensity) with VTK's `attenuation`
+   * coefficients can no longer add `cutoff` to a colour: 2 x intensity /
+   * (a0 + a1 d + a2 d^2) = cutoff. Negative when it never reaches the
+   * cutoff anywhere; infinite when it never falls below it.
+   */
+  static double Range(double intensity, const double attenuation[3], double cutoff);
+
+  /**
+   * A light as the composite uploads it: its sphere of influence in view
+   * coordinates (Radius infinite: every tile).
+   */
+  struct Light
+  {
+    double Center[3];
+    double Radius;
+  };
+
+  /**
+   * Lists for a width x height viewport; `projection` is the camera's
+   * view-to-clip matrix (row-major). Light i of `lights` is row i of the
+   * light texture.
+   */
+  void Build(const std::vector<Light>& lights, const double projection[16], int width, int height);
+
+  /**
+   * Uploads the lists of the last Build into the two textures.
+   */
+  void Upload(vtkOpenGLRenderWindow* window);
+  vtkTextureObject* GetHeaderTexture() const { return this->Headers; }
+  vtkTextureObject* GetIndexTexture() const { return this->Indices; }
+
+  /**
+   * Mean list length over the tiles of the last Build (lights per pixel,
+   * as far as tiles can tell).
+   */
+  double GetMeanLightsPerTile() const;
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  // The tiles (inclusive ranges) a sphere covers; false when none.
+  bool CoveredTiles(const Light& light, const double projection[16], int box[4]) const;
+
+  int TilesX = 0;
+  int TilesY = 0;
+  std::vector<float> HeaderData; // (first, count) per tile
+  std::vector<float> IndexData;
+  vtkSmartPointer<vtkTextureObject> Headers;
+  vtkSmartPointer<vtkTextureObject> Indices;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkFXLightTiles.h

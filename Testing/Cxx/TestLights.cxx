@@ -1,0 +1,137 @@
+// Many deferred point lights (vtkFXCompositePass's light texture, culled per
+// screen tile by vtkFXLightTiles), against VTK's forward render of the same
+// lights:
+// - 256 point lights over scene:spheres: PSNR >= 40 dB, and the tiles hold
+//   a small part of the lights (culling happened);
+// - one point light forced through the tiled path (MaximumUniformLights 0):
+//   PSNR >= 40 dB;
+// - a light at the camera (its sphere of influence crosses the near plane)
+//   and parallel projection: PSNR >= 40 dB;
+// - culling against none (LightCutoff 0) with 64 lights: PSNR >= 40 dB
+//   (each left-out light adds under 1/512 where it is left out);
+// - the range formula: the light adds exactly the cutoff at its range.
+#include "vtkFXCompositePass.h"
+#include "vtkFXLightTiles.h"
+#include "vtkFXPipelinePass.h"
+#include "vtkFXScenes.h"
+#include "vtkFXTestUtilities.h"
+
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkRendererCollection.h"
+
+#include <limits>
+
+namespace
+{
+struct Lit
+{
+  std::vector<unsigned char> FX, VTK;
+  double LightsPerTile = 0.0;
+};
+
+// scene:spheres on its ground lit by `count` point lights (and, with
+// `atCamera`, one more at the camera), in vtkFX (with the composite set up
+// by `configure`) and in VTK's forward render.
+Lit Render(vtkRenderWindow* window, int count, bool atCamera, bool parallel,
+  void (*configure)(vtkFXCompositePass*))
+{
+  Lit result;
+  for (bool fx : { true, false })
+  {
+    window->GetRenderers()->RemoveAllItems();
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    std::string error;
+    double bounds[6];
+    if (!vtkFXScenes::Populate(renderer, "scene:spheres", vtkFXScenes::Options(), error, bounds))
+    {
+      std::cerr << error << std::endl;
+      return result;
+    }
+    vtkFXScenes::AddPointLights(renderer, count, bounds);
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->SetParallelProjection(parallel);
+    if (atCamera)
+    {
+      vtkNew<vtkLight> light;
+      light->SetLightTypeToSceneLight();
+      light->PositionalOn();
+      light->SetConeAngle(180.0);
+      light->SetPosition(camera->GetPosition());
+      light->SetFocalPoint(camera->GetFocalPoint());
+      light->SetAttenuationValues(1.0, 0.0, 0.05);
+      renderer->AddLight(light);
+    }
+    vtkNew<vtkFXPipelinePass> pipeline;
+    if (fx)
+    {
+      configure(pipeline->GetCompositePass());
+      renderer->SetPass(pipeline);
+    }
+    window->Render();
+    (fx ? result.FX : result.VTK) = vtkFXScenes::Capture(window);
+    if (fx)
+    {
+      result.LightsPerTile = pipeline->GetCompositePass()->GetMeanLightsPerTile();
+    }
+  }
+  return result;
+}
+
+void Defaults(vtkFXCompositePass*) {}
+void AllTiled(vtkFXCompositePass* composite)
+{
+  composite->SetMaximumUniformLights(0);
+}
+void NoCulling(vtkFXCompositePass* composite)
+{
+  composite->SetLightCutoff(0.0);
+}
+
+int Check(const char* name, const std::vector<unsigned char>& a, const std::vector<unsigned char>& b,
+  double minimum)
+{
+  const double psnr = vtkFXScenes::PSNR(a, b);
+  std::cout << name << ": PSNR " << psnr << " dB" << std::endl;
+  FX_CHECK(psnr >= minimum, name << ": " << psnr << " dB");
+  return EXIT_SUCCESS;
+}
+}
+
+int TestLights(int, char*[])
+{
+  // The range: 2 x intensity / (a0 + a1 d + a2 d^2) is the cutoff there.
+  const double attenuation[3] = { 1.0, 0.5, 2.0 };
+  const double range = vtkFXLightTiles::Range(0.8, attenuation, 1.0 / 512.0);
+  const double added = 2.0 * 0.8 / (1.0 + 0.5 * range + 2.0 * range * range);
+  FX_CHECK(std::fabs(added - 1.0 / 512.0) < 1e-12, "range " << range << " adds " << added);
+  const double flat[3] = { 1.0, 0.0, 0.0 };
+  FX_CHECK(std::isinf(vtkFXLightTiles::Range(1.0, flat, 1.0 / 512.0)), "VTK's default never fades");
+  const double dim[3] = { 2000.0, 0.0, 0.0 };
+  FX_CHECK(vtkFXLightTiles::Range(1.0, dim, 1.0 / 512.0) < 0.0, "a light under the cutoff");
+
+  auto window = vtkFXTest::MakeWindow(200, 150);
+  const Lit many = Render(window, 256, false, false, Defaults);
+  std::cout << "256 lights: " << many.LightsPerTile << " lights per tile" << std::endl;
+  FX_CHECK(Check("256 point lights", many.FX, many.VTK, 40.0) == EXIT_SUCCESS, "");
+  FX_CHECK(many.LightsPerTile > 0.0 && many.LightsPerTile < 256 / 4.0,
+    "tiles hold " << many.LightsPerTile << " of 256 lights");
+
+  const Lit one = Render(window, 1, false, false, AllTiled);
+  FX_CHECK(one.LightsPerTile > 0.0, "one light did not take the tiled path");
+  FX_CHECK(Check("1 point light, tiled", one.FX, one.VTK, 40.0) == EXIT_SUCCESS, "");
+
+  const Lit near = Render(window, 16, true, false, Defaults);
+  FX_CHECK(Check("a light at the camera", near.FX, near.VTK, 40.0) == EXIT_SUCCESS, "");
+  const Lit parallel = Render(window, 64, false, true, Defaults);
+  FX_CHECK(Check("64 lights, parallel projection", parallel.FX, parallel.VTK, 40.0) == EXIT_SUCCESS, "");
+
+  const Lit culled = Render(window, 64, false, false, Defaults);
+  const Lit all = Render(window, 64, false, false, NoCulling);
+  std::cout << "64 lights: " << culled.LightsPerTile << " lights per tile" << std::endl;
+  FX_CHECK(culled.LightsPerTile < 64 / 2, "culling left out too little");
+  FX_CHECK(all.LightsPerTile == 0.0, "tiles without a cutoff");
+  FX_CHECK(Check("culled against all lights", culled.FX, all.FX, 40.0) == EXIT_SUCCESS, "");
+  return EXIT_SUCCESS;
+}
