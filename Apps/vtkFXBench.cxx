@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 
 namespace vtkFXBench
 {
@@ -30,6 +31,19 @@ double Median(std::vector<double> v)
   std::sort(v.begin(), v.end());
   const size_t n = v.size();
   return n == 0 ? -1.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
+}
+
+bool OpenReport(const Options& o, const std::string& name, std::ofstream& csv, std::string& path)
+{
+  path = o.Out + "/" + name + ".csv";
+  csv.open(path.c_str());
+  if (!csv)
+  {
+    std::cerr << "vtkfx-bench: cannot write " << path << "\n";
+    return false;
+  }
+  csv << "scene,method,setting,ms,rmse,psnr\n";
+  return true;
 }
 
 double RMSE(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)

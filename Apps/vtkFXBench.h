@@ -5,6 +5,7 @@
 
 #include "vtkSmartPointer.h"
 
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,10 @@ struct Options
 };
 
 double Median(std::vector<double> v);
+
+// Opens DIR/<name>.csv with the shared report's header (scene, method,
+// setting, ms, rmse, psnr); false, with a message, when it cannot.
+bool OpenReport(const Options& o, const std::string& name, std::ofstream& csv, std::string& path);
 
 // Root-mean-square difference of two byte images, in [0,1] units.
 double RMSE(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b);

@@ -289,14 +289,12 @@ namespace vtkFXBench
 {
 int BenchBloom(const Options& o)
 {
-  const std::string csvPath = o.Out + "/bloom.csv";
-  std::ofstream csv(csvPath.c_str());
-  if (!csv)
+  std::ofstream csv;
+  std::string csvPath;
+  if (!OpenReport(o, "bloom", csv, csvPath))
   {
-    std::cerr << "vtkfx-bench: cannot write " << csvPath << "\n";
     return 1;
   }
-  csv << "scene,method,setting,ms,rmse,psnr\n";
   const double intensity = 0.5; // vtkFXBloomPass's default
   std::vector<Method> methods = MakeMethods(intensity);
   for (auto& m : methods)

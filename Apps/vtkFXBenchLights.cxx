@@ -40,14 +40,12 @@ namespace vtkFXBench
 {
 int BenchLights(const Options& o)
 {
-  const std::string csvPath = o.Out + "/lights.csv";
-  std::ofstream csv(csvPath.c_str());
-  if (!csv)
+  std::ofstream csv;
+  std::string csvPath;
+  if (!OpenReport(o, "lights", csv, csvPath))
   {
-    std::cerr << "vtkfx-bench: cannot write " << csvPath << "\n";
     return 1;
   }
-  csv << "scene,method,setting,ms,rmse,psnr\n";
   const std::string input = o.Inputs.empty() ? "scene:spheres" : o.Inputs.front();
   const int counts[] = { 1, 16, 64, 256, 1024 };
   auto fxWindow = MakeWindow(o);

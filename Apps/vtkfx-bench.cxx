@@ -45,14 +45,12 @@ using namespace vtkFXBench;
 
 int BenchPipeline(const Options& o)
 {
-  const std::string csvPath = o.Out + "/pipeline.csv";
-  std::ofstream csv(csvPath.c_str());
-  if (!csv)
+  std::ofstream csv;
+  std::string csvPath;
+  if (!OpenReport(o, "pipeline", csv, csvPath))
   {
-    std::cerr << "vtkfx-bench: cannot write " << csvPath << "\n";
     return 1;
   }
-  csv << "scene,method,setting,ms,rmse,psnr\n";
   vtkNew<vtkTimerLog> timer;
   // VTK's forward render, then vtkFX with no effect, with its default
   // ambient occlusion and with toon shading, each in its own window, frames
