@@ -71,6 +71,8 @@ public:
   vtkTypeMacro(DirectGlow, vtkFXEffectPass);
   DirectGlow() { this->Stage = PostProcess; }
   unsigned int GetRequiredChannels() override { return GB::ChannelBit(GB::Emission); }
+  // Like vtkFXBloomPass without a threshold: emission only, no HDR target.
+  bool GetNeedsHDRTarget() override { return false; }
   void Configure(int taps, int step, int levels, double intensity)
   {
     this->Taps = taps;

@@ -5,7 +5,11 @@
 #include "vtkFXGBufferPass.h"
 #include "vtkFXRenderUtilities.h"
 
+#include "vtkCamera.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkProp.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -25,6 +29,32 @@ namespace
 {
 using GB = vtkFXGBufferPass;
 const int MaximumLevels = 10;
+
+// While it lives, draws touch only `rect` (x0, y0, x1, y1, ends excluded)
+// of the current target, which is first cleared to 0 when `clear` is set.
+class ScissorScope
+{
+public:
+  ScissorScope(vtkOpenGLState* state, const int rect[4], bool clear)
+    : Enable(state, GL_SCISSOR_TEST)
+    , Box(state)
+    , Clear(state)
+  {
+    if (clear)
+    {
+      state->vtkglDisable(GL_SCISSOR_TEST);
+      state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+      state->vtkglClear(GL_COLOR_BUFFER_BIT);
+    }
+    state->vtkglEnable(GL_SCISSOR_TEST);
+    state->vtkglScissor(rect[0], rect[1], std::max(0, rect[2] - rect[0]), std::max(0, rect[3] - rect[1]));
+  }
+
+private:
+  vtkOpenGLState::ScopedglEnableDisable Enable;
+  vtkOpenGLState::ScopedglScissor Box;
+  vtkOpenGLState::ScopedglClearColor Clear;
+};
 }
 
 // One level of the pyramid: the step down and the step up, each with the
@@ -46,6 +76,19 @@ vtkFXBloomPass::~vtkFXBloomPass() = default;
 
 bool vtkFXBloomPass::HasWork(const vtkFXSceneInfo& scene)
 {
+  // Where the glow can be: around the emissive props (see ComputeGlowRect).
+  vtkMath::UninitializeBounds(this->EmissiveBounds);
+  for (vtkProp* prop : scene.EmissiveProps)
+  {
+    const double* b = prop->GetBounds();
+    for (int a = 0; b && a < 3; ++a)
+    {
+      const bool first = !vtkMath::AreBoundsInitialized(this->EmissiveBounds);
+      this->EmissiveBounds[2 * a] = first ? b[2 * a] : std::min(this->EmissiveBounds[2 * a], b[2 * a]);
+      this->EmissiveBounds[2 * a + 1] =
+        first ? b[2 * a + 1] : std::max(this->EmissiveBounds[2 * a + 1], b[2 * a + 1]);
+    }
+  }
   const bool source = (this->UseEmission && !scene.EmissiveProps.empty()) || this->Threshold >= 0.0;
   return source && this->Intensity > 0.0 && this->Superclass::HasWork(scene);
 }
@@ -84,6 +127,63 @@ double vtkFXBloomPass::GetLevelSigma(int k)
     variance += (0.5 + 1.0 / 6.0) * std::pow(4.0, j + 1); // up from level j + 1
   }
   return std::sqrt(variance);
+}
+
+void vtkFXBloomPass::ComputeGlowRect(vtkRenderer* ren, int width, int height, int levels)
+{
+  int* rect = this->GlowRect;
+  rect[0] = 0;
+  rect[1] = 0;
+  rect[2] = width;
+  rect[3] = height;
+  if (this->Threshold >= 0.0 || !vtkMath::AreBoundsInitialized(this->EmissiveBounds))
+  {
+    return; // lit light may glow anywhere
+  }
+  vtkMatrix4x4* m = ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
+    ren->GetTiledAspectRatio(), -1, 1);
+  double lo[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, hi[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double p[4] = { this->EmissiveBounds[(corner & 1)], this->EmissiveBounds[2 + ((corner >> 1) & 1)],
+      this->EmissiveBounds[4 + ((corner >> 2) & 1)], 1.0 };
+    double clip[4];
+    m->MultiplyPoint(p, clip);
+    if (!(clip[3] > 0.0))
+    {
+      return; // reaches behind the camera: anywhere
+    }
+    for (int a = 0; a < 2; ++a)
+    {
+      lo[a] = std::min(lo[a], clip[a] / clip[3]);
+      hi[a] = std::max(hi[a], clip[a] / clip[3]);
+    }
+  }
+  // The glow reaches 4 deviations of the widest level (its Gaussian is
+  // 3e-4 of its peak there) plus the pyramid's texels at the coarsest level.
+  const double margin = 4.0 * GetLevelSigma(levels) + std::ldexp(2.0, levels);
+  const int size[2] = { width, height };
+  for (int a = 0; a < 2; ++a)
+  {
+    const double first = (0.5 * lo[a] + 0.5) * size[a] - margin;
+    const double last = (0.5 * hi[a] + 0.5) * size[a] + margin;
+    rect[a] = static_cast<int>(std::max(0.0, std::min(std::floor(first), double(size[a]))));
+    rect[a + 2] = static_cast<int>(std::max(0.0, std::min(std::ceil(last), double(size[a]))));
+  }
+}
+
+void vtkFXBloomPass::LevelRect(int k, int rect[4]) const
+{
+  // Level k (0: half resolution) has texels of 2^(k+1) pixels; two texels
+  // more on each side hold what its filters read.
+  const int shift = k + 1;
+  vtkTextureObject* t = this->Levels[k]->Down;
+  const int size[2] = { static_cast<int>(t->GetWidth()), static_cast<int>(t->GetHeight()) };
+  for (int a = 0; a < 2; ++a)
+  {
+    rect[a] = std::max(0, (this->GlowRect[a] >> shift) - 2);
+    rect[a + 2] = std::min(size[a], ((this->GlowRect[a + 2] + (1 << shift) - 1) >> shift) + 2);
+  }
 }
 
 vtkTextureObject* vtkFXBloomPass::GetGlowTexture()
@@ -129,6 +229,9 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
         (first && this->FireflySuppression ? "1" : "0") + "\n",
       false);
     vtkFXRenderUtilities::RenderTargetScope target(window, level.DownTarget, level.Down);
+    int rect[4];
+    this->LevelRect(k, rect);
+    ScissorScope scissor(window->GetState(), rect, true);
     vtkShaderProgram* program = this->ReadyProgram(first ? FirstDown : Down, window, fs);
     if (!program)
     {
@@ -197,6 +300,9 @@ void vtkFXBloomPass::Upsample(vtkOpenGLRenderWindow* window, int levels)
     vtkShaderProgram::Substitute(
       fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define FX_FINAL 0\n", false);
     vtkFXRenderUtilities::RenderTargetScope target(window, level.UpTarget, level.Up);
+    int rect[4];
+    this->LevelRect(k, rect);
+    ScissorScope scissor(window->GetState(), rect, true);
     vtkShaderProgram* program = this->ReadyProgram(Up, window, fs);
     if (!program)
     {
@@ -228,8 +334,14 @@ void vtkFXBloomPass::AddGlow(vtkOpenGLRenderWindow* window, int levels)
   {
     return;
   }
-  // Light adds; alpha stays.
+  // Light adds; alpha stays. Only where glow can be (the viewport's
+  // corner may be off the framebuffer's).
   vtkFXRenderUtilities::BlendOntoScope blend(window, GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
+  int viewport[4];
+  window->GetState()->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+  const int rect[4] = { viewport[0] + this->GlowRect[0], viewport[1] + this->GlowRect[1],
+    viewport[0] + this->GlowRect[2], viewport[1] + this->GlowRect[3] };
+  ScissorScope scissor(window->GetState(), rect, false);
   glow->Activate();
   program->SetUniformi("fxCoarse", glow->GetTextureUnit());
   const float texel[2] = { 1.0f / glow->GetWidth(), 1.0f / glow->GetHeight() };
@@ -289,6 +401,8 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
   {
     this->Levels.emplace_back(new Level);
   }
+  this->ComputeGlowRect(s->GetRenderer(), static_cast<int>(full->GetWidth()),
+    static_cast<int>(full->GetHeight()), levels);
   if (this->Downsample(window, color, levels))
   {
     this->Upsample(window, levels);

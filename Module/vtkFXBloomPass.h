@@ -23,11 +23,14 @@
  * above 65504 (the largest half float) as 65504; with FireflySuppression
  * on, such a pixel adds about what one pixel of value 1 adds.
  *
- * Stage PostProcess; vtkFXPipelinePass keeps its HDR target while it runs.
+ * Stage PostProcess; vtkFXPipelinePass keeps its HDR target while it runs
+ * with a threshold (GetNeedsHDRTarget).
  * Work: when a visible prop is emissive (vtkFXSceneInfo::EmissiveProps) or
  * a threshold is set; otherwise the pass, its textures and the emission
  * channel are left out and the image is exactly the one without bloom.
- * Cost: one pass per level down and up, the first at half resolution with
+ * Cost: one pass per level down and up, drawn only over the part of the
+ * image the glow can reach (the emissive props' screen rectangle widened by
+ * 4 deviations of the widest level; the whole image with a threshold), the first at half resolution with
  * 13 (26 with a threshold) bilinear source reads per texel, each next one
  * at a quarter of the texels of the one before, 4 bilinear reads per
  * texel up; one full-resolution pass of 4 bilinear reads, blended. Memory: two RGBA16F textures per level
@@ -47,6 +50,7 @@
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkRenderer;
 class vtkTextureObject;
 
 class VTKFX_EXPORT vtkFXBloomPass : public vtkFXEffectPass
@@ -127,6 +131,16 @@ public:
   vtkTextureObject* GetGlowTexture();
 
   bool HasWork(const vtkFXSceneInfo& scene) override;
+
+  /**
+   * Only with a threshold: it reads the lit HDR image then. Glow from the
+   * emission channel alone (which keeps values above 1 by itself) is added
+   * onto whatever image the pipeline draws: on an 8-bit one,
+   * min(1, min(1, lit) + glow) = min(1, lit + glow) for a non-negative
+   * glow, so the result is the same and the HDR target's copy in and
+   * write-back are saved.
+   */
+  bool GetNeedsHDRTarget() override { return this->Threshold >= 0.0; }
   unsigned int GetRequiredChannels() override;
 
   void Render(const vtkRenderState* s) override;
@@ -141,6 +155,8 @@ protected:
   void Upsample(vtkOpenGLRenderWindow* window, int levels);
   void AddGlow(vtkOpenGLRenderWindow* window, int levels);
   vtkShaderProgram* ReadyProgram(int which, vtkOpenGLRenderWindow* window, const std::string& fs);
+  void ComputeGlowRect(vtkRenderer* ren, int width, int height, int levels);
+  void LevelRect(int k, int rect[4]) const;
 
   double Intensity = 0.5;
   double Radius = 0.05;
@@ -150,6 +166,11 @@ protected:
   bool FireflySuppression = true;
 
   std::vector<std::unique_ptr<Level>> Levels;
+  // World bounds of the emissive props (from HasWork), and the pixels of
+  // the viewport the glow can reach, x0 y0 x1 y1 (ends excluded): the
+  // pyramid and the final add draw there only.
+  double EmissiveBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
+  int GlowRect[4] = { 0, 0, 0, 0 };
   unsigned int LinearSampler = 0; // GL sampler for reading the G-buffer's emission bilinearly
   enum
   {

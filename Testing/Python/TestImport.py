@@ -17,4 +17,21 @@ pipeline.SetDebugChannel(9)  # clamped by vtkSetClampMacro
 assert pipeline.GetDebugChannel() == 5, pipeline.GetDebugChannel()
 gbuffer.SetRequiredChannels(0)
 assert gbuffer.GetRequiredChannels() == 0
+
+# The effects: toon shading and bloom plug into the pipeline by name.
+toon = vtkfx.vtkFXToonPass()
+toon.RemoveAllBandThresholds()
+toon.AddBandThreshold(0.5)
+assert toon.GetNumberOfBandThresholds() == 1
+toon.SetFeatureLines(False)
+assert toon.GetStage() == vtkfx.vtkFXEffectPass.Composite
+bloom = vtkfx.vtkFXBloomPass()
+bloom.SetRadius(5.0)  # clamped to 1
+assert bloom.GetRadius() == 1.0
+pipeline.AddEffect("toon", toon)
+pipeline.AddEffect("bloom", bloom)
+assert pipeline.GetNumberOfEffects() >= 2
+composite = pipeline.GetCompositePass()
+composite.SetLightCutoff(0.01)
+assert abs(composite.GetLightCutoff() - 0.01) < 1e-12
 print("vtkfx imported from", vtkfx.__file__, "with", sys.executable)
