@@ -31,7 +31,8 @@
  * Cost: one pass per level down and up, drawn only over the part of the
  * image the glow can reach (the emissive props' screen rectangle widened by
  * 4 deviations of the widest level; the whole image with a threshold), the first at half resolution with
- * 13 (26 with a threshold) bilinear source reads per texel, each next one
+ * 13 bilinear source reads per texel (plus 36 texel reads with a
+ * threshold, which is applied per texel before any averaging), each next one
  * at a quarter of the texels of the one before, 4 bilinear reads per
  * texel up; one full-resolution pass of 4 bilinear reads, blended. Memory: two RGBA16F textures per level
  * (about 2 x 8 / 3 bytes per full-resolution pixel).

@@ -9,7 +9,8 @@
 // colour's part above a threshold with a quadratic soft knee (the curve of
 // Unity's and Unreal's bloom prefilters): for brightness b (largest
 // component), threshold t and knee k,
-//   weight = max(b - t, min(max(b - t + k, 0), 2k)^2 / (4k)) / b.
+//   weight = max(b - t, min(max(b - t + k, 0), 2k)^2 / (4k)) / b,
+// per texel (36 texel reads), before the taps average them.
 // Every source value is made finite first: NaN counts as 0 and anything
 // above 65504 (the largest half float, +inf included) as 65504, so no
 // pixel spreads NaN. With FX_KARIS (firefly suppression, first step only)
@@ -34,19 +35,49 @@ vec3 fxFinite(vec3 c)
   return clamp(c, 0.0, 65504.0);
 }
 
-vec3 fxTap(vec2 uv)
+#if FX_FIRST && FX_THRESHOLD
+// The light above the threshold, per texel: thresholding is not linear, so
+// it comes before any averaging (a bilinear tap across an edge between 2
+// and 0 would read 1 and lose what the 2 had above the threshold).
+vec3 fxAboveThreshold(vec3 lit)
 {
+  lit = fxFinite(lit);
+  float brightness = max(lit.r, max(lit.g, lit.b));
+  float soft = clamp(brightness - fxThreshold + fxKnee, 0.0, 2.0 * fxKnee);
+  soft = soft * soft / (4.0 * fxKnee + 1e-5);
+  return lit * (max(brightness - fxThreshold, soft) / max(brightness, 1e-5));
+}
+
+// The 6 x 6 texels under the 13 taps, thresholded once each; tap o (from
+// -2 to 2 texels off the centre corner) averages the 2 x 2 from o + 2.
+vec3 fxLight[36];
+void fxThresholdTexels()
+{
+  ivec2 size = textureSize(fxColor, 0);
+  ivec2 first = ivec2(floor(texCoord * vec2(size) + 0.5)) - 3;
+  for (int y = 0; y < 6; ++y)
+  {
+    for (int x = 0; x < 6; ++x)
+    {
+      ivec2 t = clamp(first + ivec2(x, y), ivec2(0), size - 1);
+      fxLight[6 * y + x] = fxAboveThreshold(texelFetch(fxColor, t, 0).rgb);
+    }
+  }
+}
+#endif
+
+// Tap o: texel offsets from -2 to 2 around the centre corner.
+vec3 fxTap(ivec2 o)
+{
+  vec2 uv = texCoord + fxSourceTexel * vec2(o);
 #if FX_FIRST
   vec3 value = vec3(0.0);
 #if FX_EMISSION
   value += fxFinite(texture(fxEmission, uv).rgb);
 #endif
 #if FX_THRESHOLD
-  vec3 lit = fxFinite(texture(fxColor, uv).rgb);
-  float brightness = max(lit.r, max(lit.g, lit.b));
-  float soft = clamp(brightness - fxThreshold + fxKnee, 0.0, 2.0 * fxKnee);
-  soft = soft * soft / (4.0 * fxKnee + 1e-5);
-  value += lit * (max(brightness - fxThreshold, soft) / max(brightness, 1e-5));
+  int i = 6 * (o.y + 2) + o.x + 2;
+  value += 0.25 * (fxLight[i] + fxLight[i + 1] + fxLight[i + 6] + fxLight[i + 7]);
 #endif
   return value;
 #else
@@ -70,26 +101,27 @@ void fxAccumulate(vec3 v, float share, inout vec3 sum, inout float weightSum)
 
 void main()
 {
-  vec2 uv = texCoord;
-  vec2 t = fxSourceTexel;
+#if FX_FIRST && FX_THRESHOLD
+  fxThresholdTexels();
+#endif
   // The five boxes' weights per tap: the centre box (1/2) gives its four
   // taps 1/8 each; each corner box (1/8) gives its four 1/32, so the
   // centre tap (in four boxes) gets 1/8, the edge middles 1/16, the
   // corners 1/32.
   vec3 sum = vec3(0.0);
   float weightSum = 0.0;
-  fxAccumulate(fxTap(uv + t * vec2(-1.0, 1.0)), 0.125, sum, weightSum);
-  fxAccumulate(fxTap(uv + t * vec2(1.0, 1.0)), 0.125, sum, weightSum);
-  fxAccumulate(fxTap(uv + t * vec2(-1.0, -1.0)), 0.125, sum, weightSum);
-  fxAccumulate(fxTap(uv + t * vec2(1.0, -1.0)), 0.125, sum, weightSum);
-  fxAccumulate(fxTap(uv), 0.125, sum, weightSum);
-  fxAccumulate(fxTap(uv + t * vec2(0.0, 2.0)), 0.0625, sum, weightSum);
-  fxAccumulate(fxTap(uv + t * vec2(-2.0, 0.0)), 0.0625, sum, weightSum);
-  fxAccumulate(fxTap(uv + t * vec2(2.0, 0.0)), 0.0625, sum, weightSum);
-  fxAccumulate(fxTap(uv + t * vec2(0.0, -2.0)), 0.0625, sum, weightSum);
-  fxAccumulate(fxTap(uv + t * vec2(-2.0, 2.0)), 0.03125, sum, weightSum);
-  fxAccumulate(fxTap(uv + t * vec2(2.0, 2.0)), 0.03125, sum, weightSum);
-  fxAccumulate(fxTap(uv + t * vec2(-2.0, -2.0)), 0.03125, sum, weightSum);
-  fxAccumulate(fxTap(uv + t * vec2(2.0, -2.0)), 0.03125, sum, weightSum);
+  fxAccumulate(fxTap(ivec2(-1, 1)), 0.125, sum, weightSum);
+  fxAccumulate(fxTap(ivec2(1, 1)), 0.125, sum, weightSum);
+  fxAccumulate(fxTap(ivec2(-1, -1)), 0.125, sum, weightSum);
+  fxAccumulate(fxTap(ivec2(1, -1)), 0.125, sum, weightSum);
+  fxAccumulate(fxTap(ivec2(0, 0)), 0.125, sum, weightSum);
+  fxAccumulate(fxTap(ivec2(0, 2)), 0.0625, sum, weightSum);
+  fxAccumulate(fxTap(ivec2(-2, 0)), 0.0625, sum, weightSum);
+  fxAccumulate(fxTap(ivec2(2, 0)), 0.0625, sum, weightSum);
+  fxAccumulate(fxTap(ivec2(0, -2)), 0.0625, sum, weightSum);
+  fxAccumulate(fxTap(ivec2(-2, 2)), 0.03125, sum, weightSum);
+  fxAccumulate(fxTap(ivec2(2, 2)), 0.03125, sum, weightSum);
+  fxAccumulate(fxTap(ivec2(-2, -2)), 0.03125, sum, weightSum);
+  fxAccumulate(fxTap(ivec2(2, -2)), 0.03125, sum, weightSum);
   gl_FragData[0] = vec4(sum / weightSum, 1.0);
 }

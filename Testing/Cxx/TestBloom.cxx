@@ -10,7 +10,8 @@
 //   the one without it;
 // - a 1e30 pixel and a NaN pixel in the lit HDR image, with a threshold:
 //   the glow stays finite, and with firefly suppression the 1e30 pixel
-//   adds at most about what one pixel of value 1 adds (no bright square).
+//   adds at most about what one pixel of value 1 adds (no bright square);
+// - light above a threshold glows by the soft knee's weights.
 #include "vtkFXBloomPass.h"
 #include "vtkFXEffectPass.h"
 #include "vtkFXGBufferPass.h"
@@ -29,6 +30,8 @@
 #include "vtkRendererCollection.h"
 #include "vtkShaderProgram.h"
 #include "vtkSphereSource.h"
+#include "vtkOpenGLState.h"
+#include "vtk_glew.h"
 
 #include <limits>
 
@@ -36,33 +39,37 @@ namespace
 {
 using GB = vtkFXGBufferPass;
 
-// Writes 1e30 into one pixel and NaN into another of the image it is
-// drawn onto (the HDR target), at the post-process stage.
-class HotPixelProbe : public vtkFXEffectPass
+// Paints the image it is drawn onto (the HDR target), at the post-process
+// stage, with `Paint`: GLSL that sets `color` (vec4) for pixel `p` or
+// discards; `big` is 1e30 and `zero` 0, both known only at run time, so a
+// compiler cannot fold them into a half float or NaN away.
+class PaintProbe : public vtkFXEffectPass
 {
 public:
-  static HotPixelProbe* New();
-  vtkTypeMacro(HotPixelProbe, vtkFXEffectPass);
-  HotPixelProbe() { this->Stage = PostProcess; }
+  static PaintProbe* New();
+  vtkTypeMacro(PaintProbe, vtkFXEffectPass);
+  PaintProbe() { this->Stage = PostProcess; }
   unsigned int GetRequiredChannels() override { return 0; }
   bool HasWork(const vtkFXSceneInfo&) override { return true; }
   void Render(const vtkRenderState* s) override
   {
     auto* window = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
-    // The values are computed at run time: a compiler may not fold 1e30
-    // into a half float or NaN away.
     const std::string fs = "//VTK::System::Dec\nin vec2 texCoord;\nuniform float big;\n"
                            "//VTK::Output::Dec\n"
                            "void main() {\n"
                            "  ivec2 p = ivec2(gl_FragCoord.xy);\n"
                            "  float zero = texCoord.x < -1.0 ? 1.0 : 0.0;\n"
-                           "  if (p == ivec2(100, 150)) gl_FragData[0] = vec4(vec3(big), 1.0);\n"
-                           "  else if (p == ivec2(300, 150)) gl_FragData[0] = vec4(zero / zero);\n"
-                           "  else discard;\n"
-                           "}\n";
+                           "  vec4 color = vec4(zero * big);\n" +
+      this->Paint + "\n  gl_FragData[0] = color;\n}\n";
     vtkShaderProgram* program = vtkFXRenderUtilities::ReadyQuad(this->Quad, this->Source, window, fs);
     if (program)
     {
+      // Over whatever the image shows, depth or not.
+      vtkOpenGLState* state = window->GetState();
+      vtkOpenGLState::ScopedglEnableDisable depth(state, GL_DEPTH_TEST);
+      vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+      state->vtkglDisable(GL_DEPTH_TEST);
+      state->vtkglDisable(GL_BLEND);
       program->SetUniformf("big", 1e30f);
       this->Quad->Render();
     }
@@ -71,10 +78,11 @@ public:
   {
     vtkFXRenderUtilities::ReleaseQuad(this->Quad, this->Source, w);
   }
+  std::string Paint;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   std::string Source;
 };
-vtkStandardNewMacro(HotPixelProbe);
+vtkStandardNewMacro(PaintProbe);
 
 // A black scene (no light, black background) with a sphere whose only
 // light is its EMISSIVE_COLOR, or no emission at all.
@@ -187,7 +195,10 @@ int CheckHotPixels(vtkRenderWindow* window)
   vtkRenderer* renderer = MakeScene(window, nullptr);
   vtkNew<vtkFXPipelinePass> pipeline;
   renderer->SetPass(pipeline);
-  vtkNew<HotPixelProbe> probe;
+  vtkNew<PaintProbe> probe;
+  probe->Paint = "  if (p == ivec2(100, 150)) color = vec4(vec3(big), 1.0);\n"
+                 "  else if (p == ivec2(300, 150)) color = vec4(zero / zero);\n"
+                 "  else discard;";
   pipeline->AddEffect("hot", probe);
   vtkNew<vtkFXBloomPass> bloom;
   bloom->SetThreshold(1.0);
@@ -214,6 +225,40 @@ int CheckHotPixels(vtkRenderWindow* window)
   }
   return EXIT_SUCCESS;
 }
+
+// Light above a threshold glows, with the soft knee's weights: a square of
+// value 2 over threshold 1 (knee 1/2) gives (2 - 1) per channel, one of
+// 0.8 (inside the knee) 0.8 x (0.8 - 1 + 0.5)^2 / (4 x 0.5) / 0.8 = 0.045.
+// The glow's total (firefly suppression off) is the squares' areas times
+// those, within 2%; the HDR target is kept, as the threshold reads it.
+int CheckThreshold(vtkRenderWindow* window)
+{
+  window->SetSize(400, 300);
+  vtkRenderer* renderer = MakeScene(window, nullptr);
+  vtkNew<vtkFXPipelinePass> pipeline;
+  renderer->SetPass(pipeline);
+  vtkNew<PaintProbe> probe;
+  probe->Paint = "  if (all(greaterThanEqual(p, ivec2(100, 100))) && all(lessThan(p, ivec2(140, 140))))\n"
+                 "    color = vec4(2.0, 2.0, 2.0, 1.0);\n"
+                 "  else if (all(greaterThanEqual(p, ivec2(250, 100))) && all(lessThan(p, ivec2(290, 140))))\n"
+                 "    color = vec4(0.8, 0.8, 0.8, 1.0);\n"
+                 "  else discard;";
+  pipeline->AddEffect("paint", probe);
+  vtkNew<vtkFXBloomPass> bloom;
+  bloom->SetThreshold(1.0);
+  bloom->SetKnee(0.5);
+  bloom->FireflySuppressionOff();
+  pipeline->AddEffect("bloom", bloom);
+  window->Render();
+  const std::string passes = vtkFXTest::Passes(pipeline);
+  FX_CHECK(passes.find("hdr-target") != std::string::npos, passes);
+  const double glow = 4.0 * Sum(vtkFXTest::Download(bloom->GetGlowTexture(), 4), 4, 3);
+  const double expected = 3.0 * 40.0 * 40.0 * (1.0 + 0.045);
+  std::cout << "threshold: glow " << glow << ", expected " << expected << " (ratio "
+            << glow / expected << ")" << std::endl;
+  FX_CHECK(std::fabs(glow / expected - 1.0) < 0.02, "glow " << glow << " for " << expected);
+  return EXIT_SUCCESS;
+}
 }
 
 int TestBloom(int, char*[])
@@ -224,5 +269,6 @@ int TestBloom(int, char*[])
   FX_CHECK(CheckEnergy(window) == EXIT_SUCCESS, "energy");
   FX_CHECK(CheckNothingToDo(window) == EXIT_SUCCESS, "no emission");
   FX_CHECK(CheckHotPixels(window) == EXIT_SUCCESS, "hot pixels");
+  FX_CHECK(CheckThreshold(window) == EXIT_SUCCESS, "threshold");
   return EXIT_SUCCESS;
 }
