@@ -189,26 +189,35 @@ int CheckNothingToDo(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
-int CheckHotPixels(vtkRenderWindow* window)
+// The scene of MakeScene without emission, its lit image painted by a
+// probe with `paint` (see PaintProbe), then bloom with threshold 1.
+void PaintThenBloom(vtkRenderWindow* window, const char* paint, vtkFXPipelinePass* pipeline,
+  PaintProbe* probe, vtkFXBloomPass* bloom)
 {
   window->SetSize(400, 300);
-  vtkRenderer* renderer = MakeScene(window, nullptr);
-  vtkNew<vtkFXPipelinePass> pipeline;
-  renderer->SetPass(pipeline);
-  vtkNew<PaintProbe> probe;
-  probe->Paint = "  if (p == ivec2(100, 150)) color = vec4(vec3(big), 1.0);\n"
-                 "  else if (p == ivec2(300, 150)) color = vec4(zero / zero);\n"
-                 "  else discard;";
-  pipeline->AddEffect("hot", probe);
-  vtkNew<vtkFXBloomPass> bloom;
+  MakeScene(window, nullptr)->SetPass(pipeline);
+  probe->Paint = paint;
+  pipeline->AddEffect("paint", probe);
   bloom->SetThreshold(1.0);
   pipeline->AddEffect("bloom", bloom);
+}
+
+int CheckHotPixels(vtkRenderWindow* window)
+{
+  vtkNew<vtkFXPipelinePass> pipeline;
+  vtkNew<PaintProbe> probe;
+  vtkNew<vtkFXBloomPass> bloom;
+  PaintThenBloom(window,
+    "  if (p == ivec2(100, 150)) color = vec4(vec3(big), 1.0);\n"
+    "  else if (p == ivec2(300, 150)) color = vec4(zero / zero);\n"
+    "  else discard;",
+    pipeline, probe, bloom);
   for (bool suppress : { true, false })
   {
     bloom->SetFireflySuppression(suppress);
     window->Render();
     const std::string passes = vtkFXTest::Passes(pipeline);
-    FX_CHECK(passes.find("hot") < passes.find("bloom"), passes);
+    FX_CHECK(passes.find("paint") < passes.find("bloom"), passes);
     const auto glow = vtkFXTest::Download(bloom->GetGlowTexture(), 4);
     FX_CHECK(!glow.empty(), "no glow texture");
     float largest = 0.0f;
@@ -233,19 +242,16 @@ int CheckHotPixels(vtkRenderWindow* window)
 // those, within 2%; the HDR target is kept, as the threshold reads it.
 int CheckThreshold(vtkRenderWindow* window)
 {
-  window->SetSize(400, 300);
-  vtkRenderer* renderer = MakeScene(window, nullptr);
   vtkNew<vtkFXPipelinePass> pipeline;
-  renderer->SetPass(pipeline);
   vtkNew<PaintProbe> probe;
-  probe->Paint = "  if (all(greaterThanEqual(p, ivec2(100, 100))) && all(lessThan(p, ivec2(140, 140))))\n"
-                 "    color = vec4(2.0, 2.0, 2.0, 1.0);\n"
-                 "  else if (all(greaterThanEqual(p, ivec2(250, 100))) && all(lessThan(p, ivec2(290, 140))))\n"
-                 "    color = vec4(0.8, 0.8, 0.8, 1.0);\n"
-                 "  else discard;";
-  pipeline->AddEffect("paint", probe);
   vtkNew<vtkFXBloomPass> bloom;
-  bloom->SetThreshold(1.0);
+  PaintThenBloom(window,
+    "  if (all(greaterThanEqual(p, ivec2(100, 100))) && all(lessThan(p, ivec2(140, 140))))\n"
+    "    color = vec4(2.0, 2.0, 2.0, 1.0);\n"
+    "  else if (all(greaterThanEqual(p, ivec2(250, 100))) && all(lessThan(p, ivec2(290, 140))))\n"
+    "    color = vec4(0.8, 0.8, 0.8, 1.0);\n"
+    "  else discard;",
+    pipeline, probe, bloom);
   bloom->SetKnee(0.5);
   bloom->FireflySuppressionOff();
   pipeline->AddEffect("bloom", bloom);
