@@ -8,6 +8,7 @@
 //                [--ao-quality low|medium|high] [--ao-falloff binary|cuberoot]
 #include "vtkFXScenes.h"
 
+#include "vtkFXAVSMPass.h"
 #include "vtkFXBilateralBlurPass.h"
 #include "vtkFXBloomPass.h"
 #include "vtkFXSSAOPass.h"
@@ -57,8 +58,8 @@ struct Arguments
 // Effects the pipeline knows: "ssao" (screen-space ambient occlusion),
 // "blur" (its depth/normal-aware blur and upsampling), "toon" (banded
 // diffuse light and feature lines), "lines" (the feature lines alone) and
-// "bloom" (glow of emissive props).
-const std::vector<std::string> KnownEffects = { "ssao", "blur", "toon", "lines", "bloom" };
+// "bloom" (glow of emissive props) and "avsm" (shadows of translucent props).
+const std::vector<std::string> KnownEffects = { "ssao", "blur", "toon", "lines", "bloom", "avsm" };
 
 void Usage(std::ostream& os)
 {
@@ -70,7 +71,7 @@ void Usage(std::ostream& os)
         "                    [--ao-quality low|medium|high] [--ao-falloff binary|cuberoot]\n"
         "LIST: comma-separated effects: ssao, blur (ssao,blur: ambient occlusion),\n"
         "      toon (banded light and feature lines) or lines (feature lines alone),\n"
-        "      bloom (glow of emissive props)\n"
+        "      bloom (glow of emissive props), avsm (shadows cast by translucent props)\n"
         "INPUT: a .obj, .ply, .stl, .vtp, .vtk or .pdb file, or one of:";
   for (const auto& name : vtkFXScenes::BuiltInSceneNames())
   {
@@ -376,6 +377,11 @@ int main(int argc, char* argv[])
       vtkNew<vtkFXToonPass> toon;
       toon->SetBands(has("toon"));
       pipeline->AddEffect("toon", toon);
+    }
+    if (has("avsm"))
+    {
+      vtkNew<vtkFXAVSMPass> avsm;
+      pipeline->AddEffect("avsm", avsm);
     }
     if (has("bloom"))
     {

@@ -1,0 +1,107 @@
+//VTK::System::Dec
+// vtkFXAVSMLookupFS: for every G-buffer pixel, the transmittance of the
+// light's path through the translucent casters, from the receiver back to
+// the light. The receiver's view-space position (linear depth and the
+// frustum ray) goes to the light's clip space (fxViewToLight); its depth
+// there, less a bias, is looked up in the texel's curve:
+// - FX_EXACT 0: the AVSM curve of the resolve (FX_NODES nodes, optical
+//   depth linear between them; before the first node 0, past the last its
+//   value);
+// - FX_EXACT 1: the deep shadow map itself, the sum of the optical depths
+//   of every fragment of the texel's list in front of the receiver: exact,
+//   whatever the order or number of fragments.
+// With FX_BILINEAR the four texels around the point are looked up and
+// their transmittances blended bilinearly (percentage-closer filtering of
+// the curves, as the AVSM demo's AVSMBilinearSample). Outside the map the
+// light is unshadowed; so is the background.
+
+in vec2 texCoord;
+
+uniform sampler2D fxLinearDepth;
+uniform vec3 fxRayOrigin[3];
+uniform vec3 fxRayDirection[3];
+uniform mat4 fxViewToLight;
+uniform float fxBias; // light clip depth (0..1)
+#if FX_EXACT
+//VTK::FXAVSMLists::Dec
+#else
+//VTK::FXAVSMLookup::Samplers
+uniform int fxAVSMSize;
+#endif
+
+//VTK::Output::Dec
+
+float fxOpticalDepth(ivec2 texel, float depth)
+{
+#if FX_EXACT
+  float sum = 0.0;
+  uint node = fxAVSMHeads[texel.y * fxAVSMSize + texel.x];
+  for (int guard = 0; node != fxAVSMEnd && node < uint(fxAVSMCapacity) && guard < 1000000; ++guard)
+  {
+    if (fxAVSMNodes[node].depth < depth)
+    {
+      sum = min(sum + fxAVSMNodes[node].opticalDepth, 1e4);
+    }
+    node = fxAVSMNodes[node].next;
+  }
+  return sum;
+#else
+  float z[FX_NODES];
+  float tau[FX_NODES];
+  //VTK::FXAVSMLookup::Fetch
+  if (!(depth >= z[0]))
+  {
+    return 0.0;
+  }
+  int lo = 0;
+  for (int j = 1; j < FX_NODES; ++j)
+  {
+    lo = z[j] <= depth ? j : lo;
+  }
+  if (lo == FX_NODES - 1 || z[lo + 1] > 1e37)
+  {
+    return tau[lo];
+  }
+  float span = z[lo + 1] - z[lo];
+  float f = span > 0.0 ? clamp((depth - z[lo]) / span, 0.0, 1.0) : 1.0;
+  return mix(tau[lo], tau[lo + 1], f);
+#endif
+}
+
+float fxTransmittance(ivec2 texel, float depth)
+{
+  if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, ivec2(fxAVSMSize))))
+  {
+    return 1.0;
+  }
+  return exp(-fxOpticalDepth(texel, depth));
+}
+
+void main()
+{
+  float linearDepth = texture(fxLinearDepth, texCoord).r;
+  if (!(linearDepth > 0.0))
+  {
+    gl_FragData[0] = vec4(1.0);
+    return;
+  }
+  vec2 ndc = 2.0 * texCoord - 1.0;
+  vec3 origin = fxRayOrigin[0] + ndc.x * fxRayOrigin[1] + ndc.y * fxRayOrigin[2];
+  vec3 direction = fxRayDirection[0] + ndc.x * fxRayDirection[1] + ndc.y * fxRayDirection[2];
+  vec4 light = fxViewToLight * vec4(origin + linearDepth * direction, 1.0);
+  vec3 p = light.xyz / light.w;
+  vec2 uv = (0.5 * p.xy + 0.5) * float(fxAVSMSize);
+  float depth = 0.5 * p.z + 0.5 - fxBias;
+  float visibility;
+#if FX_BILINEAR
+  vec2 corner = uv - 0.5;
+  ivec2 base = ivec2(floor(corner));
+  vec2 f = corner - vec2(base);
+  visibility = mix(mix(fxTransmittance(base, depth), fxTransmittance(base + ivec2(1, 0), depth), f.x),
+    mix(fxTransmittance(base + ivec2(0, 1), depth), fxTransmittance(base + ivec2(1, 1), depth), f.x),
+    f.y);
+#else
+  visibility = fxTransmittance(ivec2(floor(uv)), depth);
+#endif
+  gl_FragData[0] = vec4(clamp(visibility, 0.0, 1.0), 0.0, 0.0, 1.0);
+}

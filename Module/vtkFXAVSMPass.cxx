@@ -1,0 +1,565 @@
+#include "vtkFXAVSMPass.h"
+
+#include "vtkFXAVSMCapture.h"
+#include "vtkFXAVSMLists.h"
+#include "vtkFXAVSMLookupFS.h"
+#include "vtkFXAVSMResolveFS.h"
+#include "vtkFXGBufferPass.h"
+#include "vtkFXRenderUtilities.h"
+
+#include "vtkCamera.h"
+#include "vtkLight.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderState.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkTranslucentPass.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+vtkStandardNewMacro(vtkFXAVSMPass);
+
+namespace
+{
+using GB = vtkFXGBufferPass;
+
+// Shader storage blocks of vtkFXAVSMLists.glsl, bound to points 0, 1, 2.
+const char* const BlockNames[3] = { "FXAVSMHeads", "FXAVSMNodes", "FXAVSMCounter" };
+enum Buffer
+{
+  HeadsBuffer = 0,
+  NodesBuffer = 1,
+  CounterBuffer = 2
+};
+const GLsizeiptr NodeBytes = 16;
+const vtkIdType MaximumCapacity = vtkIdType(1) << 27; // 2 GiB of nodes
+const int MaximumListPerTexel = 64; // fragments one texel's resolve sorts
+
+// After the version line (which VTK puts in place of the tag): storage
+// buffers in GLSL 1.50.
+const char* const StorageExtension =
+  "//VTK::System::Dec\n#extension GL_ARB_shader_storage_buffer_object : require\n";
+// Marks the shaders this pass extended (SetShaderParameters binds for them).
+const char* const CaptureMarker = "// vtkFX AVSM capture";
+
+bool Contains(const std::string& s, const char* what)
+{
+  return s.find(what) != std::string::npos;
+}
+
+bool StorageBuffersSupported()
+{
+  return glewIsSupported("GL_VERSION_4_3") || glewIsSupported("GL_ARB_shader_storage_buffer_object");
+}
+}
+
+vtkFXAVSMPass::vtkFXAVSMPass()
+{
+  this->Stage = AfterGBuffer;
+  this->DeclareOutput("visibility");
+  this->LightCamera = vtkSmartPointer<vtkCamera>::New();
+  this->LightProjection = vtkSmartPointer<vtkMatrix4x4>::New();
+  this->CasterPass = vtkSmartPointer<vtkTranslucentPass>::New();
+}
+
+vtkFXAVSMPass::~vtkFXAVSMPass() = default;
+
+int vtkFXAVSMPass::Nodes() const
+{
+  return this->NumberOfNodes <= 4 ? 4 : this->NumberOfNodes <= 8 ? 8 : 16;
+}
+
+bool vtkFXAVSMPass::HasWork(const vtkFXSceneInfo& scene)
+{
+  this->Casters = scene.TranslucentProps;
+  this->CastingLight = nullptr;
+  this->LightIndex = -1;
+  for (size_t i = 0; i < scene.Lights.size(); ++i)
+  {
+    vtkLight* light = scene.Lights[i];
+    if (!light->GetPositional() && !light->LightTypeIsHeadlight())
+    {
+      this->CastingLight = light;
+      this->LightIndex = static_cast<int>(i);
+      break;
+    }
+  }
+  return this->CastingLight && !this->Casters.empty() && !scene.OpaqueProps.empty() &&
+    this->Superclass::HasWork(scene);
+}
+
+unsigned int vtkFXAVSMPass::GetRequiredChannels()
+{
+  return GB::ChannelBit(GB::LinearDepth);
+}
+
+vtkFXEffectPass::Output vtkFXAVSMPass::GetOutput(const char* name)
+{
+  Output out;
+  if (name && std::string(name) == "visibility" && this->Visibility)
+  {
+    out.Texture = this->Visibility;
+    out.Components = 1;
+    out.Format = vtkFXRenderUtilities::R32F;
+  }
+  return out;
+}
+
+std::string vtkFXAVSMPass::GetCompositeCode(int hook)
+{
+  switch (hook)
+  {
+    case Declarations:
+      return "uniform sampler2D @visibility;\nuniform int @light;";
+    case LightVisibility:
+      return "      if (lightIndex == @light) { lightVisibility *= texture(@visibility, texCoord).r; }";
+    default:
+      return std::string();
+  }
+}
+
+void vtkFXAVSMPass::BindCompositeResources(vtkShaderProgram* program, const std::string& prefix)
+{
+  const bool ready = this->Visibility && this->LightIndex >= 0;
+  if (ready)
+  {
+    this->Visibility->Activate();
+    program->SetUniformi((prefix + "visibility").c_str(), this->Visibility->GetTextureUnit());
+  }
+  program->SetUniformi((prefix + "light").c_str(), ready ? this->LightIndex : -1);
+}
+
+void vtkFXAVSMPass::UnbindCompositeResources()
+{
+  if (this->Visibility)
+  {
+    this->Visibility->Deactivate();
+  }
+}
+
+void vtkFXAVSMPass::FitLightCamera(vtkOpenGLRenderer* ren)
+{
+  // An orthographic view along the light, around the visible props: every
+  // caster and receiver is inside the map.
+  double bounds[6];
+  ren->ComputeVisiblePropBounds(bounds);
+  double center[3] = { 0.0, 0.0, 0.0 };
+  double radius = 1.0;
+  if (vtkMath::AreBoundsInitialized(bounds))
+  {
+    radius = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      center[a] = 0.5 * (bounds[2 * a] + bounds[2 * a + 1]);
+      radius += 0.25 * (bounds[2 * a + 1] - bounds[2 * a]) * (bounds[2 * a + 1] - bounds[2 * a]);
+    }
+    radius = std::sqrt(radius);
+    radius = (std::isfinite(radius) && radius > 0.0) ? radius : 1.0;
+  }
+  double direction[3];
+  vtkMath::Subtract(this->CastingLight->GetTransformedFocalPoint(),
+    this->CastingLight->GetTransformedPosition(), direction);
+  if (vtkMath::Normalize(direction) <= 0.0)
+  {
+    direction[0] = 0.0;
+    direction[1] = 0.0;
+    direction[2] = -1.0;
+  }
+  // Any up vector not along the light.
+  const double up[3] = { std::fabs(direction[1]) < 0.9 ? 0.0 : 1.0,
+    std::fabs(direction[1]) < 0.9 ? 1.0 : 0.0, 0.0 };
+  const double position[3] = { center[0] - 2.0 * radius * direction[0],
+    center[1] - 2.0 * radius * direction[1], center[2] - 2.0 * radius * direction[2] };
+  vtkCamera* camera = this->LightCamera;
+  camera->SetPosition(position);
+  camera->SetFocalPoint(center);
+  camera->SetViewUp(up);
+  // glOrtho(-r, r, -r, r, r, 3r): the square map covers the bounding
+  // sphere whatever the window's aspect.
+  vtkMatrix4x4* p = this->LightProjection;
+  p->Identity();
+  p->SetElement(0, 0, 1.0 / radius);
+  p->SetElement(1, 1, 1.0 / radius);
+  p->SetElement(2, 2, -1.0 / radius);
+  p->SetElement(2, 3, -2.0);
+  camera->SetExplicitProjectionTransformMatrix(p);
+  camera->UseExplicitProjectionTransformMatrixOn();
+}
+
+bool vtkFXAVSMPass::EnsureBuffers()
+{
+  const vtkIdType texels = vtkIdType(this->ShadowMapSize) * this->ShadowMapSize;
+  if (!this->Buffers[HeadsBuffer])
+  {
+    glGenBuffers(3, this->Buffers);
+    this->BufferTexels = 0;
+    this->Capacity = 0;
+  }
+  if (this->BufferTexels != texels)
+  {
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[HeadsBuffer]);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, texels * 4, nullptr, GL_DYNAMIC_DRAW);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CounterBuffer]);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, 4, nullptr, GL_DYNAMIC_READ);
+    this->BufferTexels = texels;
+  }
+  const vtkIdType wanted =
+    std::max(this->Capacity, std::min(MaximumCapacity, texels * this->InitialNodesPerTexel));
+  if (wanted != this->Capacity)
+  {
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[NodesBuffer]);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, wanted * NodeBytes, nullptr, GL_DYNAMIC_DRAW);
+    this->Capacity = wanted;
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  return true;
+}
+
+void vtkFXAVSMPass::BindBuffers(vtkShaderProgram* program)
+{
+  const GLuint handle = static_cast<GLuint>(program->GetHandle());
+  for (GLuint i = 0; i < 3; ++i)
+  {
+    const GLuint block = glGetProgramResourceIndex(handle, GL_SHADER_STORAGE_BLOCK, BlockNames[i]);
+    if (block != GL_INVALID_INDEX)
+    {
+      glShaderStorageBlockBinding(handle, block, i);
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, this->Buffers[i]);
+  }
+  program->SetUniformi("fxAVSMSize", this->ShadowMapSize);
+  if (program->IsUniformUsed("fxAVSMCapacity"))
+  {
+    program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->Capacity));
+  }
+}
+
+bool vtkFXAVSMPass::PreReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+{
+  // Polygonal shaders only (they have the texture tag); after the mapper's
+  // texture code, gl_FragData[0] holds the fragment's final colour.
+  if (!Contains(fragmentShader, "//VTK::TCoord::Impl"))
+  {
+    return true;
+  }
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec", StorageExtension, false);
+  vtkShaderProgram::Substitute(
+    fragmentShader, "//VTK::Output::Dec", std::string("//VTK::Output::Dec\n") + vtkFXAVSMLists, false);
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::TCoord::Impl",
+    std::string("//VTK::TCoord::Impl\n") + CaptureMarker + "\n" + vtkFXAVSMCapture, false);
+  return true;
+}
+
+bool vtkFXAVSMPass::PostReplaceShaderValues(
+  std::string&, std::string&, std::string&, vtkAbstractMapper*, vtkProp*)
+{
+  return true;
+}
+
+bool vtkFXAVSMPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+{
+  if (program->IsUniformUsed("fxAVSMCapacity"))
+  {
+    this->BindBuffers(program);
+  }
+  return true;
+}
+
+void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* window)
+{
+  vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  // Empty lists, nothing counted.
+  const GLuint end = 0xFFFFFFFFu;
+  const GLuint zero = 0;
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[HeadsBuffer]);
+  glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &end);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CounterBuffer]);
+  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4, &zero);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+
+  vtkFXRenderUtilities::EnsureTexture(this->CaptureTarget, window, this->ShadowMapSize,
+    this->ShadowMapSize, vtkFXRenderUtilities::R8);
+  {
+    // Every fragment counts: no depth test, no culling by depth; nothing
+    // is drawn (the capture discards).
+    vtkFXRenderUtilities::RenderTargetScope target(window, this->CaptureFrameBuffer, this->CaptureTarget);
+    vtkOpenGLState::ScopedglDepthMask depthMask(window->GetState());
+    window->GetState()->vtkglDepthMask(GL_FALSE);
+    vtkCamera* viewer = ren->GetActiveCamera();
+    viewer->Register(this);
+    ren->SetActiveCamera(this->LightCamera);
+    vtkRenderState state(ren);
+    state.SetPropArrayAndCount(this->Casters.data(), static_cast<int>(this->Casters.size()));
+    state.SetFrameBuffer(this->CaptureFrameBuffer);
+    this->PreRender(&state);
+    this->CasterPass->Render(&state);
+    this->PostRender(&state);
+    ren->SetActiveCamera(viewer);
+    viewer->UnRegister(this);
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+
+  GLuint counted = 0;
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CounterBuffer]);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4, &counted);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  this->CapturedFragments = counted;
+  if (counted > this->Capacity)
+  {
+    if (!this->WarnedOverflow)
+    {
+      vtkWarningMacro("AVSM capture: " << counted << " fragments for a buffer of "
+                                       << this->Capacity
+                                       << "; the extra ones are left out of this frame and "
+                                          "the buffer grows for the next.");
+      this->WarnedOverflow = true;
+    }
+    const vtkIdType grown = std::min(MaximumCapacity, vtkIdType(counted) + vtkIdType(counted) / 4);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[NodesBuffer]);
+    // Keep this frame's nodes: the resolve still reads them.
+    GLuint bigger = 0;
+    glGenBuffers(1, &bigger);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, bigger);
+    glBufferData(GL_COPY_WRITE_BUFFER, grown * NodeBytes, nullptr, GL_DYNAMIC_DRAW);
+    glCopyBufferSubData(GL_SHADER_STORAGE_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, this->Capacity * NodeBytes);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    glDeleteBuffers(1, &this->Buffers[NodesBuffer]);
+    this->Buffers[NodesBuffer] = bigger;
+    this->StoredFragments = this->Capacity; // what this frame's lists hold
+    this->Capacity = grown;
+  }
+}
+
+void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
+{
+  const int nodes = this->Nodes();
+  const int targets = nodes / 2;
+  if (static_cast<int>(this->Curves.size()) != targets)
+  {
+    for (auto& t : this->Curves)
+    {
+      vtkFXRenderUtilities::Release(t, window);
+    }
+    this->Curves.assign(targets, nullptr);
+    vtkFXRenderUtilities::Release(this->ResolveFrameBuffer, window);
+  }
+  for (auto& t : this->Curves)
+  {
+    vtkFXRenderUtilities::EnsureTexture(
+      t, window, this->ShadowMapSize, this->ShadowMapSize, vtkFXRenderUtilities::RGBA32F);
+  }
+  std::ostringstream defines;
+  defines << StorageExtension << "#define FX_NODES " << nodes << "\n#define FX_MAX_LIST "
+          << MaximumListPerTexel << "\n";
+  std::ostringstream output;
+  for (int k = 0; k < nodes / 4; ++k)
+  {
+    output << "  gl_FragData[" << k << "] = vec4(fxZ[" << 4 * k << "], fxZ[" << 4 * k + 1
+           << "], fxZ[" << 4 * k + 2 << "], fxZ[" << 4 * k + 3 << "]);\n";
+  }
+  for (int k = 0; k < nodes / 4; ++k)
+  {
+    output << "  gl_FragData[" << nodes / 4 + k << "] = vec4(fxTau[" << 4 * k << "], fxTau["
+           << 4 * k + 1 << "], fxTau[" << 4 * k + 2 << "], fxTau[" << 4 * k + 3 << "]);\n";
+  }
+  std::string fs = vtkFXAVSMResolveFS;
+  vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str(), false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLists::Dec", vtkFXAVSMLists, false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMResolve::Output", output.str(), false);
+
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglViewport viewport(state);
+  vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+  state->PushFramebufferBindings();
+  if (!this->ResolveFrameBuffer)
+  {
+    this->ResolveFrameBuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    this->ResolveFrameBuffer->SetContext(window);
+  }
+  this->ResolveFrameBuffer->Bind();
+  for (int k = 0; k < targets; ++k)
+  {
+    this->ResolveFrameBuffer->AddColorAttachment(k, this->Curves[k]);
+  }
+  this->ResolveFrameBuffer->ActivateDrawBuffers(targets);
+  state->vtkglViewport(0, 0, this->ShadowMapSize, this->ShadowMapSize);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  if (vtkShaderProgram* program =
+        vtkFXRenderUtilities::ReadyQuad(this->ResolveQuad, this->ResolveSource, window, fs))
+  {
+    this->BindBuffers(program);
+    program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->StoredFragments));
+    this->ResolveQuad->Render();
+  }
+  state->PopFramebufferBindings();
+}
+
+void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window)
+{
+  vtkTextureObject* depth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
+  vtkFXRenderUtilities::EnsureTexture(this->Visibility, window, static_cast<int>(depth->GetWidth()),
+    static_cast<int>(depth->GetHeight()), vtkFXRenderUtilities::R32F);
+  const int nodes = this->Nodes();
+  std::ostringstream defines;
+  defines << (this->Exact ? StorageExtension : "//VTK::System::Dec\n") << "#define FX_EXACT "
+          << (this->Exact ? 1 : 0) << "\n#define FX_BILINEAR " << (this->Bilinear ? 1 : 0)
+          << "\n#define FX_NODES " << nodes << "\n";
+  std::ostringstream samplers, fetch;
+  for (int k = 0; k < nodes / 2; ++k)
+  {
+    samplers << "uniform sampler2D fxAVSMCurve" << k << ";\n";
+    fetch << "  vec4 curve" << k << " = texelFetch(fxAVSMCurve" << k << ", texel, 0);\n";
+  }
+  for (int i = 0; i < nodes; ++i)
+  {
+    const char c = "xyzw"[i % 4];
+    fetch << "  z[" << i << "] = curve" << i / 4 << "." << c << ";\n";
+    fetch << "  tau[" << i << "] = curve" << nodes / 4 + i / 4 << "." << c << ";\n";
+  }
+  std::string fs = vtkFXAVSMLookupFS;
+  vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str(), false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLists::Dec", vtkFXAVSMLists, false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLookup::Samplers", samplers.str(), false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLookup::Fetch", fetch.str(), false);
+
+  vtkFXRenderUtilities::RenderTargetScope target(window, this->LookUpFrameBuffer, this->Visibility);
+  vtkShaderProgram* program =
+    vtkFXRenderUtilities::ReadyQuad(this->LookUpQuad, this->LookUpSource, window, fs);
+  if (!program)
+  {
+    return;
+  }
+  depth->Activate();
+  program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());
+  vtkFXRenderUtilities::SetFrustumRayUniforms(program, ren);
+  // View (the viewer's) -> world -> light view -> light clip; transposed:
+  // vtkShaderProgram hands row-major elements to GLSL, which reads columns.
+  vtkNew<vtkMatrix4x4> worldFromView;
+  worldFromView->DeepCopy(ren->GetActiveCamera()->GetViewTransformMatrix());
+  worldFromView->Invert();
+  vtkNew<vtkMatrix4x4> viewToLight;
+  vtkMatrix4x4::Multiply4x4(this->LightCamera->GetViewTransformMatrix(), worldFromView, viewToLight);
+  vtkMatrix4x4::Multiply4x4(this->LightProjection, viewToLight, viewToLight);
+  viewToLight->Transpose();
+  program->SetUniformMatrix("fxViewToLight", viewToLight);
+  program->SetUniformf("fxBias", static_cast<float>(this->Bias));
+  if (this->Exact)
+  {
+    this->BindBuffers(program);
+    program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->StoredFragments));
+  }
+  else
+  {
+    program->SetUniformi("fxAVSMSize", this->ShadowMapSize);
+    for (int k = 0; k < nodes / 2; ++k)
+    {
+      this->Curves[k]->Activate();
+      program->SetUniformi(("fxAVSMCurve" + std::to_string(k)).c_str(),
+        this->Curves[k]->GetTextureUnit());
+    }
+  }
+  this->LookUpQuad->Render();
+  depth->Deactivate();
+  if (!this->Exact)
+  {
+    for (auto& t : this->Curves)
+    {
+      t->Deactivate();
+    }
+  }
+}
+
+void vtkFXAVSMPass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!this->GBuffer || !this->GBuffer->GetChannelTexture(GB::LinearDepth) || !this->CastingLight)
+  {
+    vtkErrorMacro("vtkFXAVSMPass needs a G-buffer with linear depth and a casting light.");
+    return;
+  }
+  if (!StorageBuffersSupported())
+  {
+    if (!this->WarnedUnsupported)
+    {
+      vtkErrorMacro("AVSM needs shader storage buffers (OpenGL 4.3 or "
+                    "ARB_shader_storage_buffer_object); translucent props cast no shadows.");
+      this->WarnedUnsupported = true;
+    }
+    vtkFXRenderUtilities::Release(this->Visibility, window);
+    return;
+  }
+  this->FitLightCamera(ren);
+  this->EnsureBuffers();
+  this->StoredFragments = this->Capacity;
+  this->Capture(s, window);
+  this->StoredFragments = std::min<vtkIdType>(this->StoredFragments, this->CapturedFragments);
+  if (!this->Exact)
+  {
+    this->Resolve(window);
+  }
+  this->LookUp(ren, window);
+  for (GLuint i = 0; i < 3; ++i)
+  {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
+  }
+}
+
+void vtkFXAVSMPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->CasterPass->ReleaseGraphicsResources(w);
+  vtkFXRenderUtilities::ReleaseQuad(this->ResolveQuad, this->ResolveSource, w);
+  vtkFXRenderUtilities::ReleaseQuad(this->LookUpQuad, this->LookUpSource, w);
+  for (auto& t : this->Curves)
+  {
+    vtkFXRenderUtilities::Release(t, w);
+  }
+  this->Curves.clear();
+  vtkFXRenderUtilities::Release(this->CaptureTarget, w);
+  vtkFXRenderUtilities::Release(this->Visibility, w);
+  vtkFXRenderUtilities::Release(this->CaptureFrameBuffer, w);
+  vtkFXRenderUtilities::Release(this->ResolveFrameBuffer, w);
+  vtkFXRenderUtilities::Release(this->LookUpFrameBuffer, w);
+  if (this->Buffers[HeadsBuffer])
+  {
+    if (auto* window = vtkOpenGLRenderWindow::SafeDownCast(w))
+    {
+      window->MakeCurrent();
+      glDeleteBuffers(3, this->Buffers);
+    }
+    this->Buffers[0] = this->Buffers[1] = this->Buffers[2] = 0;
+    this->BufferTexels = 0;
+    this->Capacity = 0;
+  }
+}
+
+void vtkFXAVSMPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ShadowMapSize: " << this->ShadowMapSize << "\n";
+  os << indent << "NumberOfNodes: " << this->NumberOfNodes << " (" << this->Nodes() << " used)\n";
+  os << indent << "Exact: " << this->Exact << "\n";
+  os << indent << "Bilinear: " << this->Bilinear << "\n";
+  os << indent << "Bias: " << this->Bias << "\n";
+  os << indent << "InitialNodesPerTexel: " << this->InitialNodesPerTexel << "\n";
+  os << indent << "CapturedFragments: " << this->CapturedFragments << " (capacity "
+     << this->Capacity << ")\n";
+}

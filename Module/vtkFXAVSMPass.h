@@ -1,0 +1,198 @@
+/**
+ * @class   vtkFXAVSMPass
+ * @brief   Shadows cast by translucent props onto opaque ones: adaptive volumetric shadow maps.
+ *
+ * After Salvi, Vidimce, Lauritzen, Lefohn, "Adaptive Volumetric Shadow
+ * Maps" (EGSR 2010; seed 003). For the first light that can cast (switched
+ * on, directional, not a headlight), the translucent props are rendered from
+ * the light through an orthographic view fitted to the visible props'
+ * bounds (ShadowMapSize texels square). Every fragment, instead of being
+ * drawn, joins its texel's linked list (shader storage buffers and an
+ * atomic counter: GL 4.3 or ARB_shader_storage_buffer_object) as a light-
+ * space depth and an optical depth -ln(1 - opacity), so that products of
+ * transmittances are sums and never underflow. Then, per texel:
+ * - AVSM (default): the lists are resolved into curves of NumberOfNodes
+ *   nodes (4, 8 or 16) by the paper's rule (segments inserted in depth
+ *   order; past the budget, the node whose removal changes the area under
+ *   the transmittance curve least goes); up to NumberOfNodes / 2 surfaces
+ *   per texel are kept exactly;
+ * - Exact: the lists themselves are the deep shadow map; the look-up sums
+ *   the optical depth of every fragment in front of the receiver (the
+ *   reference the AVSM is measured against).
+ * Fragments are sorted (by depth, then optical depth) before insertion, so
+ * the result does not depend on the order they arrived in.
+ *
+ * The look-up runs per G-buffer pixel (Bilinear: four texels blended, or
+ * the nearest) and writes the light's transmittance at the receiver, the
+ * output "visibility" (R32F, full resolution); in the composite it scales
+ * that light's contribution (LightVisibility hook).
+ *
+ * Work: some prop is translucent, some is opaque (a receiver) and a light
+ * can cast; otherwise the pass, its buffers and the G-buffer's linear depth
+ * it reads are left out. A list buffer too small for a frame (counted by the
+ * atomic counter; no out-of-bounds write happens) drops the extra fragments
+ * that frame, warns once and grows for the next one.
+ *
+ * Limitations of this first version: one casting light; translucent props
+ * do not receive shadows (only opaque ones do); point-gaussian splats are
+ * captured as the surfaces they draw.
+ *
+ * Cost: the translucent props drawn once more at ShadowMapSize^2, 16 bytes
+ * per captured fragment plus 4 per texel for the list heads; the resolve,
+ * one pass over the map (NumberOfNodes x 8 bytes per texel kept); the
+ * look-up, one full-resolution pass of 1 (4 bilinear) curve reads, or a
+ * walk of the lists (Exact).
+ */
+#ifndef vtkFXAVSMPass_h
+#define vtkFXAVSMPass_h
+
+#include "vtkFXEffectPass.h"
+#include "vtkFXModule.h"
+#include "vtkSmartPointer.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkCamera;
+class vtkLight;
+class vtkMatrix4x4;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkOpenGLRenderer;
+class vtkTextureObject;
+class vtkTranslucentPass;
+
+class VTKFX_EXPORT vtkFXAVSMPass : public vtkFXEffectPass
+{
+public:
+  static vtkFXAVSMPass* New();
+  vtkTypeMacro(vtkFXAVSMPass, vtkFXEffectPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Shadow map texels per side (16..4096, default 512).
+   */
+  vtkSetClampMacro(ShadowMapSize, int, 16, 4096);
+  vtkGetMacro(ShadowMapSize, int);
+
+  /**
+   * Nodes per texel of the AVSM curve: 4, 8 (default) or 16; other values
+   * are rounded up to one of those.
+   */
+  vtkSetClampMacro(NumberOfNodes, int, 4, 16);
+  vtkGetMacro(NumberOfNodes, int);
+
+  /**
+   * Look up the uncompressed lists (the exact deep shadow map) instead of
+   * the AVSM curves (default off).
+   */
+  vtkSetMacro(Exact, bool);
+  vtkGetMacro(Exact, bool);
+  vtkBooleanMacro(Exact, bool);
+
+  /**
+   * Blend the four nearest texels' transmittances (default on) or take
+   * the nearest.
+   */
+  vtkSetMacro(Bilinear, bool);
+  vtkGetMacro(Bilinear, bool);
+  vtkBooleanMacro(Bilinear, bool);
+
+  /**
+   * Receiver depth offset towards the light, as a fraction of the light
+   * view's depth range (0..0.1, default 1e-3): casters closer to a
+   * receiver than this do not shadow it.
+   */
+  vtkSetClampMacro(Bias, double, 0.0, 0.1);
+  vtkGetMacro(Bias, double);
+
+  /**
+   * Fragments the list buffer holds, per shadow-map texel, before it first
+   * grows (1..1024, default 4).
+   */
+  vtkSetClampMacro(InitialNodesPerTexel, int, 1, 1024);
+  vtkGetMacro(InitialNodesPerTexel, int);
+
+  ///@{
+  /**
+   * Of the last frame: fragments captured (counted, stored or not), the
+   * buffer's capacity in fragments, and the index of the casting light
+   * among the lights that are on (-1: none).
+   */
+  vtkGetMacro(CapturedFragments, vtkIdType);
+  vtkGetMacro(Capacity, vtkIdType);
+  vtkGetMacro(LightIndex, int);
+  ///@}
+
+  bool HasWork(const vtkFXSceneInfo& scene) override;
+  unsigned int GetRequiredChannels() override;
+  Output GetOutput(const char* name) override;
+  std::string GetCompositeCode(int hook) override;
+  void BindCompositeResources(vtkShaderProgram* program, const std::string& prefix) override;
+  void UnbindCompositeResources() override;
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  // Shader replacement in the translucent props' shaders during capture.
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+
+protected:
+  vtkFXAVSMPass();
+  ~vtkFXAVSMPass() override;
+
+  int Nodes() const; // NumberOfNodes rounded to 4, 8 or 16
+  void FitLightCamera(vtkOpenGLRenderer* ren);
+  bool EnsureBuffers();
+  void BindBuffers(vtkShaderProgram* program);
+  void Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
+  void Resolve(vtkOpenGLRenderWindow* window);
+  void LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window);
+
+  int ShadowMapSize = 512;
+  int NumberOfNodes = 8;
+  bool Exact = false;
+  bool Bilinear = true;
+  double Bias = 1e-3;
+  int InitialNodesPerTexel = 4;
+
+  vtkIdType CapturedFragments = 0;
+  vtkIdType Capacity = 0;
+  vtkIdType StoredFragments = 0; // nodes this frame's lists hold
+  int LightIndex = -1;
+  bool WarnedOverflow = false;
+  bool WarnedUnsupported = false;
+
+  // This frame's casters and casting light (from HasWork).
+  std::vector<vtkProp*> Casters;
+  vtkLight* CastingLight = nullptr;
+
+  vtkSmartPointer<vtkCamera> LightCamera;
+  vtkSmartPointer<vtkMatrix4x4> LightProjection;
+  vtkSmartPointer<vtkTranslucentPass> CasterPass;
+  unsigned int Buffers[3] = { 0, 0, 0 }; // heads, nodes, counter
+  vtkIdType BufferTexels = 0;
+  vtkSmartPointer<vtkTextureObject> CaptureTarget;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> CaptureFrameBuffer;
+  std::vector<vtkSmartPointer<vtkTextureObject>> Curves; // depths then optical depths
+  vtkSmartPointer<vtkOpenGLFramebufferObject> ResolveFrameBuffer;
+  std::unique_ptr<vtkOpenGLQuadHelper> ResolveQuad;
+  std::string ResolveSource;
+  vtkSmartPointer<vtkTextureObject> Visibility;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> LookUpFrameBuffer;
+  std::unique_ptr<vtkOpenGLQuadHelper> LookUpQuad;
+  std::string LookUpSource;
+
+private:
+  vtkFXAVSMPass(const vtkFXAVSMPass&) = delete;
+  void operator=(const vtkFXAVSMPass&) = delete;
+};
+
+#endif
