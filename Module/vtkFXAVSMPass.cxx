@@ -13,7 +13,6 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
-#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
@@ -33,13 +32,16 @@ namespace
 {
 using GB = vtkFXGBufferPass;
 
-// Shader storage blocks of vtkFXAVSMLists.glsl, bound to points 0, 1, 2.
-const char* const BlockNames[3] = { "FXAVSMHeads", "FXAVSMNodes", "FXAVSMCounter" };
+// Shader storage blocks of vtkFXAVSMLists.glsl, bound to points 0 to 3.
+const char* const BlockNames[4] = { "FXAVSMHeads", "FXAVSMNodes", "FXAVSMCounter",
+  "FXAVSMCounts" };
 enum Buffer
 {
   HeadsBuffer = 0,
   NodesBuffer = 1,
-  CounterBuffer = 2
+  CounterBuffer = 2,
+  CountsBuffer = 3,
+  NumberOfBuffers = 4
 };
 const GLsizeiptr NodeBytes = 16;
 const vtkIdType MaximumCapacity = vtkIdType(1) << 27; // 2 GiB of nodes
@@ -96,6 +98,11 @@ bool vtkFXAVSMPass::HasWork(const vtkFXSceneInfo& scene)
   }
   return this->CastingLight && !this->Casters.empty() && !scene.OpaqueProps.empty() &&
     this->Superclass::HasWork(scene);
+}
+
+vtkTextureObject* vtkFXAVSMPass::GetCurveTexture(int i)
+{
+  return (i >= 0 && i < this->GetNumberOfCurveTextures()) ? this->Curves[i].GetPointer() : nullptr;
 }
 
 unsigned int vtkFXAVSMPass::GetRequiredChannels()
@@ -201,7 +208,7 @@ bool vtkFXAVSMPass::EnsureBuffers()
   const vtkIdType texels = vtkIdType(this->ShadowMapSize) * this->ShadowMapSize;
   if (!this->Buffers[HeadsBuffer])
   {
-    glGenBuffers(3, this->Buffers);
+    glGenBuffers(NumberOfBuffers, this->Buffers);
     this->BufferTexels = 0;
     this->Capacity = 0;
   }
@@ -209,8 +216,10 @@ bool vtkFXAVSMPass::EnsureBuffers()
   {
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[HeadsBuffer]);
     glBufferData(GL_SHADER_STORAGE_BUFFER, texels * 4, nullptr, GL_DYNAMIC_DRAW);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CountsBuffer]);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, texels * 4, nullptr, GL_DYNAMIC_DRAW);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CounterBuffer]);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, 4, nullptr, GL_DYNAMIC_READ);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, 8, nullptr, GL_DYNAMIC_READ);
     this->BufferTexels = texels;
   }
   const vtkIdType wanted =
@@ -228,7 +237,7 @@ bool vtkFXAVSMPass::EnsureBuffers()
 void vtkFXAVSMPass::BindBuffers(vtkShaderProgram* program)
 {
   const GLuint handle = static_cast<GLuint>(program->GetHandle());
-  for (GLuint i = 0; i < 3; ++i)
+  for (GLuint i = 0; i < NumberOfBuffers; ++i)
   {
     const GLuint block = glGetProgramResourceIndex(handle, GL_SHADER_STORAGE_BLOCK, BlockNames[i]);
     if (block != GL_INVALID_INDEX)
@@ -241,6 +250,10 @@ void vtkFXAVSMPass::BindBuffers(vtkShaderProgram* program)
   if (program->IsUniformUsed("fxAVSMCapacity"))
   {
     program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->Capacity));
+  }
+  if (program->IsUniformUsed("fxAVSMWalk"))
+  {
+    program->SetUniformi("fxAVSMWalk", static_cast<int>(this->LongestList));
   }
 }
 
@@ -282,11 +295,13 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
   vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   // Empty lists, nothing counted.
   const GLuint end = 0xFFFFFFFFu;
-  const GLuint zero = 0;
+  const GLuint zeros[2] = { 0, 0 };
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[HeadsBuffer]);
   glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &end);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CountsBuffer]);
+  glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, zeros);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CounterBuffer]);
-  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4, &zero);
+  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 8, zeros);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 
   vtkFXRenderUtilities::EnsureTexture(this->CaptureTarget, window, this->ShadowMapSize,
@@ -311,11 +326,16 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 
-  GLuint counted = 0;
+  GLuint counter[2] = { 0, 0 }; // fragments, longest list
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CounterBuffer]);
-  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4, &counted);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 8, counter);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  const GLuint counted = counter[0];
   this->CapturedFragments = counted;
+  // llvmpipe stops a shader's loops after 65535 iterations: longer lists
+  // are walked that far (a deep shadow of more than 65000 surfaces on one
+  // texel is dark enough anyway).
+  this->LongestList = std::min<vtkIdType>(counter[1], 65000);
   if (counted > this->Capacity)
   {
     if (!this->WarnedOverflow)
@@ -401,12 +421,11 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  if (vtkShaderProgram* program =
-        vtkFXRenderUtilities::ReadyQuad(this->ResolveQuad, this->ResolveSource, window, fs))
+  if (vtkShaderProgram* program = vtkFXRenderUtilities::ReadyTriangle(window, fs))
   {
     this->BindBuffers(program);
     program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->StoredFragments));
-    this->ResolveQuad->Render();
+    vtkFXRenderUtilities::DrawTriangle(this->TriangleArray);
   }
   state->PopFramebufferBindings();
 }
@@ -440,8 +459,7 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLookup::Fetch", fetch.str(), false);
 
   vtkFXRenderUtilities::RenderTargetScope target(window, this->LookUpFrameBuffer, this->Visibility);
-  vtkShaderProgram* program =
-    vtkFXRenderUtilities::ReadyQuad(this->LookUpQuad, this->LookUpSource, window, fs);
+  vtkShaderProgram* program = vtkFXRenderUtilities::ReadyTriangle(window, fs);
   if (!program)
   {
     return;
@@ -454,9 +472,10 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
   vtkNew<vtkMatrix4x4> worldFromView;
   worldFromView->DeepCopy(ren->GetActiveCamera()->GetViewTransformMatrix());
   worldFromView->Invert();
+  vtkNew<vtkMatrix4x4> viewToLightView;
+  vtkMatrix4x4::Multiply4x4(this->LightCamera->GetViewTransformMatrix(), worldFromView, viewToLightView);
   vtkNew<vtkMatrix4x4> viewToLight;
-  vtkMatrix4x4::Multiply4x4(this->LightCamera->GetViewTransformMatrix(), worldFromView, viewToLight);
-  vtkMatrix4x4::Multiply4x4(this->LightProjection, viewToLight, viewToLight);
+  vtkMatrix4x4::Multiply4x4(this->LightProjection, viewToLightView, viewToLight);
   viewToLight->Transpose();
   program->SetUniformMatrix("fxViewToLight", viewToLight);
   program->SetUniformf("fxBias", static_cast<float>(this->Bias));
@@ -475,7 +494,7 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
         this->Curves[k]->GetTextureUnit());
     }
   }
-  this->LookUpQuad->Render();
+  vtkFXRenderUtilities::DrawTriangle(this->TriangleArray);
   depth->Deactivate();
   if (!this->Exact)
   {
@@ -517,7 +536,7 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
     this->Resolve(window);
   }
   this->LookUp(ren, window);
-  for (GLuint i = 0; i < 3; ++i)
+  for (GLuint i = 0; i < NumberOfBuffers; ++i)
   {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
   }
@@ -526,8 +545,7 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
 void vtkFXAVSMPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->CasterPass->ReleaseGraphicsResources(w);
-  vtkFXRenderUtilities::ReleaseQuad(this->ResolveQuad, this->ResolveSource, w);
-  vtkFXRenderUtilities::ReleaseQuad(this->LookUpQuad, this->LookUpSource, w);
+  vtkFXRenderUtilities::ReleaseTriangle(this->TriangleArray, w);
   for (auto& t : this->Curves)
   {
     vtkFXRenderUtilities::Release(t, w);
@@ -543,9 +561,9 @@ void vtkFXAVSMPass::ReleaseGraphicsResources(vtkWindow* w)
     if (auto* window = vtkOpenGLRenderWindow::SafeDownCast(w))
     {
       window->MakeCurrent();
-      glDeleteBuffers(3, this->Buffers);
+      glDeleteBuffers(NumberOfBuffers, this->Buffers);
     }
-    this->Buffers[0] = this->Buffers[1] = this->Buffers[2] = 0;
+    std::fill(this->Buffers, this->Buffers + NumberOfBuffers, 0u);
     this->BufferTexels = 0;
     this->Capacity = 0;
   }

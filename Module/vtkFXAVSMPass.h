@@ -58,7 +58,6 @@ class vtkCamera;
 class vtkLight;
 class vtkMatrix4x4;
 class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderer;
 class vtkTextureObject;
@@ -126,6 +125,17 @@ public:
   vtkGetMacro(LightIndex, int);
   ///@}
 
+  ///@{
+  /**
+   * The AVSM curves of the last frame (for tests and debugging): textures
+   * 0 .. n/4 - 1 hold the nodes' depths (RGBA32F, four nodes each, light
+   * clip depth 0..1, 3e38 for unused nodes), n/4 .. n/2 - 1 their optical
+   * depths, n = the nodes used. None in Exact mode.
+   */
+  int GetNumberOfCurveTextures() const { return static_cast<int>(this->Curves.size()); }
+  vtkTextureObject* GetCurveTexture(int i);
+  ///@}
+
   bool HasWork(const vtkFXSceneInfo& scene) override;
   unsigned int GetRequiredChannels() override;
   Output GetOutput(const char* name) override;
@@ -177,18 +187,16 @@ protected:
   vtkSmartPointer<vtkCamera> LightCamera;
   vtkSmartPointer<vtkMatrix4x4> LightProjection;
   vtkSmartPointer<vtkTranslucentPass> CasterPass;
-  unsigned int Buffers[3] = { 0, 0, 0 }; // heads, nodes, counter
+  unsigned int Buffers[4] = { 0, 0, 0, 0 }; // heads, nodes, counter, counts per texel
+  vtkIdType LongestList = 0;                // of the last capture
   vtkIdType BufferTexels = 0;
   vtkSmartPointer<vtkTextureObject> CaptureTarget;
   vtkSmartPointer<vtkOpenGLFramebufferObject> CaptureFrameBuffer;
   std::vector<vtkSmartPointer<vtkTextureObject>> Curves; // depths then optical depths
   vtkSmartPointer<vtkOpenGLFramebufferObject> ResolveFrameBuffer;
-  std::unique_ptr<vtkOpenGLQuadHelper> ResolveQuad;
-  std::string ResolveSource;
   vtkSmartPointer<vtkTextureObject> Visibility;
   vtkSmartPointer<vtkOpenGLFramebufferObject> LookUpFrameBuffer;
-  std::unique_ptr<vtkOpenGLQuadHelper> LookUpQuad;
-  std::string LookUpSource;
+  unsigned int TriangleArray = 0; // empty vertex array of the full-screen triangle
 
 private:
   vtkFXAVSMPass(const vtkFXAVSMPass&) = delete;

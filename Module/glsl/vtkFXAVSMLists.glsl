@@ -23,8 +23,19 @@ layout(std430) buffer FXAVSMNodes
 };
 layout(std430) buffer FXAVSMCounter
 {
-  uint fxAVSMNodeCount; // every fragment counts, stored or not
+  uint fxAVSMNodeCount;   // every fragment counts, stored or not
+  uint fxAVSMLongestList; // the longest list stored
+};
+layout(std430) buffer FXAVSMCounts
+{
+  uint fxAVSMCounts[]; // nodes stored per texel
 };
 uniform int fxAVSMSize;     // shadow map texels per side
 uniform int fxAVSMCapacity; // nodes the buffer holds
+// Steps of every list walk: the longest list of the frame, the same for
+// all pixels. A walk that stopped at its own list's end (a loop whose exit
+// differs between neighbouring pixels) went wrong on llvmpipe for pixels
+// along a primitive's inner edge; walks step fxAVSMWalk times and do
+// nothing past the end.
+uniform int fxAVSMWalk;
 const uint fxAVSMEnd = 0xFFFFFFFFu;

@@ -36,35 +36,36 @@ float fxOpticalDepth(ivec2 texel, float depth)
 #if FX_EXACT
   float sum = 0.0;
   uint node = fxAVSMHeads[texel.y * fxAVSMSize + texel.x];
-  for (int guard = 0; node != fxAVSMEnd && node < uint(fxAVSMCapacity) && guard < 1000000; ++guard)
+  for (int step = 0; step < fxAVSMWalk; ++step)
   {
-    if (fxAVSMNodes[node].depth < depth)
+    if (node != fxAVSMEnd && node < uint(fxAVSMCapacity))
     {
-      sum = min(sum + fxAVSMNodes[node].opticalDepth, 1e4);
+      if (fxAVSMNodes[node].depth < depth)
+      {
+        sum = min(sum + fxAVSMNodes[node].opticalDepth, 1e4);
+      }
+      node = fxAVSMNodes[node].next;
     }
-    node = fxAVSMNodes[node].next;
   }
   return sum;
 #else
   float z[FX_NODES];
   float tau[FX_NODES];
   //VTK::FXAVSMLookup::Fetch
-  if (!(depth >= z[0]))
+  // The last node at or before the receiver decides; its segment to the
+  // next node is interpolated (unused nodes lie at 3e38: their segment
+  // gives the last node's value). Constant indices only.
+  float opticalDepth = 0.0;
+  for (int j = 0; j + 1 < FX_NODES; ++j)
   {
-    return 0.0;
+    if (z[j] <= depth)
+    {
+      float span = z[j + 1] - z[j];
+      float f = span > 0.0 ? clamp((depth - z[j]) / span, 0.0, 1.0) : 1.0;
+      opticalDepth = mix(tau[j], tau[j + 1], f);
+    }
   }
-  int lo = 0;
-  for (int j = 1; j < FX_NODES; ++j)
-  {
-    lo = z[j] <= depth ? j : lo;
-  }
-  if (lo == FX_NODES - 1 || z[lo + 1] > 1e37)
-  {
-    return tau[lo];
-  }
-  float span = z[lo + 1] - z[lo];
-  float f = span > 0.0 ? clamp((depth - z[lo]) / span, 0.0, 1.0) : 1.0;
-  return mix(tau[lo], tau[lo + 1], f);
+  return z[FX_NODES - 1] <= depth ? tau[FX_NODES - 1] : opticalDepth;
 #endif
 }
 
@@ -79,13 +80,21 @@ float fxTransmittance(ivec2 texel, float depth)
 
 void main()
 {
-  float linearDepth = texture(fxLinearDepth, texCoord).r;
+  // Texels through gl_FragCoord; texCoord is read once only (the draw binds
+  // it).
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  ivec2 size = textureSize(fxLinearDepth, 0);
+  float linearDepth = texelFetch(fxLinearDepth, pixel, 0).r;
+  if (texCoord.x < -1.0)
+  {
+    linearDepth = 0.0; // never
+  }
   if (!(linearDepth > 0.0))
   {
     gl_FragData[0] = vec4(1.0);
     return;
   }
-  vec2 ndc = 2.0 * texCoord - 1.0;
+  vec2 ndc = 2.0 * (vec2(pixel) + 0.5) / vec2(size) - 1.0;
   vec3 origin = fxRayOrigin[0] + ndc.x * fxRayOrigin[1] + ndc.y * fxRayOrigin[2];
   vec3 direction = fxRayDirection[0] + ndc.x * fxRayDirection[1] + ndc.y * fxRayDirection[2];
   vec4 light = fxViewToLight * vec4(origin + linearDepth * direction, 1.0);

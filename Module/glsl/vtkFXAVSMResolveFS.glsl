@@ -10,7 +10,7 @@
 // A surface is a segment of zero thickness: a vertical step, so up to
 // FX_NODES / 2 surfaces per texel are kept exactly.
 // Order independence: the FX_MAX_LIST nearest fragments (by depth, then
-// optical depth) are sorted before insertion, so the curve does not depend
+// optical depth) are kept sorted and inserted in that order, so the curve does not depend
 // on the order fragments arrived in; fragments beyond them are summed into
 // one last segment from the nearest to the farthest of them (exact past
 // it). Optical depth is summed, capped at 1e4 (transmittance 0 in float).
@@ -23,43 +23,57 @@ in vec2 texCoord;
 
 //VTK::Output::Dec
 
+// Local arrays are indexed with loop counters only (constant after
+// unrolling), never with values that differ between pixels: llvmpipe got
+// the pixels along a primitive's inner edges wrong when they were.
 float fxZ[FX_NODES + 1];
 float fxTau[FX_NODES + 1];
 int fxCount = 0;
 
-// Exp(-tau) of node i: the transmittance the area rule weighs.
-float fxT(int i)
+// Exp(-tau) of a node: the transmittance the area rule weighs.
+float fxT(float tau)
 {
-  return exp(-fxTau[i]);
+  return exp(-tau);
 }
 
 void fxInsert(float z, float tau)
 {
-  fxZ[fxCount] = z;
-  fxTau[fxCount] = tau;
+  for (int i = 0; i <= FX_NODES; ++i)
+  {
+    if (i == fxCount)
+    {
+      fxZ[i] = z;
+      fxTau[i] = tau;
+    }
+  }
   ++fxCount;
   if (fxCount <= FX_NODES)
   {
     return;
   }
+  // Full: the interior node whose removal changes the area under the
+  // transmittance curve least (the triangle with its neighbours) goes.
   int victim = 1;
   float smallest = 3e38;
-  for (int i = 1; i + 1 < fxCount; ++i)
+  for (int i = 1; i < FX_NODES; ++i)
   {
-    float area = abs((fxZ[i] - fxZ[i - 1]) * (fxT(i + 1) - fxT(i - 1)) -
-      (fxT(i) - fxT(i - 1)) * (fxZ[i + 1] - fxZ[i - 1]));
+    float area = abs((fxZ[i] - fxZ[i - 1]) * (fxT(fxTau[i + 1]) - fxT(fxTau[i - 1])) -
+      (fxT(fxTau[i]) - fxT(fxTau[i - 1])) * (fxZ[i + 1] - fxZ[i - 1]));
     if (area < smallest)
     {
       smallest = area;
       victim = i;
     }
   }
-  for (int i = victim; i + 1 < fxCount; ++i)
+  for (int i = 1; i < FX_NODES; ++i)
   {
-    fxZ[i] = fxZ[i + 1];
-    fxTau[i] = fxTau[i + 1];
+    if (i >= victim)
+    {
+      fxZ[i] = fxZ[i + 1];
+      fxTau[i] = fxTau[i + 1];
+    }
   }
-  --fxCount;
+  fxCount = FX_NODES;
 }
 
 // (a, b) before (c, d): by depth, then by optical depth.
@@ -72,68 +86,76 @@ void main()
 {
   if (texCoord.x < -1.0)
   {
-    discard; // never: keeps texCoord, which the quad binds, in the program
+    discard; // never: keeps texCoord in the program
   }
   ivec2 texel = ivec2(gl_FragCoord.xy);
+  // The FX_MAX_LIST nearest fragments, kept sorted as they come (each new
+  // one bubbles to its place; what falls off the end is the farthest):
+  // empty slots hold depth 3e38.
   float depth[FX_MAX_LIST];
   float tau[FX_MAX_LIST];
+  for (int i = 0; i < FX_MAX_LIST; ++i)
+  {
+    depth[i] = 3e38;
+    tau[i] = 0.0;
+  }
   int n = 0;
   float droppedTau = 0.0;
   float droppedNear = 3e38;
   float droppedFar = -3e38;
   uint node = fxAVSMHeads[texel.y * fxAVSMSize + texel.x];
-  for (int guard = 0; node != fxAVSMEnd && node < uint(fxAVSMCapacity) && guard < 1000000; ++guard)
+  for (int step = 0; step < fxAVSMWalk; ++step)
   {
+    if (node == fxAVSMEnd || node >= uint(fxAVSMCapacity))
+    {
+      continue; // past the end: nothing (see fxAVSMWalk)
+    }
     float d = fxAVSMNodes[node].depth;
     float t = fxAVSMNodes[node].opticalDepth;
     node = fxAVSMNodes[node].next;
-    if (n < FX_MAX_LIST)
+    // Full, and no nearer than the farthest kept: dropped at once (a list
+    // arrives farthest-last when drawn back to front; a loop per fragment
+    // would cost 64 steps, and llvmpipe stops a shader's loops after
+    // 65535 iterations).
+    if (n == FX_MAX_LIST && !fxBefore(d, t, depth[FX_MAX_LIST - 1], tau[FX_MAX_LIST - 1]))
     {
-      depth[n] = d;
-      tau[n] = t;
-      ++n;
+      droppedTau = min(droppedTau + t, 1e4);
+      droppedNear = min(droppedNear, d);
+      droppedFar = max(droppedFar, d);
       continue;
     }
-    // Full: keep the nearest; the farthest kept one, or this one, drops.
-    int far = 0;
-    for (int i = 1; i < FX_MAX_LIST; ++i)
+    for (int i = 0; i < FX_MAX_LIST; ++i)
     {
-      far = fxBefore(depth[far], tau[far], depth[i], tau[i]) ? i : far;
+      if (fxBefore(d, t, depth[i], tau[i]))
+      {
+        float swapD = depth[i];
+        float swapT = tau[i];
+        depth[i] = d;
+        tau[i] = t;
+        d = swapD;
+        t = swapT;
+      }
     }
-    if (fxBefore(d, t, depth[far], tau[far]))
+    if (n < FX_MAX_LIST)
     {
-      float swapD = depth[far];
-      float swapT = tau[far];
-      depth[far] = d;
-      tau[far] = t;
-      d = swapD;
-      t = swapT;
+      ++n; // an empty slot fell off
     }
-    droppedTau = min(droppedTau + t, 1e4);
-    droppedNear = min(droppedNear, d);
-    droppedFar = max(droppedFar, d);
-  }
-  // Insertion sort: lists are short.
-  for (int i = 1; i < n; ++i)
-  {
-    float d = depth[i];
-    float t = tau[i];
-    int j = i - 1;
-    while (j >= 0 && fxBefore(d, t, depth[j], tau[j]))
+    else
     {
-      depth[j + 1] = depth[j];
-      tau[j + 1] = tau[j];
-      --j;
+      droppedTau = min(droppedTau + t, 1e4);
+      droppedNear = min(droppedNear, d);
+      droppedFar = max(droppedFar, d);
     }
-    depth[j + 1] = d;
-    tau[j + 1] = t;
   }
   float sum = 0.0;
-  for (int i = 0; i < n; ++i)
+  for (int i = 0; i < FX_MAX_LIST; ++i)
   {
-    fxInsert(depth[i], sum);
-    sum = min(sum + tau[i], 1e4);
-    fxInsert(depth[i], sum);
+    if (i < n)
+    {
+      fxInsert(depth[i], sum);
+      sum = min(sum + tau[i], 1e4);
+      fxInsert(depth[i], sum);
+    }
   }
   if (droppedTau > 0.0)
   {
@@ -141,10 +163,13 @@ void main()
     sum = min(sum + droppedTau, 1e4);
     fxInsert(droppedFar, sum);
   }
-  for (int i = fxCount; i < FX_NODES; ++i)
+  for (int i = 0; i < FX_NODES; ++i)
   {
-    fxZ[i] = 3e38;
-    fxTau[i] = sum;
+    if (i >= fxCount)
+    {
+      fxZ[i] = 3e38;
+      fxTau[i] = sum;
+    }
   }
   //VTK::FXAVSMResolve::Output
 }

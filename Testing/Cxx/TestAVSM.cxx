@@ -1,0 +1,293 @@
+// vtkFXAVSMPass against transmittances known in closed form. A large
+// opaque ground (z = 0) seen from above in parallel projection, one
+// directional light straight down, and translucent slabs covering the half
+// x < 0 of the ground at some heights. The pass's "visibility" output (the
+// light's transmittance at each receiver) is read back:
+// - one slab of opacity a: 1 - a under it, 1 elsewhere (within 1e-3), for
+//   the AVSM curves (point and bilinear look-ups) and the exact lists;
+// - two slabs: the product; four slabs: AVSM-16 (room for 8 surfaces)
+//   equals the exact mode;
+// - opacity exactly 0 casts nothing and exactly 1 blocks all;
+// - 1000 stacked layers of opacity 0.9999: finite, >= 0 (and 0), and the
+//   resolved curves' optical depth never decreases along the ray;
+// - a list buffer far too small: the capture counts what it dropped, the
+//   buffer grows, and the next frame is right;
+// - the same under a perspective camera.
+#include "vtkFXAVSMPass.h"
+#include "vtkFXPipelinePass.h"
+#include "vtkFXTestUtilities.h"
+
+#include "vtkAppendPolyData.h"
+#include "vtkLight.h"
+#include "vtkPlaneSource.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRendererCollection.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkPointData.h"
+#include "vtkCellData.h"
+
+#include <functional>
+
+namespace
+{
+const int Width = 200, Height = 150;
+
+vtkSmartPointer<vtkActor> Quad(double x0, double x1, double z, double opacity)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(x0, -10.0, z);
+  plane->SetPoint1(x1, -10.0, z);
+  plane->SetPoint2(x0, 10.0, z);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(plane->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetOpacity(opacity);
+  return actor;
+}
+
+// Layers of opacity `opacity` at heights `heights`, as one prop.
+vtkSmartPointer<vtkActor> Layers(const std::vector<double>& heights, double opacity)
+{
+  vtkNew<vtkAppendPolyData> append;
+  for (double z : heights)
+  {
+    vtkNew<vtkPlaneSource> plane;
+    plane->SetOrigin(-10.0, -10.0, z);
+    plane->SetPoint1(0.0, -10.0, z);
+    plane->SetPoint2(-10.0, 10.0, z);
+    plane->Update();
+    append->AddInputData(plane->GetOutput());
+  }
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(append->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetOpacity(opacity);
+  return actor;
+}
+
+// The ground, the light and `casters` in a pipeline with `avsm`; renders
+// `frames` frames and returns the visibility per pixel (rows bottom-up).
+std::vector<float> Visibility(vtkRenderWindow* window, vtkFXAVSMPass* avsm,
+  const std::vector<vtkSmartPointer<vtkActor>>& casters, bool parallel, int frames = 1)
+{
+  window->GetRenderers()->RemoveAllItems();
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  renderer->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->PositionalOff();
+  light->SetPosition(0.0, 0.0, 1.0);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->AddLight(light);
+  renderer->AddActor(Quad(-10.0, 10.0, 0.0, 1.0)); // the opaque ground
+  for (const auto& caster : casters)
+  {
+    renderer->AddActor(caster);
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0.0, 0.0, 20.0);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetParallelProjection(parallel);
+  camera->SetParallelScale(4.0);
+  camera->SetViewAngle(22.0);
+  camera->SetClippingRange(5.0, 40.0);
+  vtkNew<vtkFXPipelinePass> pipeline;
+  pipeline->AddEffect("avsm", avsm);
+  renderer->SetPass(pipeline);
+  for (int f = 0; f < frames; ++f)
+  {
+    window->Render();
+  }
+  return vtkFXTest::Download(avsm->GetOutputTexture("visibility"), 1);
+}
+
+// Checks the left third of the image (under the casters) against `under`
+// and the right third against 1, within `tolerance`; everything finite and
+// in [0, 1].
+int CheckHalves(const char* name, const std::vector<float>& v, double under, double tolerance)
+{
+  FX_CHECK(v.size() == static_cast<size_t>(Width) * Height, name << ": no visibility");
+  double worstUnder = 0.0, worstOpen = 0.0;
+  for (int y = 10; y < Height - 10; ++y)
+  {
+    for (int x = 0; x < Width; ++x)
+    {
+      const float t = v[static_cast<size_t>(y) * Width + x];
+      FX_CHECK(std::isfinite(t) && t >= 0.0f && t <= 1.0f, name << ": " << t << " at " << x << "," << y);
+      if (x < Width / 3)
+      {
+        worstUnder = std::max(worstUnder, std::fabs(t - under));
+      }
+      else if (x > 2 * Width / 3)
+      {
+        worstOpen = std::max(worstOpen, std::fabs(t - 1.0));
+      }
+    }
+  }
+  std::cout << name << " [left " << v[static_cast<size_t>(Height / 2) * Width + 10] << ", right " << v[static_cast<size_t>(Height / 2) * Width + Width - 10] << "]: under the casters off by " << worstUnder << ", in the open by "
+            << worstOpen << std::endl;
+  FX_CHECK(worstUnder <= tolerance && worstOpen <= tolerance,
+    name << ": expected " << under << " and 1 within " << tolerance);
+  return EXIT_SUCCESS;
+}
+
+vtkSmartPointer<vtkFXAVSMPass> MakeAVSM(int nodes, bool exact, bool bilinear)
+{
+  auto avsm = vtkSmartPointer<vtkFXAVSMPass>::New();
+  avsm->SetNumberOfNodes(nodes);
+  avsm->SetExact(exact);
+  avsm->SetBilinear(bilinear);
+  return avsm;
+}
+}
+
+int TestAVSM(int, char*[])
+{
+  auto window = vtkFXTest::MakeWindow(Width, Height);
+  const struct
+  {
+    const char* Name;
+    int Nodes;
+    bool Exact, Bilinear;
+  } modes[] = { { "exact bilinear", 8, true, true }, { "AVSM-8 bilinear", 8, false, true },
+    { "AVSM-4 point", 4, false, false } };
+  for (const auto& m : modes)
+  {
+    auto avsm = MakeAVSM(m.Nodes, m.Exact, m.Bilinear);
+    const std::string one = std::string(m.Name) + ", one slab of 0.3";
+    FX_CHECK(CheckHalves(one.c_str(), Visibility(window, avsm, { Quad(-10, 0, 1, 0.3) }, true),
+               0.7, 1e-3) == EXIT_SUCCESS, one);
+    const std::string two = std::string(m.Name) + ", slabs of 0.3 and 0.5";
+    FX_CHECK(CheckHalves(two.c_str(),
+               Visibility(window, avsm, { Quad(-10, 0, 1, 0.3), Quad(-10, 0, 2, 0.5) }, true),
+               0.35, 1e-3) == EXIT_SUCCESS, two);
+  }
+
+  // Four surfaces: 8 nodes, which AVSM-16 keeps exactly.
+  const std::vector<vtkSmartPointer<vtkActor>> four = { Quad(-10, 0, 1, 0.2), Quad(-10, 0, 1.5, 0.4),
+    Quad(-10, 0, 2, 0.6), Quad(-10, 0, 2.5, 0.1) };
+  const auto exact = Visibility(window, MakeAVSM(8, true, true), four, true);
+  const auto avsm16 = Visibility(window, MakeAVSM(16, false, true), four, true);
+  double largest = 0.0;
+  for (size_t i = 0; i < exact.size() && i < avsm16.size(); ++i)
+  {
+    largest = std::max(largest, static_cast<double>(std::fabs(exact[i] - avsm16[i])));
+  }
+  std::cout << "four slabs: AVSM-16 against exact, largest difference " << largest << std::endl;
+  FX_CHECK(!exact.empty() && largest < 1e-5, "AVSM-16 differs from exact by " << largest);
+  FX_CHECK(CheckHalves("four slabs, exact", exact, 0.8 * 0.6 * 0.4 * 0.9, 1e-3) == EXIT_SUCCESS, "");
+
+  // 1000 layers of opacity 0.9999: optical depth 9210, transmittance 0.
+  std::vector<double> heights;
+  for (int i = 0; i < 1000; ++i)
+  {
+    heights.push_back(1.0 + i * 1e-3);
+  }
+  for (bool exactMode : { false, true })
+  {
+    auto avsm = MakeAVSM(8, exactMode, false);
+    avsm->SetShadowMapSize(32);
+    const auto v = Visibility(window, avsm, { Layers(heights, 0.9999) }, true, 2);
+    FX_CHECK(CheckHalves(exactMode ? "1000 layers, exact" : "1000 layers, AVSM-8", v, 0.0, 1e-6) ==
+        EXIT_SUCCESS, "");
+    if (!exactMode)
+    {
+      // Along every light ray the curve's nodes go deeper and the optical
+      // depth never decreases (transmittance never increases), finite.
+      const int quarter = avsm->GetNumberOfCurveTextures() / 2;
+      FX_CHECK(quarter == 2, "8 nodes make 2 + 2 curve textures, not " << 2 * quarter);
+      std::vector<std::vector<float>> curves;
+      for (int k = 0; k < 2 * quarter; ++k)
+      {
+        curves.push_back(vtkFXTest::Download(avsm->GetCurveTexture(k), 4));
+      }
+      int rays = 0;
+      for (size_t texel = 0; texel < curves[0].size() / 4; ++texel)
+      {
+        float previousZ = -1.0f, previousTau = 0.0f;
+        for (int node = 0; node < 8; ++node)
+        {
+          const float z = curves[node / 4][4 * texel + node % 4];
+          const float tau = curves[quarter + node / 4][4 * texel + node % 4];
+          FX_CHECK(std::isfinite(tau) && tau >= previousTau && z >= previousZ,
+            "texel " << texel << " node " << node << ": depth " << z << ", optical depth " << tau);
+          previousZ = z;
+          previousTau = tau;
+        }
+        rays += previousTau > 1000.0f ? 1 : 0;
+      }
+      std::cout << "1000 layers: " << rays << " light rays through the layers, every curve monotone"
+                << std::endl;
+      FX_CHECK(rays > 100, "only " << rays << " rays through the layers");
+    }
+  }
+
+  // A list buffer of 1 fragment per texel for up to 3 surfaces per texel:
+  // the first frame drops fragments (and says so), the second is right.
+  {
+    auto avsm = MakeAVSM(8, false, true);
+    avsm->SetInitialNodesPerTexel(1);
+    avsm->SetShadowMapSize(64);
+    const std::vector<vtkSmartPointer<vtkActor>> slabs = { Quad(-10, 10, 1, 0.3),
+      Quad(-10, 10, 2, 0.5), Quad(-10, 0, 3, 0.2) };
+    Visibility(window, avsm, slabs, true, 1);
+    const vtkIdType firstCapacity = 64 * 64;
+    std::cout << "overflow: " << avsm->GetCapturedFragments() << " fragments, capacity now "
+              << avsm->GetCapacity() << std::endl;
+    FX_CHECK(avsm->GetCapturedFragments() > firstCapacity && avsm->GetCapacity() > firstCapacity,
+      "no overflow detected");
+    const auto v = Visibility(window, avsm, slabs, true, 1);
+    FX_CHECK(avsm->GetCapturedFragments() <= avsm->GetCapacity(), "still overflowing");
+    // Left: all three slabs; right: the two wide ones.
+    double worst = 0.0;
+    for (int y = 10; y < Height - 10; ++y)
+    {
+      worst = std::max(worst, std::fabs(v[static_cast<size_t>(y) * Width + 10] - 0.28));
+      worst = std::max(worst, std::fabs(v[static_cast<size_t>(y) * Width + Width - 10] - 0.35));
+    }
+    FX_CHECK(worst < 1e-3, "after growing, off by " << worst);
+  }
+
+  // Opacity exactly 0 casts nothing, exactly 1 blocks all: RGBA colours
+  // on two quads (left: alpha 255, right: alpha 0) of one translucent prop.
+  {
+    vtkNew<vtkAppendPolyData> append;
+    for (int side = 0; side < 2; ++side)
+    {
+      vtkNew<vtkPlaneSource> plane;
+      plane->SetOrigin(side ? 0.0 : -10.0, -10.0, 1.0);
+      plane->SetPoint1(side ? 10.0 : 0.0, -10.0, 1.0);
+      plane->SetPoint2(side ? 0.0 : -10.0, 10.0, 1.0);
+      plane->Update();
+      vtkNew<vtkUnsignedCharArray> rgba;
+      rgba->SetNumberOfComponents(4);
+      rgba->SetName("rgba");
+      for (vtkIdType p = 0; p < plane->GetOutput()->GetNumberOfPoints(); ++p)
+      {
+        const unsigned char c[4] = { 200, 200, 200, static_cast<unsigned char>(side ? 0 : 255) };
+        rgba->InsertNextTypedTuple(c);
+      }
+      plane->GetOutput()->GetPointData()->SetScalars(rgba);
+      append->AddInputData(plane->GetOutput());
+    }
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(append->GetOutputPort());
+    mapper->SetColorModeToDirectScalars();
+    mapper->SetScalarModeToUsePointData();
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    const auto v = Visibility(window, MakeAVSM(8, false, false), { actor }, true);
+    FX_CHECK(CheckHalves("opacity 1 and 0", v, 0.0, 1e-3) == EXIT_SUCCESS, "");
+  }
+
+  auto avsm = MakeAVSM(8, false, true);
+  FX_CHECK(CheckHalves("perspective camera, one slab",
+             Visibility(window, avsm, { Quad(-10, 0, 1, 0.3) }, false), 0.7, 1e-3) == EXIT_SUCCESS,
+    "");
+  return EXIT_SUCCESS;
+}
