@@ -13,6 +13,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
@@ -421,11 +422,12 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  if (vtkShaderProgram* program = vtkFXRenderUtilities::ReadyTriangle(window, fs))
+  if (vtkShaderProgram* program =
+        vtkFXRenderUtilities::ReadyQuad(this->ResolveQuad, this->ResolveSource, window, fs))
   {
     this->BindBuffers(program);
     program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->StoredFragments));
-    vtkFXRenderUtilities::DrawTriangle(this->TriangleArray);
+    this->ResolveQuad->Render();
   }
   state->PopFramebufferBindings();
 }
@@ -459,7 +461,8 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLookup::Fetch", fetch.str(), false);
 
   vtkFXRenderUtilities::RenderTargetScope target(window, this->LookUpFrameBuffer, this->Visibility);
-  vtkShaderProgram* program = vtkFXRenderUtilities::ReadyTriangle(window, fs);
+  vtkShaderProgram* program =
+    vtkFXRenderUtilities::ReadyQuad(this->LookUpQuad, this->LookUpSource, window, fs);
   if (!program)
   {
     return;
@@ -494,7 +497,7 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
         this->Curves[k]->GetTextureUnit());
     }
   }
-  vtkFXRenderUtilities::DrawTriangle(this->TriangleArray);
+  this->LookUpQuad->Render();
   depth->Deactivate();
   if (!this->Exact)
   {
@@ -545,7 +548,8 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
 void vtkFXAVSMPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->CasterPass->ReleaseGraphicsResources(w);
-  vtkFXRenderUtilities::ReleaseTriangle(this->TriangleArray, w);
+  vtkFXRenderUtilities::ReleaseQuad(this->ResolveQuad, this->ResolveSource, w);
+  vtkFXRenderUtilities::ReleaseQuad(this->LookUpQuad, this->LookUpSource, w);
   for (auto& t : this->Curves)
   {
     vtkFXRenderUtilities::Release(t, w);

@@ -58,6 +58,7 @@ class vtkCamera;
 class vtkLight;
 class vtkMatrix4x4;
 class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderer;
 class vtkTextureObject;
@@ -196,7 +197,10 @@ protected:
   vtkSmartPointer<vtkOpenGLFramebufferObject> ResolveFrameBuffer;
   vtkSmartPointer<vtkTextureObject> Visibility;
   vtkSmartPointer<vtkOpenGLFramebufferObject> LookUpFrameBuffer;
-  unsigned int TriangleArray = 0; // empty vertex array of the full-screen triangle
+  std::unique_ptr<vtkOpenGLQuadHelper> ResolveQuad;
+  std::string ResolveSource;
+  std::unique_ptr<vtkOpenGLQuadHelper> LookUpQuad;
+  std::string LookUpSource;
 
 private:
   vtkFXAVSMPass(const vtkFXAVSMPass&) = delete;

@@ -161,51 +161,6 @@ vtkFXRenderUtilities::RenderTargetScope::~RenderTargetScope()
   this->State->PopFramebufferBindings();
 }
 
-vtkShaderProgram* vtkFXRenderUtilities::ReadyTriangle(
-  vtkOpenGLRenderWindow* window, const std::string& fragmentSource)
-{
-  static const char* const vertexSource =
-    "//VTK::System::Dec\n"
-    "out vec2 texCoord;\n"
-    "void main()\n"
-    "{\n"
-    "  vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));\n"
-    "  texCoord = corner;\n"
-    "  gl_Position = vec4(2.0 * corner - 1.0, 0.0, 1.0);\n"
-    "}\n";
-  vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(vertexSource, fragmentSource.c_str(), "");
-  if (!program)
-  {
-    vtkGenericWarningMacro("vtkFX: a full-screen shader failed to compile.");
-  }
-  return program;
-}
-
-void vtkFXRenderUtilities::DrawTriangle(unsigned int& vao)
-{
-  if (!vao)
-  {
-    glGenVertexArrays(1, &vao);
-  }
-  glBindVertexArray(vao);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
-}
-
-void vtkFXRenderUtilities::ReleaseTriangle(unsigned int& vao, vtkWindow* window)
-{
-  if (vao)
-  {
-    if (auto* w = vtkOpenGLRenderWindow::SafeDownCast(window))
-    {
-      w->MakeCurrent();
-      glDeleteVertexArrays(1, &vao);
-    }
-    vao = 0;
-  }
-}
-
 vtkFXRenderUtilities::BlendOntoScope::BlendOntoScope(vtkOpenGLRenderWindow* window,
   unsigned int srcRGB, unsigned int dstRGB, unsigned int srcAlpha, unsigned int dstAlpha)
   : Blend(window->GetState(), GL_BLEND)

@@ -76,22 +76,6 @@ public:
     std::string& builtSource, vtkOpenGLRenderWindow* window, const std::string& fragmentSource);
 
   /**
-   * A full-screen pass drawn as one triangle that covers the viewport (its
-   * corners at (-1,-1), (3,-1), (-1,3)), for fragment shaders that index
-   * local arrays with values that differ between neighbouring pixels: on
-   * llvmpipe, the pixels along a quad's diagonal, whose 2x2 groups the two
-   * triangles split, came out wrong in such a shader (the AVSM resolve's
-   * sort). ReadyTriangle binds the program for `fragmentSource` (through
-   * the window's shader cache; `texCoord` in [0,1] as for the quads) and
-   * returns it, or nullptr when it does not compile; DrawTriangle draws,
-   * with `vao` an empty vertex array created on first use (release it with
-   * ReleaseTriangle).
-   */
-  static vtkShaderProgram* ReadyTriangle(vtkOpenGLRenderWindow* window, const std::string& fragmentSource);
-  static void DrawTriangle(unsigned int& vao);
-  static void ReleaseTriangle(unsigned int& vao, vtkWindow* window);
-
-  /**
    * Releases a quad made by ReadyQuad and forgets its source, so that the
    * next ReadyQuad builds it again.
    */

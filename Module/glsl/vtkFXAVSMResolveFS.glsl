@@ -24,8 +24,8 @@ in vec2 texCoord;
 //VTK::Output::Dec
 
 // Local arrays are indexed with loop counters only (constant after
-// unrolling), never with values that differ between pixels: llvmpipe got
-// the pixels along a primitive's inner edges wrong when they were.
+// unrolling); list walks take the same number of steps for every pixel
+// (see fxAVSMWalk in vtkFXAVSMLists.glsl).
 float fxZ[FX_NODES + 1];
 float fxTau[FX_NODES + 1];
 int fxCount = 0;
