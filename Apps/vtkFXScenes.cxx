@@ -3,6 +3,7 @@
 #include "vtkFXGBufferPass.h"
 
 #include "vtkActor.h"
+#include "vtkContourFilter.h"
 #include "vtkCamera.h"
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataSet.h"
@@ -56,6 +57,7 @@
 #include "vtkXMLPolyDataReader.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -401,6 +403,45 @@ void SceneGlow(vtkRenderer* renderer)
   }
 }
 
+// A translucent isosurface (a blob of three spheres' summed fields, opacity
+// 0.45) floating over scene:spheres: shadows from translucent data.
+void SceneIsoShadow(vtkRenderer* renderer)
+{
+  SceneSpheres(renderer);
+  vtkNew<vtkImageData> field;
+  const int n = 48;
+  field->SetDimensions(n, n, n);
+  field->SetOrigin(-1.6, 1.2, -1.2);
+  field->SetSpacing(3.2 / (n - 1), 1.4 / (n - 1), 2.4 / (n - 1));
+  field->AllocateScalars(VTK_FLOAT, 1);
+  const double centers[3][3] = { { -0.7, 1.9, 0.0 }, { 0.4, 1.85, 0.3 }, { 0.1, 1.95, -0.5 } };
+  auto* values = static_cast<float*>(field->GetScalarPointer());
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        double p[3];
+        field->GetPoint(field->ComputePointId(std::array<int, 3>{ i, j, k }.data()), p);
+        double v = 0.0;
+        for (const auto& c : centers)
+        {
+          v += 0.12 / (vtkMath::Distance2BetweenPoints(p, c) + 1e-3);
+        }
+        values[(k * n + j) * n + i] = static_cast<float>(v);
+      }
+    }
+  }
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputData(field);
+  contour->SetValue(0, 1.0);
+  contour->Update();
+  auto actor = MakeActor(contour->GetOutput(), 0.3, 0.6, 0.9);
+  actor->GetProperty()->SetOpacity(0.45);
+  renderer->AddActor(actor);
+}
+
 void SceneLights(vtkRenderer* renderer)
 {
   SceneSpheres(renderer);
@@ -578,6 +619,8 @@ bool PopulateBuiltIn(vtkRenderer* renderer, const std::string& name, std::string
     SceneLights(renderer);
   else if (name == "scene:glow")
     SceneGlow(renderer);
+  else if (name == "scene:isoshadow")
+    SceneIsoShadow(renderer);
   else if (name == "scene:pointlights")
     SceneSpheres(renderer); // Populate adds the lights over the ground
   else if (name == "scene:mixed")
@@ -611,7 +654,7 @@ std::vector<std::string> vtkFXScenes::BuiltInSceneNames()
 {
   return { "scene:spheres", "scene:corner", "scene:scalars", "scene:textured", "scene:glyphs",
     "scene:composite", "scene:splats", "scene:lights", "scene:mixed", "scene:volume", "scene:edges",
-    "scene:molecule", "scene:glow", "scene:pointlights" };
+    "scene:molecule", "scene:glow", "scene:pointlights", "scene:isoshadow" };
 }
 
 bool vtkFXScenes::Populate(vtkRenderer* renderer, const std::string& input,

@@ -12,7 +12,8 @@
 //   resolved curves' optical depth never decreases along the ray;
 // - a list buffer far too small: the capture counts what it dropped, the
 //   buffer grows, and the next frame is right;
-// - the same under a perspective camera.
+// - the same under a perspective camera;
+// - nothing translucent: the pass is left out, with its buffers.
 #include "vtkFXAVSMPass.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXTestUtilities.h"
@@ -283,6 +284,14 @@ int TestAVSM(int, char*[])
     actor->SetMapper(mapper);
     const auto v = Visibility(window, MakeAVSM(8, false, false), { actor }, true);
     FX_CHECK(CheckHalves("opacity 1 and 0", v, 0.0, 1e-3) == EXIT_SUCCESS, "");
+  }
+
+  // Nothing translucent: the pass is left out and allocates nothing.
+  {
+    auto idle = MakeAVSM(8, false, true);
+    Visibility(window, idle, {}, true);
+    FX_CHECK(idle->GetCapacity() == 0 && !idle->GetOutputTexture("visibility"),
+      "an AVSM without casters holds " << idle->GetCapacity() << " nodes");
   }
 
   auto avsm = MakeAVSM(8, false, true);

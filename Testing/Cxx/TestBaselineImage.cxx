@@ -5,9 +5,11 @@
 // occlusion: "ssao-raw" (the occlusion view without the blur), "ssao-blur"
 // (the occlusion view after it) and "ssao-lit" (the lit image with it), or
 // toon shading: "toon" (bands and feature lines) and "lines" (lines alone),
-// or "bloom" (the glow of emissive props).
-//   TestBaselineImage INPUT lit|CHANNEL|ssao-raw|ssao-blur|ssao-lit|toon|lines|bloom
+// "bloom" (the glow of emissive props), or "avsm" (shadows of translucent
+// props, vtkFXAVSMPass's defaults).
+//   TestBaselineImage INPUT lit|CHANNEL|ssao-raw|ssao-blur|ssao-lit|toon|lines|bloom|avsm
 //     -V baseline.png -T outdir
+#include "vtkFXAVSMPass.h"
 #include "vtkFXBilateralBlurPass.h"
 #include "vtkFXBloomPass.h"
 #include "vtkFXSSAOPass.h"
@@ -47,6 +49,11 @@ int TestBaselineImage(int argc, char* argv[])
     vtkNew<vtkFXToonPass> toon;
     toon->SetBands(view == "toon");
     pipeline->AddEffect("toon", toon);
+  }
+  else if (view == "avsm")
+  {
+    vtkNew<vtkFXAVSMPass> avsm;
+    pipeline->AddEffect("avsm", avsm);
   }
   else if (view == "bloom")
   {
