@@ -33,7 +33,8 @@ double Median(std::vector<double> v)
   return n == 0 ? -1.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
 }
 
-bool OpenReport(const Options& o, const std::string& name, std::ofstream& csv, std::string& path)
+bool OpenReport(const Options& o, const std::string& name, std::ofstream& csv, std::string& path,
+  const std::string& extraColumns)
 {
   path = o.Out + "/" + name + ".csv";
   csv.open(path.c_str());
@@ -42,7 +43,8 @@ bool OpenReport(const Options& o, const std::string& name, std::ofstream& csv, s
     std::cerr << "vtkfx-bench: cannot write " << path << "\n";
     return false;
   }
-  csv << "scene,method,setting,ms,rmse,psnr\n";
+  csv << "scene,method,setting,ms,rmse,psnr" << (extraColumns.empty() ? "" : ",") << extraColumns
+      << "\n";
   return true;
 }
 

@@ -32,8 +32,10 @@ struct Options
 double Median(std::vector<double> v);
 
 // Opens DIR/<name>.csv with the shared report's header (scene, method,
-// setting, ms, rmse, psnr); false, with a message, when it cannot.
-bool OpenReport(const Options& o, const std::string& name, std::ofstream& csv, std::string& path);
+// setting, ms, rmse, psnr, then `extraColumns`, comma-separated); false,
+// with a message, when it cannot.
+bool OpenReport(const Options& o, const std::string& name, std::ofstream& csv, std::string& path,
+  const std::string& extraColumns = std::string());
 
 // Root-mean-square difference of two byte images, in [0,1] units.
 double RMSE(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b);
@@ -85,6 +87,9 @@ int BenchBloom(const Options& o);
 
 // The "lights" benchmark (vtkFXBenchLights.cxx).
 int BenchLights(const Options& o);
+
+// The "avsm" benchmark (vtkFXBenchAVSM.cxx).
+int BenchAVSM(const Options& o);
 }
 
 #endif

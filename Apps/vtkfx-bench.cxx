@@ -1,10 +1,10 @@
 // vtkfx-bench: error against run time, in one process, for vtkFX's passes
 // next to VTK's own rendering.
 //
-//   vtkfx-bench pipeline|ao|bloom|lights [INPUT ...] [--size WxH] [--frames N] --out DIR
+//   vtkfx-bench pipeline|ao|avsm|bloom|lights [INPUT ...] [--size WxH] [--frames N] --out DIR
 //
-// "ao": see vtkFXBenchAO.cxx; "bloom": vtkFXBenchBloom.cxx; "lights":
-// vtkFXBenchLights.cxx.
+// "ao": see vtkFXBenchAO.cxx; "avsm": vtkFXBenchAVSM.cxx; "bloom":
+// vtkFXBenchBloom.cxx; "lights": vtkFXBenchLights.cxx.
 // "pipeline": the vtkFX pipeline with no effect (which must reproduce VTK's
 // forward render of the same scene), with its default ambient occlusion and
 // with toon shading (bands and feature lines, vtkFXToonPass's defaults),
@@ -151,7 +151,7 @@ int BenchPipeline(const Options& o)
 
 void Usage(std::ostream& os)
 {
-  os << "usage: vtkfx-bench pipeline|ao|bloom|lights [INPUT ...] [--size WxH] [--frames N]\n"
+  os << "usage: vtkfx-bench pipeline|ao|avsm|bloom|lights [INPUT ...] [--size WxH] [--frames N]\n"
         "                   [--falloff binary|cuberoot] [--max-vtk-lights N] --out DIR\n"
         "pipeline: vtkFX without effects, with its default ambient occlusion and with\n"
         "          toon shading against\n"
@@ -163,6 +163,8 @@ void Usage(std::ostream& os)
         "          near-weighted 1 - (t/R)^(1/3) (--falloff cuberoot)\n"
         "bloom:    vtkFX's glow and the seed's direct 21x21 Gaussian against the exact\n"
         "          glow computed on the CPU (default: scene:glow, 1280x720)\n"
+        "avsm:     shadows of translucent props, AVSM-4/8/16 against the exact deep shadow\n"
+        "          map (default: scene:isoshadow and scene:mixed, 1280x720)\n"
         "lights:   frame time with 1 to 1024 point lights, vtkFX against VTK's forward\n"
         "          render (VTK up to --max-vtk-lights, default 256; default INPUT\n"
         "          scene:spheres, 1280x720)\n";
@@ -219,7 +221,7 @@ int main(int argc, char* argv[])
       o.Inputs.push_back(a);
   }
   const bool known = o.Effect == "pipeline" || o.Effect == "ao" || o.Effect == "bloom" ||
-    o.Effect == "lights";
+    o.Effect == "lights" || o.Effect == "avsm";
   if (!known || o.Out.empty())
   {
     std::cerr << "vtkfx-bench: " << (o.Out.empty() ? "--out DIR is required" : "unknown benchmark '" + o.Effect + "'") << "\n";
@@ -253,6 +255,14 @@ int main(int argc, char* argv[])
   if (o.Effect == "lights")
   {
     return BenchLights(o);
+  }
+  if (o.Effect == "avsm")
+  {
+    if (o.Inputs.empty())
+    {
+      o.Inputs = { "scene:isoshadow", "scene:mixed" };
+    }
+    return BenchAVSM(o);
   }
   if (o.Inputs.empty())
   {

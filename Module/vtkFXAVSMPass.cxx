@@ -20,6 +20,7 @@
 #include "vtkRenderState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkTimerLog.h"
 #include "vtkTranslucentPass.h"
 #include "vtk_glew.h"
 
@@ -104,6 +105,12 @@ bool vtkFXAVSMPass::HasWork(const vtkFXSceneInfo& scene)
 vtkTextureObject* vtkFXAVSMPass::GetCurveTexture(int i)
 {
   return (i >= 0 && i < this->GetNumberOfCurveTextures()) ? this->Curves[i].GetPointer() : nullptr;
+}
+
+double vtkFXAVSMPass::GetListBytesPerTexel() const
+{
+  const double texels = double(this->ShadowMapSize) * this->ShadowMapSize;
+  return 8.0 + 16.0 * this->StoredFragments / texels;
 }
 
 unsigned int vtkFXAVSMPass::GetRequiredChannels()
@@ -383,8 +390,17 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
       t, window, this->ShadowMapSize, this->ShadowMapSize, vtkFXRenderUtilities::RGBA32F);
   }
   std::ostringstream defines;
+  // The sorted array holds the longest list of the frame (at least the
+  // nodes' worth of surfaces, at most MaximumListPerTexel, in powers of two
+  // so that few shader variants exist): a software rasteriser pays for
+  // every slot of every texel.
+  int kept = std::max(4, nodes / 2);
+  while (kept < MaximumListPerTexel && kept < this->LongestList)
+  {
+    kept *= 2;
+  }
   defines << StorageExtension << "#define FX_NODES " << nodes << "\n#define FX_MAX_LIST "
-          << MaximumListPerTexel << "\n";
+          << std::min(kept, MaximumListPerTexel) << "\n";
   std::ostringstream output;
   for (int k = 0; k < nodes / 4; ++k)
   {
@@ -396,7 +412,17 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
     output << "  gl_FragData[" << nodes / 4 + k << "] = vec4(fxTau[" << 4 * k << "], fxTau["
            << 4 * k + 1 << "], fxTau[" << 4 * k + 2 << "], fxTau[" << 4 * k + 3 << "]);\n";
   }
+  std::ostringstream empty;
+  for (int k = 0; k < nodes / 4; ++k)
+  {
+    empty << "    gl_FragData[" << k << "] = vec4(3e38);\n";
+  }
+  for (int k = 0; k < nodes / 4; ++k)
+  {
+    empty << "    gl_FragData[" << nodes / 4 + k << "] = vec4(0.0);\n";
+  }
   std::string fs = vtkFXAVSMResolveFS;
+  vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMResolve::Empty", empty.str(), false);
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str(), false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLists::Dec", vtkFXAVSMLists, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMResolve::Output", output.str(), false);
@@ -447,6 +473,12 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
   {
     samplers << "uniform sampler2D fxAVSMCurve" << k << ";\n";
     fetch << "  vec4 curve" << k << " = texelFetch(fxAVSMCurve" << k << ", texel, 0);\n";
+    if (k == 0)
+    {
+      // In front of the texel's first node (or an empty texel, most of the
+      // map): unshadowed, after one read instead of nodes / 2.
+      fetch << "  if (!(depth >= curve0.x))\n  {\n    return 0.0;\n  }\n";
+    }
   }
   for (int i = 0; i < nodes; ++i)
   {
@@ -532,13 +564,33 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
   this->FitLightCamera(ren);
   this->EnsureBuffers();
   this->StoredFragments = this->Capacity;
+  // With Profile on, each phase is finished before the clock reads it.
+  vtkNew<vtkTimerLog> clock;
+  const auto phase = [this, &clock](int which) {
+    if (this->Profile)
+    {
+      glFinish();
+      clock->StopTimer();
+      this->PhaseMilliseconds[which] = 1000.0 * clock->GetElapsedTime();
+      clock->StartTimer();
+    }
+  };
+  std::fill(this->PhaseMilliseconds, this->PhaseMilliseconds + 3, 0.0);
+  if (this->Profile)
+  {
+    glFinish();
+    clock->StartTimer();
+  }
   this->Capture(s, window);
   this->StoredFragments = std::min<vtkIdType>(this->StoredFragments, this->CapturedFragments);
+  phase(0);
   if (!this->Exact)
   {
     this->Resolve(window);
   }
+  phase(1);
   this->LookUp(ren, window);
+  phase(2);
   for (GLuint i = 0; i < NumberOfBuffers; ++i)
   {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);

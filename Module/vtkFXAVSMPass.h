@@ -126,6 +126,32 @@ public:
   vtkGetMacro(LightIndex, int);
   ///@}
 
+  /**
+   * Measure the capture, resolve and look-up of each frame with a
+   * glFinish between them (default off: it stalls the pipeline; for
+   * benchmarks).
+   */
+  vtkSetMacro(Profile, bool);
+  vtkGetMacro(Profile, bool);
+  vtkBooleanMacro(Profile, bool);
+
+  /**
+   * Milliseconds of the last frame's capture (0), resolve (1) and look-up
+   * (2), with Profile on; 0 otherwise.
+   */
+  double GetPhaseMilliseconds(int phase) const
+  {
+    return (phase >= 0 && phase < 3) ? this->PhaseMilliseconds[phase] : 0.0;
+  }
+
+  /**
+   * Bytes per shadow-map texel the curves keep between frames (8 x nodes;
+   * 0 in Exact mode), and, of the last capture, the list bytes per texel
+   * (16 per fragment stored, plus 8 for the head and count).
+   */
+  int GetCurveBytesPerTexel() const { return this->Exact ? 0 : 8 * this->Nodes(); }
+  double GetListBytesPerTexel() const;
+
   ///@{
   /**
    * The AVSM curves of the last frame (for tests and debugging): textures
@@ -179,6 +205,8 @@ protected:
   vtkIdType StoredFragments = 0; // nodes this frame's lists hold
   int LightIndex = -1;
   bool WarnedOverflow = false;
+  bool Profile = false;
+  double PhaseMilliseconds[3] = { 0.0, 0.0, 0.0 };
   bool WarnedUnsupported = false;
 
   // This frame's casters and casting light (from HasWork).

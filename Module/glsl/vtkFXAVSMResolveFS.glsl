@@ -9,7 +9,8 @@
 // curve exp(-tau) least (the triangle it makes with its neighbours) goes.
 // A surface is a segment of zero thickness: a vertical step, so up to
 // FX_NODES / 2 surfaces per texel are kept exactly.
-// Order independence: the FX_MAX_LIST nearest fragments (by depth, then
+// Order independence: the FX_MAX_LIST (the frame's longest list, up to 64)
+// nearest fragments (by depth, then
 // optical depth) are kept sorted and inserted in that order, so the curve does not depend
 // on the order fragments arrived in; fragments beyond them are summed into
 // one last segment from the nearest to the farthest of them (exact past
@@ -89,6 +90,13 @@ void main()
     discard; // never: keeps texCoord in the program
   }
   ivec2 texel = ivec2(gl_FragCoord.xy);
+  uint node = fxAVSMHeads[texel.y * fxAVSMSize + texel.x];
+  if (node == fxAVSMEnd)
+  {
+    // Nothing here (most of a map): an empty curve, at once.
+    //VTK::FXAVSMResolve::Empty
+    return;
+  }
   // The FX_MAX_LIST nearest fragments, kept sorted as they come (each new
   // one bubbles to its place; what falls off the end is the farthest):
   // empty slots hold depth 3e38.
@@ -103,7 +111,6 @@ void main()
   float droppedTau = 0.0;
   float droppedNear = 3e38;
   float droppedFar = -3e38;
-  uint node = fxAVSMHeads[texel.y * fxAVSMSize + texel.x];
   for (int step = 0; step < fxAVSMWalk; ++step)
   {
     if (node == fxAVSMEnd || node >= uint(fxAVSMCapacity))
