@@ -3,6 +3,7 @@
 #include "vtkFXGBufferPass.h"
 
 #include "vtkActor.h"
+#include "vtkAppendPolyData.h"
 #include "vtkContourFilter.h"
 #include "vtkCamera.h"
 #include "vtkCompositeDataDisplayAttributes.h"
@@ -442,6 +443,32 @@ void SceneIsoShadow(vtkRenderer* renderer)
   renderer->AddActor(actor);
 }
 
+// A cloud of 240 small translucent spheres (opacity 0.3) over
+// scene:spheres: particle-like casters, up to some 20 surfaces along a
+// light ray, where the AVSM's compression shows.
+void SceneCloud(vtkRenderer* renderer)
+{
+  SceneSpheres(renderer);
+  vtkNew<vtkAppendPolyData> cloud;
+  unsigned int state = 2024u; // a fixed sequence: every run builds the same cloud
+  const auto random = [&state]() {
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) / 16777216.0;
+  };
+  for (int i = 0; i < 240; ++i)
+  {
+    // Denser towards the middle: the sum of two uniform numbers.
+    const double x = 1.8 * (random() + random() - 1.0);
+    const double y = 1.6 + 0.5 * (random() + random() - 1.0);
+    const double z = 1.4 * (random() + random() - 1.0);
+    cloud->AddInputData(Sphere(x, y, z, 0.09 + 0.06 * random(), 8));
+  }
+  cloud->Update();
+  auto actor = MakeActor(cloud->GetOutput(), 0.85, 0.88, 0.95);
+  actor->GetProperty()->SetOpacity(0.3);
+  renderer->AddActor(actor);
+}
+
 void SceneLights(vtkRenderer* renderer)
 {
   SceneSpheres(renderer);
@@ -621,6 +648,8 @@ bool PopulateBuiltIn(vtkRenderer* renderer, const std::string& name, std::string
     SceneGlow(renderer);
   else if (name == "scene:isoshadow")
     SceneIsoShadow(renderer);
+  else if (name == "scene:cloud")
+    SceneCloud(renderer);
   else if (name == "scene:pointlights")
     SceneSpheres(renderer); // Populate adds the lights over the ground
   else if (name == "scene:mixed")
@@ -654,7 +683,7 @@ std::vector<std::string> vtkFXScenes::BuiltInSceneNames()
 {
   return { "scene:spheres", "scene:corner", "scene:scalars", "scene:textured", "scene:glyphs",
     "scene:composite", "scene:splats", "scene:lights", "scene:mixed", "scene:volume", "scene:edges",
-    "scene:molecule", "scene:glow", "scene:pointlights", "scene:isoshadow" };
+    "scene:molecule", "scene:glow", "scene:pointlights", "scene:isoshadow", "scene:cloud" };
 }
 
 bool vtkFXScenes::Populate(vtkRenderer* renderer, const std::string& input,
