@@ -1,9 +1,11 @@
 // vtkfx-bench avsm: shadows of translucent props, vtkFXAVSMPass with 4, 8
-// and 16 nodes against its exact mode (the uncompressed deep shadow map,
-// every fragment of every texel), as transmittance RMSE against time.
+// and 16 nodes and an opacity shadow map of the same memory as 4 and 8
+// nodes (8 and 16 regular slices), against its exact mode (the
+// uncompressed deep shadow map, every fragment of every texel), as
+// transmittance RMSE against time.
 //
-// One window per method, frames interleaved: no shadows, AVSM-4, -8, -16
-// and exact, each with a 1024 x 1024 map (the AVSM issue's setting). The
+// One window per method, frames interleaved: no shadows, AVSM-4, -8, -16,
+// the two opacity shadow maps and exact, each with a 1024 x 1024 map (the AVSM issue's setting). The
 // error is the RMSE of the light's transmittance at the opaque receivers
 // (the pass's "visibility" output) against the exact mode's; the PSNR is
 // the image's against the exact mode's image. The shadow part's time is the
@@ -41,6 +43,7 @@ struct Method
   std::string Setting;
   int Nodes; // 0: no shadows
   bool Exact;
+  int Representation; // vtkFXAVSMPass::Representation
   vtkSmartPointer<vtkRenderWindow> Window;
   vtkSmartPointer<vtkFXAVSMPass> AVSM;
   std::vector<double> FrameMs;
@@ -82,9 +85,14 @@ int BenchAVSM(const Options& o)
   {
     return 1;
   }
-  std::vector<Method> methods = { { "vtkfx-none", "no shadows", 0, false },
-    { "vtkfx-avsm", "4 nodes", 4, false }, { "vtkfx-avsm", "8 nodes", 8, false },
-    { "vtkfx-avsm", "16 nodes", 16, false }, { "vtkfx-exact", "all fragments", 8, true } };
+  const int nodes = vtkFXAVSMPass::AdaptiveNodes;
+  const int slices = vtkFXAVSMPass::RegularSlices;
+  std::vector<Method> methods = { { "vtkfx-none", "no shadows", 0, false, nodes },
+    { "vtkfx-avsm", "4 nodes", 4, false, nodes }, { "vtkfx-avsm", "8 nodes", 8, false, nodes },
+    { "vtkfx-avsm", "16 nodes", 16, false, nodes },
+    { "opacity-shadow-map", "8 slices (memory of 4 nodes)", 4, false, slices },
+    { "opacity-shadow-map", "16 slices (memory of 8 nodes)", 8, false, slices },
+    { "vtkfx-exact", "all fragments", 8, true, nodes } };
   for (auto& m : methods)
   {
     m.Window = MakeWindow(o);
@@ -109,6 +117,7 @@ int BenchAVSM(const Options& o)
         m.AVSM->SetShadowMapSize(1024);
         m.AVSM->SetNumberOfNodes(m.Nodes);
         m.AVSM->SetExact(m.Exact);
+        m.AVSM->SetRepresentation(m.Representation);
         pipeline->AddEffect("avsm", m.AVSM);
       }
       renderer->SetPass(pipeline);
@@ -168,17 +177,15 @@ int BenchAVSM(const Options& o)
                 << rmse << ", PSNR " << std::setprecision(2) << psnr << " dB; capture " << capture
                 << ", resolve " << resolve << ", look-up " << lookup << " ms; " << curveBytes
                 << " B/texel kept, " << listBytes << " B/texel of lists" << std::endl;
-      if (m.AVSM && !m.Exact)
+      if (m.AVSM)
       {
-        points.push_back({ 0, m.Setting, ms, rmse });
-      }
-      else if (m.AVSM)
-      {
-        points.push_back({ 1, m.Setting, ms, rmse });
+        const int family = m.Exact ? 2 : m.Representation == slices ? 1 : 0;
+        points.push_back({ family, m.Setting, ms, rmse });
       }
     }
     const std::string tag = FileTag(input);
     WritePointsPlot({ { "vtkFX AVSM", 200, 60, 30, vtkPlotPoints::CIRCLE },
+                      { "opacity shadow map (equal memory)", 40, 150, 60, vtkPlotPoints::DIAMOND },
                       { "exact deep shadow map", 30, 80, 200, vtkPlotPoints::SQUARE } },
       points, tag + ": translucent shadows, error against time",
       "shadow time (ms per frame, frame minus frame without shadows)",

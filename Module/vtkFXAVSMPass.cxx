@@ -12,6 +12,7 @@
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkProp.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -211,6 +212,31 @@ void vtkFXAVSMPass::FitLightCamera(vtkOpenGLRenderer* ren)
   camera->UseExplicitProjectionTransformMatrixOn();
 }
 
+void vtkFXAVSMPass::CasterDepthRange(float range[2]) const
+{
+  // The casters' bounds seen from the light, in light clip depth (0..1).
+  double lo = 1.0, hi = 0.0;
+  vtkNew<vtkMatrix4x4> toClip;
+  vtkMatrix4x4::Multiply4x4(
+    this->LightProjection, this->LightCamera->GetViewTransformMatrix(), toClip);
+  for (vtkProp* prop : this->Casters)
+  {
+    const double* b = prop->GetBounds();
+    for (int corner = 0; b && corner < 8; ++corner)
+    {
+      const double p[4] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)],
+        1.0 };
+      double clip[4];
+      toClip->MultiplyPoint(p, clip);
+      const double depth = 0.5 * clip[2] / clip[3] + 0.5;
+      lo = std::min(lo, depth);
+      hi = std::max(hi, depth);
+    }
+  }
+  range[0] = static_cast<float>(std::max(0.0, std::min(lo, hi)));
+  range[1] = static_cast<float>(std::min(1.0, std::max(lo, hi)));
+}
+
 bool vtkFXAVSMPass::EnsureBuffers()
 {
   const vtkIdType texels = vtkIdType(this->ShadowMapSize) * this->ShadowMapSize;
@@ -399,8 +425,16 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
   {
     kept *= 2;
   }
+  const bool slices = this->Representation == RegularSlices;
   defines << StorageExtension << "#define FX_NODES " << nodes << "\n#define FX_MAX_LIST "
-          << std::min(kept, MaximumListPerTexel) << "\n";
+          << std::min(kept, MaximumListPerTexel) << "\n#define FX_SLICES "
+          << (slices ? 2 * nodes : 0) << "\n";
+  std::ostringstream sliceOutput;
+  for (int k = 0; k < nodes / 2; ++k)
+  {
+    sliceOutput << "  gl_FragData[" << k << "] = vec4(bins[" << 4 * k << "], bins[" << 4 * k + 1
+                << "], bins[" << 4 * k + 2 << "], bins[" << 4 * k + 3 << "]);\n";
+  }
   std::ostringstream output;
   for (int k = 0; k < nodes / 4; ++k)
   {
@@ -412,20 +446,18 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
     output << "  gl_FragData[" << nodes / 4 + k << "] = vec4(fxTau[" << 4 * k << "], fxTau["
            << 4 * k + 1 << "], fxTau[" << 4 * k + 2 << "], fxTau[" << 4 * k + 3 << "]);\n";
   }
-  std::ostringstream empty;
-  for (int k = 0; k < nodes / 4; ++k)
+  std::ostringstream empty; // no fragment: AVSM depths 3e38, optical depths 0
+  for (int k = 0; k < nodes / 2; ++k)
   {
-    empty << "    gl_FragData[" << k << "] = vec4(3e38);\n";
-  }
-  for (int k = 0; k < nodes / 4; ++k)
-  {
-    empty << "    gl_FragData[" << nodes / 4 + k << "] = vec4(0.0);\n";
+    empty << "    gl_FragData[" << k << "] = vec4(" << (k < nodes / 4 && !slices ? "3e38" : "0.0")
+          << ");\n";
   }
   std::string fs = vtkFXAVSMResolveFS;
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMResolve::Empty", empty.str(), false);
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str(), false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLists::Dec", vtkFXAVSMLists, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMResolve::Output", output.str(), false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMResolve::SliceOutput", sliceOutput.str(), false);
 
   vtkOpenGLState* state = window->GetState();
   vtkOpenGLState::ScopedglViewport viewport(state);
@@ -453,6 +485,12 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
   {
     this->BindBuffers(program);
     program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->StoredFragments));
+    if (slices)
+    {
+      float range[2];
+      this->CasterDepthRange(range);
+      program->SetUniform2f("fxSliceRange", range);
+    }
     this->ResolveQuad->Render();
   }
   state->PopFramebufferBindings();
@@ -467,12 +505,18 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
   std::ostringstream defines;
   defines << (this->Exact ? StorageExtension : "//VTK::System::Dec\n") << "#define FX_EXACT "
           << (this->Exact ? 1 : 0) << "\n#define FX_BILINEAR " << (this->Bilinear ? 1 : 0)
-          << "\n#define FX_NODES " << nodes << "\n";
-  std::ostringstream samplers, fetch;
+          << "\n#define FX_NODES " << nodes << "\n#define FX_SLICES "
+          << (this->Representation == RegularSlices && !this->Exact ? 2 * nodes : 0) << "\n";
+  std::ostringstream samplers, fetch, sliceFetch;
   for (int k = 0; k < nodes / 2; ++k)
   {
     samplers << "uniform sampler2D fxAVSMCurve" << k << ";\n";
     fetch << "  vec4 curve" << k << " = texelFetch(fxAVSMCurve" << k << ", texel, 0);\n";
+    sliceFetch << "  vec4 curve" << k << " = texelFetch(fxAVSMCurve" << k << ", texel, 0);\n";
+    for (int i = 0; i < 4; ++i)
+    {
+      sliceFetch << "  c[" << 4 * k + i << "] = curve" << k << "." << "xyzw"[i] << ";\n";
+    }
     if (k == 0)
     {
       // In front of the texel's first node (or an empty texel, most of the
@@ -491,6 +535,7 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLists::Dec", vtkFXAVSMLists, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLookup::Samplers", samplers.str(), false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLookup::Fetch", fetch.str(), false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLookup::SliceFetch", sliceFetch.str(), false);
 
   vtkFXRenderUtilities::RenderTargetScope target(window, this->LookUpFrameBuffer, this->Visibility);
   vtkShaderProgram* program =
@@ -522,6 +567,12 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
   else
   {
     program->SetUniformi("fxAVSMSize", this->ShadowMapSize);
+    if (this->Representation == RegularSlices)
+    {
+      float range[2];
+      this->CasterDepthRange(range);
+      program->SetUniform2f("fxSliceRange", range);
+    }
     for (int k = 0; k < nodes / 2; ++k)
     {
       this->Curves[k]->Activate();
@@ -631,6 +682,8 @@ void vtkFXAVSMPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShadowMapSize: " << this->ShadowMapSize << "\n";
   os << indent << "NumberOfNodes: " << this->NumberOfNodes << " (" << this->Nodes() << " used)\n";
   os << indent << "Exact: " << this->Exact << "\n";
+  os << indent << "Representation: "
+     << (this->Representation == RegularSlices ? "RegularSlices" : "AdaptiveNodes") << "\n";
   os << indent << "Bilinear: " << this->Bilinear << "\n";
   os << indent << "Bias: " << this->Bias << "\n";
   os << indent << "InitialNodesPerTexel: " << this->InitialNodesPerTexel << "\n";

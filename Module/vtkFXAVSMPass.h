@@ -85,8 +85,22 @@ public:
   vtkGetMacro(NumberOfNodes, int);
 
   /**
+   * What the lists are resolved into: AdaptiveNodes (default, the AVSM
+   * curves of NumberOfNodes nodes) or RegularSlices, an opacity shadow map
+   * (Kim and Neumann 2001) of 2 x NumberOfNodes regular slices of the
+   * casters' depth range: the same bytes per texel, for comparison.
+   */
+  enum Representation
+  {
+    AdaptiveNodes = 0,
+    RegularSlices = 1
+  };
+  vtkSetClampMacro(Representation, int, AdaptiveNodes, RegularSlices);
+  vtkGetMacro(Representation, int);
+
+  /**
    * Look up the uncompressed lists (the exact deep shadow map) instead of
-   * the AVSM curves (default off).
+   * the resolved curves (default off).
    */
   vtkSetMacro(Exact, bool);
   vtkGetMacro(Exact, bool);
@@ -187,6 +201,7 @@ protected:
 
   int Nodes() const; // NumberOfNodes rounded to 4, 8 or 16
   void FitLightCamera(vtkOpenGLRenderer* ren);
+  void CasterDepthRange(float range[2]) const;
   bool EnsureBuffers();
   void BindBuffers(vtkShaderProgram* program);
   void Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
@@ -196,6 +211,7 @@ protected:
   int ShadowMapSize = 512;
   int NumberOfNodes = 8;
   bool Exact = false;
+  int Representation = AdaptiveNodes;
   bool Bilinear = true;
   double Bias = 1e-3;
   int InitialNodesPerTexel = 4;

@@ -7,6 +7,8 @@
 // - FX_EXACT 0: the AVSM curve of the resolve (FX_NODES nodes, optical
 //   depth linear between them; before the first node 0, past the last its
 //   value);
+// - FX_SLICES > 0: an opacity shadow map of FX_SLICES slices (for
+//   comparison);
 // - FX_EXACT 1: the deep shadow map itself, the sum of the optical depths
 //   of every fragment of the texel's list in front of the receiver: exact,
 //   whatever the order or number of fragments.
@@ -21,6 +23,7 @@ uniform sampler2D fxLinearDepth;
 uniform vec3 fxRayOrigin[3];
 uniform vec3 fxRayDirection[3];
 uniform mat4 fxViewToLight;
+uniform vec2 fxSliceRange; // FX_SLICES
 uniform float fxBias; // light clip depth (0..1)
 #if FX_EXACT
 //VTK::FXAVSMLists::Dec
@@ -48,6 +51,25 @@ float fxOpticalDepth(ivec2 texel, float depth)
     }
   }
   return sum;
+#elif FX_SLICES
+  // Opacity shadow map: the optical depth accumulated at each slice's far
+  // side, linear in between (0 at the near side of the first).
+  float c[FX_SLICES];
+  //VTK::FXAVSMLookup::SliceFetch
+  float x = (depth - fxSliceRange.x) / max(fxSliceRange.y - fxSliceRange.x, 1e-30) * float(FX_SLICES);
+  if (!(x > 0.0))
+  {
+    return 0.0;
+  }
+  float result = c[FX_SLICES - 1];
+  for (int k = 0; k < FX_SLICES; ++k)
+  {
+    if (x >= float(k) && x < float(k + 1))
+    {
+      result = mix(k == 0 ? 0.0 : c[k == 0 ? 0 : k - 1], c[k], x - float(k));
+    }
+  }
+  return result;
 #else
   float z[FX_NODES];
   float tau[FX_NODES];

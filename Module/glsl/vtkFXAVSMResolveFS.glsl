@@ -21,6 +21,7 @@
 //VTK::FXAVSMLists::Dec
 
 in vec2 texCoord;
+uniform vec2 fxSliceRange; // FX_SLICES: the casters' light depths, near and far
 
 //VTK::Output::Dec
 
@@ -97,6 +98,40 @@ void main()
     //VTK::FXAVSMResolve::Empty
     return;
   }
+#if FX_SLICES
+  // An opacity shadow map instead (Kim and Neumann, "Opacity Shadow Maps",
+  // EGWR 2001), for comparison at equal memory: FX_SLICES regular slices
+  // of the casters' light depth range fxSliceRange, each holding the
+  // optical depth accumulated up to its far side. Order independent: sums.
+  float bins[FX_SLICES];
+  for (int k = 0; k < FX_SLICES; ++k)
+  {
+    bins[k] = 0.0;
+  }
+  for (int step = 0; step < fxAVSMWalk; ++step)
+  {
+    if (node != fxAVSMEnd && node < uint(fxAVSMCapacity))
+    {
+      float x = (fxAVSMNodes[node].depth - fxSliceRange.x) /
+        max(fxSliceRange.y - fxSliceRange.x, 1e-30) * float(FX_SLICES);
+      int slice = int(clamp(floor(x), 0.0, float(FX_SLICES - 1)));
+      float t = fxAVSMNodes[node].opticalDepth;
+      node = fxAVSMNodes[node].next;
+      for (int k = 0; k < FX_SLICES; ++k)
+      {
+        bins[k] = k == slice ? min(bins[k] + t, 1e4) : bins[k];
+      }
+    }
+  }
+  float accumulated = 0.0;
+  for (int k = 0; k < FX_SLICES; ++k)
+  {
+    accumulated = min(accumulated + bins[k], 1e4);
+    bins[k] = accumulated;
+  }
+  //VTK::FXAVSMResolve::SliceOutput
+  return;
+#endif
   // The FX_MAX_LIST nearest fragments, kept sorted as they come (each new
   // one bubbles to its place; what falls off the end is the farthest):
   // empty slots hold depth 3e38.

@@ -5,8 +5,9 @@
 // light's transmittance at each receiver) is read back:
 // - one slab of opacity a: 1 - a under it, 1 elsewhere (within 1e-3), for
 //   the AVSM curves (point and bilinear look-ups) and the exact lists;
-// - two slabs: the product; four slabs: AVSM-16 (room for 8 surfaces)
-//   equals the exact mode;
+// - two slabs: the product (also through the opacity shadow map of the
+//   comparison); four slabs: AVSM-16 (room for 8 surfaces) equals the
+//   exact mode;
 // - opacity exactly 0 casts nothing and exactly 1 blocks all;
 // - 1000 stacked layers of opacity 0.9999: finite, >= 0 (and 0), and the
 //   resolved curves' optical depth never decreases along the ray;
@@ -167,6 +168,16 @@ int TestAVSM(int, char*[])
     FX_CHECK(CheckHalves(two.c_str(),
                Visibility(window, avsm, { Quad(-10, 0, 1, 0.3), Quad(-10, 0, 2, 0.5) }, true),
                0.35, 1e-3) == EXIT_SUCCESS, two);
+  }
+
+  // The opacity shadow map of the comparison: receivers past the casters'
+  // depth range get the whole sum, exactly.
+  {
+    auto osm = MakeAVSM(8, false, true);
+    osm->SetRepresentation(vtkFXAVSMPass::RegularSlices);
+    FX_CHECK(CheckHalves("opacity shadow map, slabs of 0.3 and 0.5",
+               Visibility(window, osm, { Quad(-10, 0, 1, 0.3), Quad(-10, 0, 2, 0.5) }, true), 0.35,
+               1e-3) == EXIT_SUCCESS, "");
   }
 
   // Four surfaces: 8 nodes, which AVSM-16 keeps exactly.
