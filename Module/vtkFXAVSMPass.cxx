@@ -62,9 +62,11 @@ bool Contains(const std::string& s, const char* what)
   return s.find(what) != std::string::npos;
 }
 
+// Storage buffers, their clears, program-interface queries and memory
+// barriers: all of OpenGL 4.3 (llvmpipe has 4.5).
 bool StorageBuffersSupported()
 {
-  return glewIsSupported("GL_VERSION_4_3") || glewIsSupported("GL_ARB_shader_storage_buffer_object");
+  return glewIsSupported("GL_VERSION_4_3");
 }
 }
 
@@ -222,15 +224,11 @@ void vtkFXAVSMPass::CasterDepthRange(float range[2]) const
   for (vtkProp* prop : this->Casters)
   {
     const double* b = prop->GetBounds();
-    for (int corner = 0; b && corner < 8; ++corner)
+    double ndcMin[3], ndcMax[3];
+    if (b && vtkFXRenderUtilities::ProjectBox(b, &toClip->Element[0][0], ndcMin, ndcMax) == 0)
     {
-      const double p[4] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)],
-        1.0 };
-      double clip[4];
-      toClip->MultiplyPoint(p, clip);
-      const double depth = 0.5 * clip[2] / clip[3] + 0.5;
-      lo = std::min(lo, depth);
-      hi = std::max(hi, depth);
+      lo = std::min(lo, 0.5 * ndcMin[2] + 0.5);
+      hi = std::max(hi, 0.5 * ndcMax[2] + 0.5);
     }
   }
   range[0] = static_cast<float>(std::max(0.0, std::min(lo, hi)));
@@ -605,8 +603,8 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
   {
     if (!this->WarnedUnsupported)
     {
-      vtkErrorMacro("AVSM needs shader storage buffers (OpenGL 4.3 or "
-                    "ARB_shader_storage_buffer_object); translucent props cast no shadows.");
+      vtkErrorMacro("AVSM needs OpenGL 4.3 (shader storage buffers); translucent props "
+                    "cast no shadows.");
       this->WarnedUnsupported = true;
     }
     vtkFXRenderUtilities::Release(this->Visibility, window);
@@ -639,9 +637,22 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
   {
     this->Resolve(window);
   }
+  else
+  {
+    // The lists are the map: no curves are kept.
+    for (auto& t : this->Curves)
+    {
+      vtkFXRenderUtilities::Release(t, window);
+    }
+    this->Curves.clear();
+    vtkFXRenderUtilities::Release(this->ResolveFrameBuffer, window);
+  }
   phase(1);
   this->LookUp(ren, window);
   phase(2);
+  // The casters and the light are the frame's (HasWork sets them again).
+  this->Casters.clear();
+  this->CastingLight = nullptr;
   for (GLuint i = 0; i < NumberOfBuffers; ++i)
   {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);

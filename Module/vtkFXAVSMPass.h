@@ -8,7 +8,7 @@
  * the light through an orthographic view fitted to the visible props'
  * bounds (ShadowMapSize texels square). Every fragment, instead of being
  * drawn, joins its texel's linked list (shader storage buffers and an
- * atomic counter: GL 4.3 or ARB_shader_storage_buffer_object) as a light-
+ * atomic counter: OpenGL 4.3) as a light-
  * space depth and an optical depth -ln(1 - opacity), so that products of
  * transmittances are sums and never underflow. Then, per texel:
  * - AVSM (default): the lists are resolved into curves of NumberOfNodes
@@ -28,8 +28,9 @@
  * that light's contribution (LightVisibility hook).
  *
  * Work: some prop is translucent, some is opaque (a receiver) and a light
- * can cast; otherwise the pass, its buffers and the G-buffer's linear depth
- * it reads are left out. A list buffer too small for a frame (counted by the
+ * can cast (HasWork finds them, each frame: vtkFXPipelinePass calls it);
+ * otherwise the pass, its buffers and the G-buffer's linear depth it reads
+ * are left out. A list buffer too small for a frame (counted by the
  * atomic counter; no out-of-bounds write happens) drops the extra fragments
  * that frame, warns once and grows for the next one.
  *
@@ -38,7 +39,7 @@
  * captured as the surfaces they draw.
  *
  * Cost: the translucent props drawn once more at ShadowMapSize^2, 16 bytes
- * per captured fragment plus 4 per texel for the list heads; the resolve,
+ * per captured fragment plus 8 per texel (list head and count); the resolve,
  * one pass over the map (NumberOfNodes x 8 bytes per texel kept); the
  * look-up, one full-resolution pass of 1 (4 bilinear) curve reads, or a
  * walk of the lists (Exact).
@@ -168,10 +169,12 @@ public:
 
   ///@{
   /**
-   * The AVSM curves of the last frame (for tests and debugging): textures
-   * 0 .. n/4 - 1 hold the nodes' depths (RGBA32F, four nodes each, light
-   * clip depth 0..1, 3e38 for unused nodes), n/4 .. n/2 - 1 their optical
-   * depths, n = the nodes used. None in Exact mode.
+   * The curves of the last frame (for tests and debugging), n = the nodes
+   * used. AdaptiveNodes: textures 0 .. n/4 - 1 hold the nodes' depths
+   * (RGBA32F, four nodes each, light clip depth 0..1, 3e38 for unused
+   * nodes), n/4 .. n/2 - 1 their optical depths. RegularSlices: the n/2
+   * textures hold the 2n slices' accumulated optical depths, nearest first.
+   * None in Exact mode.
    */
   int GetNumberOfCurveTextures() const { return static_cast<int>(this->Curves.size()); }
   vtkTextureObject* GetCurveTexture(int i);

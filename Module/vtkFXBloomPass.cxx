@@ -124,7 +124,7 @@ double vtkFXBloomPass::GetLevelSigma(int k)
   for (int j = 0; j < k; ++j)
   {
     variance += 1.75 * std::pow(4.0, j);                   // down from level j
-    variance += (0.5 + 1.0 / 6.0) * std::pow(4.0, j + 1); // up from level j + 1
+    variance += 0.4375 * std::pow(4.0, j + 1); // up from level j + 1
   }
   return std::sqrt(variance);
 }
@@ -142,22 +142,10 @@ void vtkFXBloomPass::ComputeGlowRect(vtkRenderer* ren, int width, int height, in
   }
   vtkMatrix4x4* m = ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
     ren->GetTiledAspectRatio(), -1, 1);
-  double lo[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, hi[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  for (int corner = 0; corner < 8; ++corner)
+  double lo[3], hi[3];
+  if (vtkFXRenderUtilities::ProjectBox(this->EmissiveBounds, &m->Element[0][0], lo, hi) > 0)
   {
-    const double p[4] = { this->EmissiveBounds[(corner & 1)], this->EmissiveBounds[2 + ((corner >> 1) & 1)],
-      this->EmissiveBounds[4 + ((corner >> 2) & 1)], 1.0 };
-    double clip[4];
-    m->MultiplyPoint(p, clip);
-    if (!(clip[3] > 0.0))
-    {
-      return; // reaches behind the camera: anywhere
-    }
-    for (int a = 0; a < 2; ++a)
-    {
-      lo[a] = std::min(lo[a], clip[a] / clip[3]);
-      hi[a] = std::max(hi[a], clip[a] / clip[3]);
-    }
+    return; // reaches behind the camera: anywhere
   }
   // The glow reaches 4 deviations of the widest level (its Gaussian is
   // 3e-4 of its peak there) plus the pyramid's texels at the coarsest level.
@@ -188,7 +176,13 @@ void vtkFXBloomPass::LevelRect(int k, int rect[4]) const
 
 vtkTextureObject* vtkFXBloomPass::GetGlowTexture()
 {
-  return this->Levels.empty() ? nullptr : this->Levels[0]->Up.GetPointer();
+  // What AddGlow reads: with one level, its own share is the whole glow.
+  if (this->Levels.empty())
+  {
+    return nullptr;
+  }
+  return this->Levels.size() > 1 ? this->Levels[0]->Up.GetPointer()
+                                  : this->Levels[0]->Down.GetPointer();
 }
 
 vtkShaderProgram* vtkFXBloomPass::ReadyProgram(
@@ -403,6 +397,11 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
   }
   this->ComputeGlowRect(s->GetRenderer(), static_cast<int>(full->GetWidth()),
     static_cast<int>(full->GetHeight()), levels);
+  if (levels == 1 && !this->Levels.empty())
+  {
+    // No step up: an earlier frame's upsampled glow must not linger.
+    vtkFXRenderUtilities::Release(this->Levels[0]->Up, window);
+  }
   if (this->Downsample(window, color, levels))
   {
     this->Upsample(window, levels);

@@ -117,17 +117,19 @@ public:
    * the sum of the variances of its filters. Down, a 13-tap step from a
    * level of texel size 2^j pixels adds 1.75 x 4^j (its taps' spread, 1.5
    * texels^2, plus their 2x2 bilinear boxes, 0.25); up, a tent step from a
-   * level of texel size 2^m adds (1/2 + 1/6) x 4^m (the [1 2 1] tent, plus
-   * the bilinear interpolation's triangle). So level k's glow is close to
-   * a Gaussian of that deviation (2.1, 4.7, 9.6, 19.4, ... pixels), and
-   * the whole glow close to the mean of those Gaussians: the reference
-   * vtkfx-bench bloom compares with.
+   * level of texel size 2^m adds 0.4375 x 4^m (at twice the resolution the
+   * four half-texel taps weigh the coarse texels 1/8, 4/8, 3/8 per axis,
+   * a quarter of a texel off centre: variance 7/16). So level k's glow is
+   * close to a Gaussian of that deviation (1.9, 4.2, 8.6, 17.2, 34.5, ...
+   * pixels), and the whole glow close to the mean of those Gaussians: the
+   * reference vtkfx-bench bloom compares with.
    */
   static double GetLevelSigma(int k);
 
   /**
-   * Blurred glow of the last frame, at half resolution, before Intensity
-   * (for tests and debugging; nullptr before the first frame).
+   * Blurred glow of the last frame, at half resolution, before Intensity:
+   * what the final step spreads over the image (for tests and debugging;
+   * nullptr before the first frame).
    */
   vtkTextureObject* GetGlowTexture();
 

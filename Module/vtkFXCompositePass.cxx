@@ -337,6 +337,10 @@ int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
   {
     this->BuildLightTiles(ren, spheres);
   }
+  else if (this->LightTiles)
+  {
+    this->LightTiles->ReleaseGraphicsResources(ren->GetRenderWindow());
+  }
   return count;
 }
 

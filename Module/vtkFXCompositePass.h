@@ -23,9 +23,9 @@
  *
  * Cost: one full-screen pass, one texture read per allocated channel and a
  * loop over the lights per pixel (on the light-texture path, over the
- * lights of the pixel's tile, with 5 texel reads per light, and building
- * the tiles' lists on the CPU), plus what the contributing effects' code
- * costs.
+ * lights of the pixel's tile, with 5 texel reads per light, 4 without
+ * culling, and building the tiles' lists on the CPU), plus what the
+ * contributing effects' code costs.
  *
  * Effects contribute code at the composite's hook points (declarations,
  * per-light visibility, ambient visibility, final colour; see
@@ -118,8 +118,9 @@ public:
    * where, by VTK's attenuation, it can add less than LightCutoff to a
    * colour channel (linear units, 0..1, default 1/512: under half a level
    * of an 8-bit image). 0 keeps every light in every tile (no culling).
-   * Lights VTK does not attenuate (attenuation 1, 0, 0, VTK's default) and
-   * directional lights reach every tile whatever the cutoff.
+   * Directional lights reach every tile; so do positional lights VTK does
+   * not attenuate (attenuation 1, 0, 0, VTK's default), unless such a
+   * light is dimmer than the cutoff everywhere (then it is left out).
    */
   vtkSetClampMacro(LightCutoff, double, 0.0, 1.0);
   vtkGetMacro(LightCutoff, double);

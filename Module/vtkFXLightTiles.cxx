@@ -48,39 +48,31 @@ bool vtkFXLightTiles::CoveredTiles(const Light& light, const double p[16], int b
   {
     return true;
   }
-  double lo[2] = { std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity() };
-  double hi[2] = { -lo[0], -lo[1] };
-  for (int corner = 0; corner < 8; ++corner)
+  const double sphereBox[6] = { light.Center[0] - light.Radius, light.Center[0] + light.Radius,
+    light.Center[1] - light.Radius, light.Center[1] + light.Radius,
+    light.Center[2] - light.Radius, light.Center[2] + light.Radius };
+  double lo[3], hi[3];
+  const int behind = vtkFXRenderUtilities::ProjectBox(sphereBox, p, lo, hi);
+  if (behind == 8)
   {
-    double v[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      v[a] = light.Center[a] + ((corner >> a) & 1 ? light.Radius : -light.Radius);
-    }
-    const double clip[4] = { p[0] * v[0] + p[1] * v[1] + p[2] * v[2] + p[3],
-      p[4] * v[0] + p[5] * v[1] + p[6] * v[2] + p[7], 0.0,
-      p[12] * v[0] + p[13] * v[1] + p[14] * v[2] + p[15] };
-    if (!(clip[3] > 1e-12 * std::fabs(light.Radius)))
-    {
-      return true; // the sphere reaches the camera's plane: anywhere on screen
-    }
-    for (int a = 0; a < 2; ++a)
-    {
-      lo[a] = std::min(lo[a], clip[a] / clip[3]);
-      hi[a] = std::max(hi[a], clip[a] / clip[3]);
-    }
+    return false; // wholly behind the camera: it reaches no visible surface
+  }
+  if (behind > 0)
+  {
+    return true; // it reaches the camera's plane: anywhere on screen
   }
   if (lo[0] > 1.0 || lo[1] > 1.0 || hi[0] < -1.0 || hi[1] < -1.0)
   {
     return false; // off screen
   }
   const int tiles[2] = { this->TilesX, this->TilesY };
+  const int pixels[2] = { this->Width, this->Height };
   for (int a = 0; a < 2; ++a)
   {
-    const double size = static_cast<double>(tiles[a]) * TileSize;
-    // Pixels from the viewport's corner; tiles past the last are clamped.
-    const double first = std::floor((0.5 * lo[a] + 0.5) * size / TileSize);
-    const double last = std::floor((0.5 * hi[a] + 0.5) * size / TileSize);
+    // Pixels from the viewport's corner (the viewport's own size, not the
+    // tiles' rounded-up one); tiles past the last are clamped.
+    const double first = std::floor((0.5 * lo[a] + 0.5) * pixels[a] / TileSize);
+    const double last = std::floor((0.5 * hi[a] + 0.5) * pixels[a] / TileSize);
     box[a] = static_cast<int>(std::max(0.0, std::min(first, tiles[a] - 1.0)));
     box[a + 2] = static_cast<int>(std::max(0.0, std::min(last, tiles[a] - 1.0)));
   }
@@ -90,6 +82,8 @@ bool vtkFXLightTiles::CoveredTiles(const Light& light, const double p[16], int b
 void vtkFXLightTiles::Build(
   const std::vector<Light>& lights, const double projection[16], int width, int height)
 {
+  this->Width = std::max(1, width);
+  this->Height = std::max(1, height);
   this->TilesX = std::max(1, (width + TileSize - 1) / TileSize);
   this->TilesY = std::max(1, (height + TileSize - 1) / TileSize);
   const size_t tiles = static_cast<size_t>(this->TilesX) * this->TilesY;

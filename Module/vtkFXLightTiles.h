@@ -9,9 +9,10 @@
  * sphere of influence ends where VTK's attenuation, 1 / (a0 + a1 d + a2 d^2),
  * brings the most it can add to a colour (twice its intensity times
  * colour: diffuse and specular coefficients at most 1 each) below a
- * cutoff (Range); a light that VTK never attenuates (a1 = a2 = 0), a
- * directional light, and any light when the cutoff is 0 go into every
- * tile. The composite then loops per pixel over its tile's list only, so
+ * cutoff (Range); a light that VTK never attenuates (a1 = a2 = 0) and
+ * is brighter than the cutoff, a directional light, and any light when the
+ * cutoff is 0 go into every tile; a light dimmer than the cutoff
+ * everywhere goes into none, and so does one wholly behind the camera. The composite then loops per pixel over its tile's list only, so
  * the cost grows with the lights that reach a pixel, not with the lights
  * in the scene; the error is below the cutoff per light and channel.
  *
@@ -88,6 +89,8 @@ private:
   // The tiles (inclusive ranges) a sphere covers; false when none.
   bool CoveredTiles(const Light& light, const double projection[16], int box[4]) const;
 
+  int Width = 0; // the viewport's pixels
+  int Height = 0;
   int TilesX = 0;
   int TilesY = 0;
   std::vector<float> HeaderData; // (first, count) per tile

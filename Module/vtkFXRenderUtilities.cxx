@@ -13,6 +13,8 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
+
 vtkStandardNewMacro(vtkFXRenderUtilities);
 
 namespace
@@ -159,6 +161,35 @@ vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow
 vtkFXRenderUtilities::RenderTargetScope::~RenderTargetScope()
 {
   this->State->PopFramebufferBindings();
+}
+
+int vtkFXRenderUtilities::ProjectBox(
+  const double box[6], const double m[16], double ndcMin[3], double ndcMax[3])
+{
+  int behind = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    ndcMin[a] = VTK_DOUBLE_MAX;
+    ndcMax[a] = -VTK_DOUBLE_MAX;
+  }
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double p[3] = { box[corner & 1], box[2 + ((corner >> 1) & 1)],
+      box[4 + ((corner >> 2) & 1)] };
+    const double w = m[12] * p[0] + m[13] * p[1] + m[14] * p[2] + m[15];
+    if (!(w > 0.0))
+    {
+      ++behind;
+      continue;
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      const double c = m[4 * a] * p[0] + m[4 * a + 1] * p[1] + m[4 * a + 2] * p[2] + m[4 * a + 3];
+      ndcMin[a] = std::min(ndcMin[a], c / w);
+      ndcMax[a] = std::max(ndcMax[a], c / w);
+    }
+  }
+  return behind;
 }
 
 vtkFXRenderUtilities::BlendOntoScope::BlendOntoScope(vtkOpenGLRenderWindow* window,

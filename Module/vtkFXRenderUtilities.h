@@ -123,6 +123,18 @@ public:
   static void ComputeFrustumRay(vtkRenderer* renderer, double origin[3][3], double direction[3][3]);
 
   /**
+   * Projects the 8 corners of the axis-aligned box `box` (xmin, xmax,
+   * ymin, ymax, zmin, zmax) by `toClip` (row-major, to clip coordinates)
+   * and returns the normalized device coordinates' range of those in front
+   * of the camera (w > 0) in ndcMin / ndcMax (x, y, z). Returns how many
+   * corners are not in front: 0, every corner projected; 8, the box is
+   * wholly behind the camera; in between, it reaches the camera's plane and
+   * may cover any part of the screen.
+   */
+  static int ProjectBox(const double box[6], const double toClip[16], double ndcMin[3],
+    double ndcMax[3]);
+
+  /**
    * While it lives, draws go to `target` (the only colour attachment of
    * `framebuffer`, created on first use) over its whole size, with depth
    * test, blending and scissor off. The previous framebuffer, viewport and

@@ -2,8 +2,10 @@
 // vtkFXBloomUpsampleFS: one step up the bloom's pyramid (Jimenez 2014): a
 // 3x3 tent ([1 2 1] x [1 2 1] / 16) of the coarser level, added to this
 // level's own share. The tent is read as four bilinear taps half a texel
-// off diagonally: each averages a 2x2 block, and the four blocks overlap
-// into exactly the [1 2 1] x [1 2 1] weights (4 reads instead of 9):
+// off diagonally: at a coarse texel's centre they overlap into exactly the
+// [1 2 1] x [1 2 1] weights (4 reads instead of 9); at the fine texels, a
+// quarter of a coarse texel off centre, into [1 4 3] / 8 per axis, the
+// same smoothing (variance 7/16 of a coarse texel^2), still normalised:
 //   up_k = w_k down_k + tent(up_k+1),
 // so the full-resolution result is the sum over levels of w_k times level
 // k brought up, and with sum w_k = 1 its total equals the source's total
