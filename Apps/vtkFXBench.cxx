@@ -11,6 +11,7 @@
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
 #include "vtkPlot.h"
+#include "vtkPixelBufferObject.h"
 #include "vtkPlotPoints.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -18,6 +19,7 @@
 #include "vtkTable.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
+#include "vtkTextureObject.h"
 #include "vtkTimerLog.h"
 
 #include <algorithm>
@@ -57,6 +59,36 @@ double RMSE(const std::vector<unsigned char>& a, const std::vector<unsigned char
     sum += d * d;
   }
   return a.empty() ? 0.0 : std::sqrt(sum / a.size());
+}
+
+std::vector<float> Download(vtkRenderWindow* window, vtkTextureObject* texture, int components)
+{
+  std::vector<float> values;
+  if (!texture)
+  {
+    return values;
+  }
+  window->MakeCurrent();
+  vtkPixelBufferObject* pbo = texture->Download();
+  if (!pbo)
+  {
+    return values;
+  }
+  const size_t n = static_cast<size_t>(texture->GetWidth()) * texture->GetHeight() * components;
+  values.resize(n);
+  const void* data = pbo->MapPackedBuffer();
+  if (pbo->GetType() == VTK_FLOAT)
+  {
+    std::copy_n(static_cast<const float*>(data), n, values.begin());
+  }
+  else
+  {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    std::transform(bytes, bytes + n, values.begin(), [](unsigned char b) { return b / 255.0f; });
+  }
+  pbo->UnmapPackedBuffer();
+  pbo->Delete();
+  return values;
 }
 
 double TimedRender(vtkRenderWindow* window, vtkTimerLog* timer)

@@ -10,6 +10,7 @@
 #include <vector>
 
 class vtkImageData;
+class vtkTextureObject;
 class vtkRenderWindow;
 class vtkRenderer;
 class vtkTimerLog;
@@ -39,6 +40,10 @@ bool OpenReport(const Options& o, const std::string& name, std::ofstream& csv, s
 
 // Root-mean-square difference of two byte images, in [0,1] units.
 double RMSE(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b);
+
+// A float texture read back, `components` values per texel, rows bottom-up
+// (empty when there is none).
+std::vector<float> Download(vtkRenderWindow* window, vtkTextureObject* texture, int components);
 
 // Wall-clock milliseconds of one finished frame.
 double TimedRender(vtkRenderWindow* window, vtkTimerLog* timer);

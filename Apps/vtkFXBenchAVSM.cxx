@@ -28,7 +28,6 @@
 #include "vtkLightsPass.h"
 #include "vtkNew.h"
 #include "vtkOpaquePass.h"
-#include "vtkPixelBufferObject.h"
 #include "vtkPlotPoints.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderPassCollection.h"
@@ -117,26 +116,6 @@ void UseVTKShadowMaps(vtkRenderer* renderer)
   renderer->SetPass(camera);
 }
 
-std::vector<float> DownloadR32F(vtkRenderWindow* window, vtkTextureObject* texture)
-{
-  std::vector<float> values;
-  if (!texture)
-  {
-    return values;
-  }
-  window->MakeCurrent();
-  vtkPixelBufferObject* pbo = texture->Download();
-  if (!pbo)
-  {
-    return values;
-  }
-  values.resize(static_cast<size_t>(texture->GetWidth()) * texture->GetHeight());
-  const auto* data = static_cast<const float*>(pbo->MapPackedBuffer());
-  std::copy(data, data + values.size(), values.begin());
-  pbo->UnmapPackedBuffer();
-  pbo->Delete();
-  return values;
-}
 }
 
 namespace vtkFXBench
@@ -213,7 +192,7 @@ int BenchAVSM(const Options& o)
       m.Image = vtkFXScenes::Capture(m.Window);
       if (m.AVSM)
       {
-        m.Visibility = DownloadR32F(m.Window, m.AVSM->GetOutputTexture("visibility"));
+        m.Visibility = Download(m.Window, m.AVSM->GetOutputTexture("visibility"), 1);
         m.AVSM->ProfileOn(); // one more frame, finished phase by phase
         m.Window->Render();
         m.AVSM->ProfileOff();

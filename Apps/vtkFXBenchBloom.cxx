@@ -25,7 +25,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkPixelBufferObject.h"
 #include "vtkPlotPoints.h"
 #include "vtkRenderState.h"
 #include "vtkRenderWindow.h"
@@ -145,33 +144,6 @@ private:
   std::string Source;
 };
 vtkStandardNewMacro(DirectGlow);
-
-// RGBA floats of a texture (rows bottom-up).
-std::vector<float> DownloadRGBA(vtkRenderWindow* window, vtkTextureObject* texture)
-{
-  std::vector<float> values;
-  window->MakeCurrent();
-  vtkPixelBufferObject* pbo = texture ? texture->Download() : nullptr;
-  if (!pbo)
-  {
-    return values;
-  }
-  const size_t n = static_cast<size_t>(texture->GetWidth()) * texture->GetHeight() * 4;
-  values.resize(n);
-  const void* data = pbo->MapPackedBuffer();
-  if (pbo->GetType() == VTK_FLOAT)
-  {
-    std::copy_n(static_cast<const float*>(data), n, values.begin());
-  }
-  else
-  {
-    const auto* bytes = static_cast<const unsigned char*>(data);
-    std::transform(bytes, bytes + n, values.begin(), [](unsigned char b) { return b / 255.0f; });
-  }
-  pbo->UnmapPackedBuffer();
-  pbo->Delete();
-  return values;
-}
 
 // One channel of a w x h image convolved with a Gaussian of deviation s
 // along x then y (4 s wide, edges clamped, as the GPU's samplers clamp).
@@ -338,8 +310,8 @@ int BenchBloom(const Options& o)
     }
     Method& none = methods[0];
     Method& ours = methods[1];
-    const auto emission = DownloadRGBA(
-      ours.Window, ours.Pipeline->GetGBufferPass()->GetChannelTexture(GB::Emission));
+    const auto emission = Download(
+      ours.Window, ours.Pipeline->GetGBufferPass()->GetChannelTexture(GB::Emission), 4);
     if (emission.empty())
     {
       std::cerr << "vtkfx-bench: " << input << " has nothing emissive: no glow to measure\n";

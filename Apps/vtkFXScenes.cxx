@@ -88,6 +88,25 @@ bool FileReadable(const std::string& path)
   return f.good();
 }
 
+// Numbers in [0, 1) from a fixed seed (a linear congruential generator):
+// scenes built from them are the same on every run and machine.
+class Uniform
+{
+public:
+  explicit Uniform(unsigned int seed)
+    : State(seed)
+  {
+  }
+  double operator()()
+  {
+    this->State = this->State * 1664525u + 1013904223u;
+    return (this->State >> 8) / 16777216.0;
+  }
+
+private:
+  unsigned int State;
+};
+
 vtkSmartPointer<vtkActor> MakeActor(vtkPolyData* data, double r, double g, double b)
 {
   vtkNew<vtkPolyDataMapper> mapper;
@@ -450,11 +469,7 @@ void SceneCloud(vtkRenderer* renderer)
 {
   SceneSpheres(renderer);
   vtkNew<vtkAppendPolyData> cloud;
-  unsigned int state = 2024u; // a fixed sequence: every run builds the same cloud
-  const auto random = [&state]() {
-    state = state * 1664525u + 1013904223u;
-    return (state >> 8) / 16777216.0;
-  };
+  Uniform random(2024u); // every run builds the same cloud
   for (int i = 0; i < 240; ++i)
   {
     // Denser towards the middle: the sum of two uniform numbers.
@@ -762,11 +777,7 @@ double vtkFXScenes::AddPointLights(
   const double spacing = 2.0 * size / side;
   const double range = reach * spacing;
   const double cutoff = 1.0 / 512.0;
-  unsigned int state = 12345u; // a fixed sequence: every run places the same lights
-  const auto random = [&state]() {
-    state = state * 1664525u + 1013904223u;
-    return (state >> 8) / 16777216.0;
-  };
+  Uniform random(12345u); // every run places the same lights
   for (int i = 0; i < count; ++i)
   {
     const double x = cx - size + spacing * (i % side + random());

@@ -6,6 +6,7 @@
 #include "vtkFXAVSMResolveFS.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXRenderUtilities.h"
+#include "vtkFXViewPosition.h"
 
 #include "vtkCamera.h"
 #include "vtkLight.h"
@@ -532,6 +533,7 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str(), false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLists::Dec", vtkFXAVSMLists, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLookup::Samplers", samplers.str(), false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXViewPosition::Dec", vtkFXViewPosition, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLookup::Fetch", fetch.str(), false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLookup::SliceFetch", sliceFetch.str(), false);
 

@@ -5,6 +5,7 @@
 #include "vtkFXLightingFS.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXNormalCoding.h"
+#include "vtkFXViewPosition.h"
 #include "vtkFXRenderUtilities.h"
 
 #include "vtkCamera.h"
@@ -262,6 +263,7 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
   std::string fs = vtkFXCompositeFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str(), false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXViewPosition::Dec", vtkFXViewPosition, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXLighting::Dec", vtkFXLightingFS, false);
   vtkShaderProgram::Substitute(fs, "//VTK::Light::Dec",
     complexity > 0 && !lightTexture ? ren->GetLightingUniforms() : "", false);

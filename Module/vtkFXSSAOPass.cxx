@@ -2,6 +2,7 @@
 
 #include "vtkFXGBufferPass.h"
 #include "vtkFXNormalCoding.h"
+#include "vtkFXViewPosition.h"
 #include "vtkFXRenderUtilities.h"
 #include "vtkFXSSAOFS.h"
 
@@ -227,6 +228,7 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   std::string fs = vtkFXSSAOFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str(), false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXViewPosition::Dec", vtkFXViewPosition, false);
 
   vtkFXRenderUtilities::RenderTargetScope target(window, this->FrameBuffer, this->Occlusion);
   vtkShaderProgram* program =

@@ -2,6 +2,7 @@
 
 #include "vtkFXGBufferPass.h"
 #include "vtkFXNormalCoding.h"
+#include "vtkFXViewPosition.h"
 #include "vtkFXRenderUtilities.h"
 #include "vtkFXToonBands.h"
 #include "vtkFXToonEdgesFS.h"
@@ -189,6 +190,7 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
       "\n#define FX_CREASES " + (this->Creases ? "1" : "0") + "\n",
     false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXViewPosition::Dec", vtkFXViewPosition, false);
   vtkFXRenderUtilities::RenderTargetScope target(window, this->EdgeFrameBuffer, this->Edges);
   vtkShaderProgram* program =
     vtkFXRenderUtilities::ReadyQuad(this->EdgeQuad, this->EdgeQuadSource, window, fs);

@@ -20,8 +20,7 @@
 in vec2 texCoord;
 
 uniform sampler2D fxLinearDepth;
-uniform vec3 fxRayOrigin[3];
-uniform vec3 fxRayDirection[3];
+//VTK::FXViewPosition::Dec
 uniform mat4 fxViewToLight;
 uniform vec2 fxSliceRange; // FX_SLICES
 uniform float fxBias; // light clip depth (0..1)
@@ -117,9 +116,7 @@ void main()
     return;
   }
   vec2 ndc = 2.0 * (vec2(pixel) + 0.5) / vec2(size) - 1.0;
-  vec3 origin = fxRayOrigin[0] + ndc.x * fxRayOrigin[1] + ndc.y * fxRayOrigin[2];
-  vec3 direction = fxRayDirection[0] + ndc.x * fxRayDirection[1] + ndc.y * fxRayDirection[2];
-  vec4 light = fxViewToLight * vec4(origin + linearDepth * direction, 1.0);
+  vec4 light = fxViewToLight * vec4(fxViewPosition(ndc, linearDepth), 1.0);
   vec3 p = light.xyz / light.w;
   vec2 uv = (0.5 * p.xy + 0.5) * float(fxAVSMSize);
   float depth = 0.5 * p.z + 0.5 - fxBias;

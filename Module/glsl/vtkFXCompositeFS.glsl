@@ -34,8 +34,7 @@ uniform sampler2D fxAmbient;
 #endif
 #if FX_NEEDS_POSITION
 uniform sampler2D fxLinearDepth;
-uniform vec3 fxRayOrigin[3];
-uniform vec3 fxRayDirection[3];
+//VTK::FXViewPosition::Dec
 #endif
 #if FX_HAS_EMISSION
 uniform sampler2D fxEmission;
@@ -76,16 +75,6 @@ float fxDiffuseResponse(float df)
 
 //VTK::Output::Dec
 
-#if FX_NEEDS_POSITION
-// View-space position seen through this pixel at linear depth `depth`.
-vec3 fxViewPosition(float depth)
-{
-  vec2 ndc = 2.0 * texCoord - 1.0;
-  vec3 origin = fxRayOrigin[0] + ndc.x * fxRayOrigin[1] + ndc.y * fxRayOrigin[2];
-  vec3 direction = fxRayDirection[0] + ndc.x * fxRayDirection[1] + ndc.y * fxRayDirection[2];
-  return origin + depth * direction;
-}
-#endif
 
 // Finite, non-negative colours only: NaN becomes 0, and +inf (VTK writes it
 // for a light with zero attenuation coefficients) the largest half float, as
@@ -123,7 +112,7 @@ void main()
   bool lit = false;
   vec3 n = vec3(0.0, 0.0, 1.0);
 #if FX_NEEDS_POSITION
-  vec3 position = fxViewPosition(texture(fxLinearDepth, texCoord).r);
+  vec3 position = fxViewPosition(2.0 * texCoord - 1.0, texture(fxLinearDepth, texCoord).r);
   vec3 view = normalize(-position);
 #else
   vec3 position = vec3(0.0);

@@ -37,8 +37,6 @@ uniform sampler2D fxLinearDepth;
 uniform sampler2D fxNormal;
 uniform ivec2 fxGBufferSize;  // full-resolution G-buffer texels
 uniform int fxStep;           // G-buffer texels per occlusion texel (1 or 2)
-uniform vec3 fxRayOrigin[3];
-uniform vec3 fxRayDirection[3];
 uniform mat4 fxProjection;    // view -> clip coordinates
 #if FX_METHOD == 0
 uniform vec4 fxKernel[FX_SAMPLES];
@@ -55,20 +53,13 @@ const float fxPi = 3.14159265358979;
 
 //VTK::Output::Dec
 
-vec3 fxViewPosition(vec2 ndc, float depth)
-{
-  vec3 origin = fxRayOrigin[0] + ndc.x * fxRayOrigin[1] + ndc.y * fxRayOrigin[2];
-  vec3 direction = fxRayDirection[0] + ndc.x * fxRayDirection[1] + ndc.y * fxRayDirection[2];
-  return origin + depth * direction;
-}
+//VTK::FXViewPosition::Dec
 
 // Ray through the centre of G-buffer texel `texel`: origin and direction,
 // so that the surface there is at origin + depth * direction.
 void fxTexelRay(ivec2 texel, out vec3 origin, out vec3 direction)
 {
-  vec2 ndc = (vec2(texel) + 0.5) / vec2(fxGBufferSize) * 2.0 - 1.0;
-  origin = fxRayOrigin[0] + ndc.x * fxRayOrigin[1] + ndc.y * fxRayOrigin[2];
-  direction = fxRayDirection[0] + ndc.x * fxRayDirection[1] + ndc.y * fxRayDirection[2];
+  fxRay((vec2(texel) + 0.5) / vec2(fxGBufferSize) * 2.0 - 1.0, origin, direction);
 }
 
 #if FX_METHOD == 0

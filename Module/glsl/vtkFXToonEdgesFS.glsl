@@ -25,12 +25,12 @@ in vec2 texCoord;
 uniform sampler2D fxLinearDepth;
 uniform sampler2D fxNormal;
 uniform ivec2 fxGBufferSize;
-uniform vec3 fxRayOrigin[3];
-uniform vec3 fxRayDirection[3];
 uniform float fxSilhouetteThreshold; // fraction of the depth
 uniform float fxCreaseCosine;
 
 //VTK::FXNormalCoding::Dec
+
+//VTK::FXViewPosition::Dec
 
 //VTK::Output::Dec
 
@@ -51,10 +51,7 @@ fxSurface fxSurfaceOf(ivec2 texel, float depth, vec2 encoded)
   s.covered = s.depth > 0.0;
   s.lit = s.covered && !fxIsUnlit(encoded);
   s.normal = s.lit ? fxDecodeNormal(encoded) : vec3(0.0, 0.0, 1.0);
-  vec2 ndc = 2.0 * (vec2(texel) + 0.5) / vec2(fxGBufferSize) - 1.0;
-  vec3 origin = fxRayOrigin[0] + ndc.x * fxRayOrigin[1] + ndc.y * fxRayOrigin[2];
-  vec3 direction = fxRayDirection[0] + ndc.x * fxRayDirection[1] + ndc.y * fxRayDirection[2];
-  s.position = origin + s.depth * direction;
+  s.position = fxViewPosition(2.0 * (vec2(texel) + 0.5) / vec2(fxGBufferSize) - 1.0, s.depth);
   return s;
 }
 
