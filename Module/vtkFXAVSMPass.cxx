@@ -458,27 +458,12 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMResolve::Output", output.str(), false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMResolve::SliceOutput", sliceOutput.str(), false);
 
-  vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglViewport viewport(state);
-  vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
-  state->PushFramebufferBindings();
-  if (!this->ResolveFrameBuffer)
+  std::vector<vtkTextureObject*> targetList;
+  for (auto& t : this->Curves)
   {
-    this->ResolveFrameBuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    this->ResolveFrameBuffer->SetContext(window);
+    targetList.push_back(t);
   }
-  this->ResolveFrameBuffer->Bind();
-  for (int k = 0; k < targets; ++k)
-  {
-    this->ResolveFrameBuffer->AddColorAttachment(k, this->Curves[k]);
-  }
-  this->ResolveFrameBuffer->ActivateDrawBuffers(targets);
-  state->vtkglViewport(0, 0, this->ShadowMapSize, this->ShadowMapSize);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglDisable(GL_SCISSOR_TEST);
+  vtkFXRenderUtilities::RenderTargetScope target(window, this->ResolveFrameBuffer, targetList);
   if (vtkShaderProgram* program =
         vtkFXRenderUtilities::ReadyQuad(this->ResolveQuad, this->ResolveSource, window, fs))
   {
@@ -492,7 +477,6 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
     }
     this->ResolveQuad->Render();
   }
-  state->PopFramebufferBindings();
 }
 
 void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window)

@@ -137,6 +137,13 @@ void vtkFXRenderUtilities::ReleaseQuad(
 
 vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow* window,
   vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer, vtkTextureObject* target)
+  : RenderTargetScope(window, framebuffer, std::vector<vtkTextureObject*>{ target })
+{
+}
+
+vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow* window,
+  vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
+  const std::vector<vtkTextureObject*>& targets)
   : State(window->GetState())
   , Viewport(window->GetState())
   , DepthTest(window->GetState(), GL_DEPTH_TEST)
@@ -150,9 +157,12 @@ vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow
     framebuffer->SetContext(window);
   }
   framebuffer->Bind();
-  framebuffer->AddColorAttachment(0, target);
-  framebuffer->ActivateDrawBuffers(1);
-  this->State->vtkglViewport(0, 0, target->GetWidth(), target->GetHeight());
+  for (size_t i = 0; i < targets.size(); ++i)
+  {
+    framebuffer->AddColorAttachment(static_cast<unsigned int>(i), targets[i]);
+  }
+  framebuffer->ActivateDrawBuffers(static_cast<unsigned int>(targets.size()));
+  this->State->vtkglViewport(0, 0, targets[0]->GetWidth(), targets[0]->GetHeight());
   this->State->vtkglDisable(GL_DEPTH_TEST);
   this->State->vtkglDisable(GL_BLEND);
   this->State->vtkglDisable(GL_SCISSOR_TEST);

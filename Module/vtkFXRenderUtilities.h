@@ -18,6 +18,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
@@ -145,6 +146,10 @@ public:
   public:
     RenderTargetScope(vtkOpenGLRenderWindow* window,
       vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer, vtkTextureObject* target);
+    /** Several targets of one size, colour attachments 0, 1, ... in order. */
+    RenderTargetScope(vtkOpenGLRenderWindow* window,
+      vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
+      const std::vector<vtkTextureObject*>& targets);
     ~RenderTargetScope();
 
   private:
