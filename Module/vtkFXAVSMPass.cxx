@@ -1,6 +1,7 @@
 #include "vtkFXAVSMPass.h"
 
 #include "vtkFXAVSMCapture.h"
+#include "vtkFXAVSMCurves.h"
 #include "vtkFXAVSMLists.h"
 #include "vtkFXAVSMLookupFS.h"
 #include "vtkFXAVSMResolveFS.h"
@@ -77,6 +78,7 @@ vtkFXAVSMPass::vtkFXAVSMPass()
   this->DeclareOutput("visibility");
   this->LightCamera = vtkSmartPointer<vtkCamera>::New();
   this->LightProjection = vtkSmartPointer<vtkMatrix4x4>::New();
+  this->ViewToLight = vtkSmartPointer<vtkMatrix4x4>::New();
   this->CasterPass = vtkSmartPointer<vtkTranslucentPass>::New();
 }
 
@@ -479,17 +481,20 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
   }
 }
 
-void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window)
+std::string vtkFXAVSMPass::CurveDefines(bool exact) const
 {
-  vtkTextureObject* depth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
-  vtkFXRenderUtilities::EnsureTexture(this->Visibility, window, static_cast<int>(depth->GetWidth()),
-    static_cast<int>(depth->GetHeight()), vtkFXRenderUtilities::R32F);
   const int nodes = this->Nodes();
   std::ostringstream defines;
-  defines << (this->Exact ? StorageExtension : "//VTK::System::Dec\n") << "#define FX_EXACT "
-          << (this->Exact ? 1 : 0) << "\n#define FX_BILINEAR " << (this->Bilinear ? 1 : 0)
-          << "\n#define FX_NODES " << nodes << "\n#define FX_SLICES "
-          << (this->Representation == RegularSlices && !this->Exact ? 2 * nodes : 0) << "\n";
+  defines << "#define FX_EXACT " << (exact ? 1 : 0) << "\n#define FX_BILINEAR "
+          << (this->Bilinear ? 1 : 0) << "\n#define FX_NODES " << nodes << "\n#define FX_SLICES "
+          << (this->Representation == RegularSlices && !exact ? 2 * nodes : 0) << "\n";
+  return defines.str();
+}
+
+std::string vtkFXAVSMPass::CurveCode() const
+{
+  // vtkFXAVSMCurves.glsl with the curve textures' samplers and reads.
+  const int nodes = this->Nodes();
   std::ostringstream samplers, fetch, sliceFetch;
   for (int k = 0; k < nodes / 2; ++k)
   {
@@ -513,13 +518,69 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
     fetch << "  z[" << i << "] = curve" << i / 4 << "." << c << ";\n";
     fetch << "  tau[" << i << "] = curve" << nodes / 4 + i / 4 << "." << c << ";\n";
   }
+  std::string code = vtkFXAVSMCurves;
+  vtkShaderProgram::Substitute(code, "//VTK::FXAVSMLookup::Samplers", samplers.str(), false);
+  vtkShaderProgram::Substitute(code, "//VTK::FXAVSMLookup::Fetch", fetch.str(), false);
+  vtkShaderProgram::Substitute(code, "//VTK::FXAVSMLookup::SliceFetch", sliceFetch.str(), false);
+  return code;
+}
+
+void vtkFXAVSMPass::SetCurveUniforms(vtkShaderProgram* program)
+{
+  program->SetUniformMatrix("fxViewToLight", this->ViewToLight);
+  program->SetUniformf("fxBias", static_cast<float>(this->Bias));
+  if (this->Exact)
+  {
+    this->BindBuffers(program);
+    program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->StoredFragments));
+    return;
+  }
+  program->SetUniformi("fxAVSMSize", this->ShadowMapSize);
+  if (this->Representation == RegularSlices)
+  {
+    float range[2];
+    this->CasterDepthRange(range);
+    program->SetUniform2f("fxSliceRange", range);
+  }
+  for (size_t k = 0; k < this->Curves.size(); ++k)
+  {
+    this->Curves[k]->Activate();
+    program->SetUniformi(
+      ("fxAVSMCurve" + std::to_string(k)).c_str(), this->Curves[k]->GetTextureUnit());
+  }
+}
+
+void vtkFXAVSMPass::ReleaseCurveUnits()
+{
+  for (auto& t : this->Curves)
+  {
+    t->Deactivate();
+  }
+}
+
+void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window)
+{
+  vtkTextureObject* depth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
+  vtkFXRenderUtilities::EnsureTexture(this->Visibility, window, static_cast<int>(depth->GetWidth()),
+    static_cast<int>(depth->GetHeight()), vtkFXRenderUtilities::R32F);
   std::string fs = vtkFXAVSMLookupFS;
-  vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str(), false);
+  vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
+    (this->Exact ? StorageExtension : std::string("//VTK::System::Dec\n")) +
+      this->CurveDefines(this->Exact),
+    false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLists::Dec", vtkFXAVSMLists, false);
-  vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLookup::Samplers", samplers.str(), false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXViewPosition::Dec", vtkFXViewPosition, false);
-  vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLookup::Fetch", fetch.str(), false);
-  vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMLookup::SliceFetch", sliceFetch.str(), false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMCurves::Dec", this->CurveCode(), false);
+
+  // View (the viewer's) -> world -> light view -> light clip; transposed:
+  // vtkShaderProgram hands row-major elements to GLSL, which reads columns.
+  vtkNew<vtkMatrix4x4> worldFromView;
+  worldFromView->DeepCopy(ren->GetActiveCamera()->GetViewTransformMatrix());
+  worldFromView->Invert();
+  vtkNew<vtkMatrix4x4> viewToLightView;
+  vtkMatrix4x4::Multiply4x4(this->LightCamera->GetViewTransformMatrix(), worldFromView, viewToLightView);
+  vtkMatrix4x4::Multiply4x4(this->LightProjection, viewToLightView, this->ViewToLight);
+  this->ViewToLight->Transpose();
 
   vtkFXRenderUtilities::RenderTargetScope target(window, this->LookUpFrameBuffer, this->Visibility);
   vtkShaderProgram* program =
@@ -531,48 +592,10 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
   depth->Activate();
   program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());
   vtkFXRenderUtilities::SetFrustumRayUniforms(program, ren);
-  // View (the viewer's) -> world -> light view -> light clip; transposed:
-  // vtkShaderProgram hands row-major elements to GLSL, which reads columns.
-  vtkNew<vtkMatrix4x4> worldFromView;
-  worldFromView->DeepCopy(ren->GetActiveCamera()->GetViewTransformMatrix());
-  worldFromView->Invert();
-  vtkNew<vtkMatrix4x4> viewToLightView;
-  vtkMatrix4x4::Multiply4x4(this->LightCamera->GetViewTransformMatrix(), worldFromView, viewToLightView);
-  vtkNew<vtkMatrix4x4> viewToLight;
-  vtkMatrix4x4::Multiply4x4(this->LightProjection, viewToLightView, viewToLight);
-  viewToLight->Transpose();
-  program->SetUniformMatrix("fxViewToLight", viewToLight);
-  program->SetUniformf("fxBias", static_cast<float>(this->Bias));
-  if (this->Exact)
-  {
-    this->BindBuffers(program);
-    program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->StoredFragments));
-  }
-  else
-  {
-    program->SetUniformi("fxAVSMSize", this->ShadowMapSize);
-    if (this->Representation == RegularSlices)
-    {
-      float range[2];
-      this->CasterDepthRange(range);
-      program->SetUniform2f("fxSliceRange", range);
-    }
-    for (int k = 0; k < nodes / 2; ++k)
-    {
-      this->Curves[k]->Activate();
-      program->SetUniformi(("fxAVSMCurve" + std::to_string(k)).c_str(),
-        this->Curves[k]->GetTextureUnit());
-    }
-  }
+  this->SetCurveUniforms(program);
   this->LookUpQuad->Render();
   depth->Deactivate();
-  if (!this->Exact)
-  {
-    for (auto& t : this->Curves)
-    {
-      t->Deactivate();
-    }
-  }
+  this->ReleaseCurveUnits();
 }
 
 void vtkFXAVSMPass::Render(const vtkRenderState* s)

@@ -210,6 +210,10 @@ protected:
   void Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
   void Resolve(vtkOpenGLRenderWindow* window);
   void LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window);
+  std::string CurveDefines(bool exact) const;
+  std::string CurveCode() const;
+  void SetCurveUniforms(vtkShaderProgram* program);
+  void ReleaseCurveUnits();
 
   int ShadowMapSize = 512;
   int NumberOfNodes = 8;
@@ -234,6 +238,7 @@ protected:
 
   vtkSmartPointer<vtkCamera> LightCamera;
   vtkSmartPointer<vtkMatrix4x4> LightProjection;
+  vtkSmartPointer<vtkMatrix4x4> ViewToLight; // this frame's, transposed for GLSL
   vtkSmartPointer<vtkTranslucentPass> CasterPass;
   unsigned int Buffers[4] = { 0, 0, 0, 0 }; // heads, nodes, counter, counts per texel
   vtkIdType LongestList = 0;                // of the last capture
