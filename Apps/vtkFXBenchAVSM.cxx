@@ -30,8 +30,10 @@
 #include "vtkOpaquePass.h"
 #include "vtkPlotPoints.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderPass.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
 #include "vtkSequencePass.h"
 #include "vtkShadowMapBakerPass.h"
 #include "vtkShadowMapPass.h"
@@ -148,6 +150,13 @@ int BenchAVSM(const Options& o)
   {
     for (auto& m : methods)
     {
+      // The last scene's passes free their GL resources before they go
+      // (VTK's shadow-map baker insists).
+      vtkRenderer* previous = m.Window->GetRenderers()->GetFirstRenderer();
+      if (previous && previous->GetPass())
+      {
+        previous->GetPass()->ReleaseGraphicsResources(m.Window);
+      }
       std::string error;
       auto renderer = Stage(m.Window, input, error);
       if (!renderer)

@@ -58,6 +58,7 @@ const char* const StorageExtension =
   "//VTK::System::Dec\n#extension GL_ARB_shader_storage_buffer_object : require\n";
 // Marks the shaders this pass extended (SetShaderParameters binds for them).
 const char* const CaptureMarker = "// vtkFX AVSM capture";
+const char* const ReceiverMarker = "// vtkFX AVSM receiver";
 
 bool Contains(const std::string& s, const char* what)
 {
@@ -301,6 +302,23 @@ bool vtkFXAVSMPass::PreReplaceShaderValues(
   {
     return true;
   }
+  if (this->Receiving)
+  {
+    // A translucent prop lit by VTK: the casting light's terms get the
+    // transmittance at the fragment (filled in after VTK's light code).
+    if (this->Exact)
+    {
+      // The exact look-up walks the lists: storage buffers here too.
+      vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec", StorageExtension, false);
+    }
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Output::Dec",
+      std::string("//VTK::Output::Dec\n") + ReceiverMarker + "\n" +
+        this->CurveDefines(this->Exact) + (this->Exact ? vtkFXAVSMLists : "") + this->CurveCode(),
+      false);
+    vtkShaderProgram::Substitute(
+      fragmentShader, "//VTK::Light::Impl", "//VTK::FXAVSMReceive::Impl\n  //VTK::Light::Impl", false);
+    return true;
+  }
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec", StorageExtension, false);
   vtkShaderProgram::Substitute(
     fragmentShader, "//VTK::Output::Dec", std::string("//VTK::Output::Dec\n") + vtkFXAVSMLists, false);
@@ -310,15 +328,76 @@ bool vtkFXAVSMPass::PreReplaceShaderValues(
 }
 
 bool vtkFXAVSMPass::PostReplaceShaderValues(
-  std::string&, std::string&, std::string&, vtkAbstractMapper*, vtkProp*)
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
+  if (!this->Receiving || !Contains(fragmentShader, ReceiverMarker))
+  {
+    return true;
+  }
+  // VTK 9.1's per-light statements (the ones vtkShadowMapPass rewrites
+  // too); a shader without them (unlit) keeps its colour.
+  const std::string n = std::to_string(this->LightIndex);
+  const std::string diffuse = "diffuse += (df * lightColor" + n + ");";
+  const std::string specular = "specular += (sf * lightColor" + n + ");";
+  const bool lit = Contains(fragmentShader, diffuse.c_str());
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::FXAVSMReceive::Impl",
+    lit ? "float fxAVSMT = fxLightTransmittance(vertexVC.xyz);" : "", false);
+  if (lit)
+  {
+    vtkShaderProgram::Substitute(
+      fragmentShader, diffuse, "diffuse += (df * fxAVSMT * lightColor" + n + ");", false);
+    vtkShaderProgram::Substitute(
+      fragmentShader, specular, "specular += (sf * fxAVSMT * lightColor" + n + ");", false);
+  }
   return true;
+}
+
+bool vtkFXAVSMPass::GetShadesForward()
+{
+  return this->TranslucentReceivers;
+}
+
+void vtkFXAVSMPass::BeginForwardShading(const vtkRenderState* s)
+{
+  // Nothing captured this frame (no casting light, no GL 4.3): no shadows.
+  const bool ready = this->Exact ? this->Buffers[HeadsBuffer] != 0 : !this->Curves.empty();
+  if (!ready || this->LightIndex < 0 || !this->Visibility)
+  {
+    return;
+  }
+  this->Receiving = true;
+  this->ShaderStageTime.Modified(); // the translucent props' shaders change
+  this->PreRender(s);
+}
+
+void vtkFXAVSMPass::EndForwardShading(const vtkRenderState* s)
+{
+  if (!this->Receiving)
+  {
+    return;
+  }
+  this->PostRender(s);
+  this->ReleaseCurveUnits();
+  this->Receiving = false;
+  this->ShaderStageTime.Modified();
+}
+
+vtkMTimeType vtkFXAVSMPass::GetShaderStageMTime()
+{
+  return this->ShaderStageTime.GetMTime();
 }
 
 bool vtkFXAVSMPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
-  if (program->IsUniformUsed("fxAVSMCapacity"))
+  if (this->Receiving)
+  {
+    if (program->IsUniformUsed("fxViewToLight"))
+    {
+      this->SetCurveUniforms(program);
+    }
+  }
+  else if (program->IsUniformUsed("fxAVSMCapacity"))
   {
     this->BindBuffers(program);
   }
@@ -705,6 +784,7 @@ void vtkFXAVSMPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Representation: "
      << (this->Representation == RegularSlices ? "RegularSlices" : "AdaptiveNodes") << "\n";
   os << indent << "Bilinear: " << this->Bilinear << "\n";
+  os << indent << "TranslucentReceivers: " << this->TranslucentReceivers << "\n";
   os << indent << "Bias: " << this->Bias << "\n";
   os << indent << "InitialNodesPerTexel: " << this->InitialNodesPerTexel << "\n";
   os << indent << "CapturedFragments: " << this->CapturedFragments << " (capacity "

@@ -34,9 +34,14 @@
  * atomic counter; no out-of-bounds write happens) drops the extra fragments
  * that frame, warns once and grows for the next one.
  *
- * Limitations of this first version: one casting light; translucent props
- * do not receive shadows (only opaque ones do); point-gaussian splats are
- * captured as the surfaces they draw.
+ * Receivers: opaque props (the look-up above) and translucent props, whose
+ * VTK shaders scale the casting light's terms by the transmittance at each
+ * fragment during the pipeline's translucent step. A translucent surface
+ * does not shadow itself: casters within Bias of a fragment do not
+ * count.
+ *
+ * Limitations of this first version: one casting light (directional);
+ * point-gaussian splats are captured as the surfaces they draw.
  *
  * Cost: the translucent props drawn once more at ShadowMapSize^2, 16 bytes
  * per captured fragment plus 8 per texel (list head and count); the resolve,
@@ -50,6 +55,7 @@
 #include "vtkFXEffectPass.h"
 #include "vtkFXModule.h"
 #include "vtkSmartPointer.h"
+#include "vtkTimeStamp.h" // for the shader stage time
 
 #include <memory>
 #include <string>
@@ -106,6 +112,15 @@ public:
   vtkSetMacro(Exact, bool);
   vtkGetMacro(Exact, bool);
   vtkBooleanMacro(Exact, bool);
+
+  /**
+   * Shadow the translucent props too (default on). Each of their fragments
+   * looks the light up during VTK's translucent step: in Exact mode a walk
+   * of the whole list, so a cloud of n layers costs n x n steps per pixel.
+   */
+  vtkSetMacro(TranslucentReceivers, bool);
+  vtkGetMacro(TranslucentReceivers, bool);
+  vtkBooleanMacro(TranslucentReceivers, bool);
 
   /**
    * Blend the four nearest texels' transmittances (default on) or take
@@ -197,6 +212,17 @@ public:
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+  vtkMTimeType GetShaderStageMTime() override;
+
+  /**
+   * Translucent receivers: around the pipeline's translucent step, VTK's
+   * shaders of the translucent props scale the casting light's diffuse and
+   * specular terms by the transmittance at each fragment (read from the
+   * curves, or the lists in Exact mode, as for opaque receivers).
+   */
+  bool GetShadesForward() override;
+  void BeginForwardShading(const vtkRenderState* s) override;
+  void EndForwardShading(const vtkRenderState* s) override;
 
 protected:
   vtkFXAVSMPass();
@@ -229,6 +255,9 @@ protected:
   int LightIndex = -1;
   bool WarnedOverflow = false;
   bool Profile = false;
+  bool TranslucentReceivers = true;
+  bool Receiving = false; // between Begin- and EndForwardShading
+  vtkTimeStamp ShaderStageTime;
   double PhaseMilliseconds[3] = { 0.0, 0.0, 0.0 };
   bool WarnedUnsupported = false;
 

@@ -125,6 +125,20 @@ public:
    */
   virtual bool GetNeedsHDRTarget() { return true; }
 
+  ///@{
+  /**
+   * Effects that change how VTK's own forward step shades translucent
+   * props (shadows on them) return true from GetShadesForward; the
+   * pipeline then calls BeginForwardShading before its translucent step
+   * and EndForwardShading after it, with that step's render state (its
+   * props: the effect may extend their shaders through its
+   * vtkOpenGLRenderPass hooks in between). Default: false, no-ops.
+   */
+  virtual bool GetShadesForward() { return false; }
+  virtual void BeginForwardShading(const vtkRenderState*) {}
+  virtual void EndForwardShading(const vtkRenderState*) {}
+  ///@}
+
   /**
    * What an output holds after the effect rendered.
    */

@@ -566,6 +566,14 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
   }
   if (!scene.TranslucentProps.empty())
   {
+    this->TranslucentPass->RemoveAllForwardShadingEffects();
+    for (size_t i : order)
+    {
+      if (this->Effects[i].Effect->GetShadesForward())
+      {
+        this->TranslucentPass->AddForwardShadingEffect(this->Effects[i].Effect);
+      }
+    }
     lit->AddPass("translucent", this->TranslucentPass);
   }
   if (!scene.VolumeProps.empty())

@@ -60,6 +60,7 @@ class vtkFXCompositePass;
 class vtkFXEffectPass;
 class vtkFXHDRTargetPass;
 class vtkFXTimedSequencePass;
+class vtkFXTranslucentPass;
 class vtkLightsPass;
 class vtkOpaquePass;
 class vtkOverlayPass;
@@ -256,7 +257,7 @@ protected:
   vtkSmartPointer<vtkOpaquePass> OpaquePass;
   vtkSmartPointer<vtkFXGBufferPass> GBufferPass;
   vtkSmartPointer<vtkFXCompositePass> CompositePass;
-  vtkSmartPointer<vtkRenderPass> TranslucentPass;
+  vtkSmartPointer<vtkFXTranslucentPass> TranslucentPass;
   vtkSmartPointer<vtkVolumetricPass> VolumetricPass;
   vtkSmartPointer<vtkOverlayPass> OverlayPass;
   vtkSmartPointer<vtkRenderPass> SelectionPass;

@@ -8,12 +8,19 @@
  * passes.
  * Reads the current framebuffer's depth (the G-buffer depth written by
  * vtkFXCompositePass) and blends into its colour. Cost: VTK's own.
+ * Effects that shade translucent props (vtkFXEffectPass::GetShadesForward,
+ * e.g. shadows cast on them) are told before and after the step.
  */
 #ifndef vtkFXTranslucentPass_h
 #define vtkFXTranslucentPass_h
 
 #include "vtkFXModule.h"
 #include "vtkRenderPass.h"
+#include "vtkWeakPointer.h" // for the effects
+
+#include <vector>
+
+class vtkFXEffectPass;
 
 class VTKFX_EXPORT vtkFXTranslucentPass : public vtkRenderPass
 {
@@ -23,9 +30,20 @@ public:
 
   void Render(const vtkRenderState* s) override;
 
+  ///@{
+  /**
+   * Effects told before and after the step (see vtkFXEffectPass::
+   * BeginForwardShading); vtkFXPipelinePass sets them every frame.
+   */
+  void AddForwardShadingEffect(vtkFXEffectPass* effect);
+  void RemoveAllForwardShadingEffects();
+  ///@}
+
 protected:
   vtkFXTranslucentPass() = default;
   ~vtkFXTranslucentPass() override = default;
+
+  std::vector<vtkWeakPointer<vtkFXEffectPass>> ForwardShadingEffects;
 
 private:
   vtkFXTranslucentPass(const vtkFXTranslucentPass&) = delete;

@@ -204,13 +204,13 @@ inline void MoveScene(vtkRenderer* renderer, double scale, double offset, bool p
 //   summed over RGB), so it cannot see a change of a few tens of levels
 //   over whole regions (toon bands against smooth light both pass);
 // - PSNR against the baseline, at least minimumPSNR dB: the images
-//   reproduce exactly on this Mesa (inf), and a shading change of 10 levels
-//   over a tenth of the pixels already falls below 35 dB.
+//   reproduce on this Mesa at 51 dB or more (most exactly), while shadows
+//   appearing on a translucent prop measured 39-42 dB and toon bands 23 dB.
 // Unlike VTK's macro, a missing -V is a failure: an image test that
 // compares nothing must not pass. On failure VTK writes the test image and
 // the difference into -T (the test image also when only PSNR fails).
 inline bool MatchesBaseline(vtkRenderWindow* window, int argc, char* argv[], double threshold,
-  double minimumPSNR = 35.0)
+  double minimumPSNR = 45.0)
 {
   const std::string baseline = Argument(argc, argv, "-V");
   if (baseline.empty())
