@@ -153,21 +153,71 @@ void WriteRGBStrip(const std::vector<const std::vector<unsigned char>*>& images,
   WritePNG(strip, path);
 }
 
+namespace
+{
+// An offscreen chart on white, titled, with a legend.
+void SetUpChart(vtkContextView* view, vtkChartXY* chart, int width, int height,
+  const std::string& title, const std::string& xTitle, const std::string& yTitle)
+{
+  view->GetRenderWindow()->SetOffScreenRendering(1);
+  view->GetRenderWindow()->SetSize(width, height);
+  view->GetRenderer()->SetBackground(1, 1, 1);
+  view->GetScene()->AddItem(chart);
+  chart->SetTitle(title);
+  chart->SetShowLegend(true);
+  chart->GetAxis(vtkAxis::BOTTOM)->SetTitle(xTitle);
+  chart->GetAxis(vtkAxis::LEFT)->SetTitle(yTitle);
+}
+
+// Renders the chart and writes it as a PNG.
+void SaveChart(vtkContextView* view, int width, int height, const std::string& path)
+{
+  view->GetRenderWindow()->Render();
+  vtkNew<vtkImageData> image;
+  std::vector<unsigned char> pixels = vtkFXScenes::Capture(view->GetRenderWindow());
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  std::copy(pixels.begin(), pixels.end(), static_cast<unsigned char*>(image->GetScalarPointer()));
+  vtkFXBench::WritePNG(image, path);
+}
+}
+
+void WriteLinePlot(const std::vector<PlotLine>& lines, const std::string& title,
+  const std::string& xTitle, const std::string& yTitle, const std::string& path)
+{
+  const int width = 900, height = 600;
+  vtkNew<vtkContextView> view;
+  vtkNew<vtkChartXY> chart;
+  SetUpChart(view, chart, width, height, title, xTitle, yTitle);
+  for (const auto& line : lines)
+  {
+    vtkNew<vtkTable> table;
+    vtkNew<vtkFloatArray> x, y;
+    x->SetName("x");
+    y->SetName(line.Name.c_str());
+    for (size_t i = 0; i < line.X.size() && i < line.Y.size(); ++i)
+    {
+      x->InsertNextValue(static_cast<float>(line.X[i]));
+      y->InsertNextValue(static_cast<float>(line.Y[i]));
+    }
+    table->AddColumn(x);
+    table->AddColumn(y);
+    vtkPlot* plot = chart->AddPlot(vtkChart::LINE);
+    plot->SetInputData(table, 0, 1);
+    plot->SetColor(line.R, line.G, line.B, 255);
+    plot->SetWidth(2.0);
+  }
+  SaveChart(view, width, height, path);
+}
+
 void WritePointsPlot(const std::vector<PlotFamily>& families, const std::vector<PlotPoint>& points,
   const std::string& title, const std::string& xTitle, const std::string& yTitle,
   const std::string& path)
 {
   const int width = 900, height = 600;
   vtkNew<vtkContextView> view;
-  view->GetRenderWindow()->SetOffScreenRendering(1);
-  view->GetRenderWindow()->SetSize(width, height);
-  view->GetRenderer()->SetBackground(1, 1, 1);
   vtkNew<vtkChartXY> chart;
-  view->GetScene()->AddItem(chart);
-  chart->SetTitle(title);
-  chart->SetShowLegend(true);
-  chart->GetAxis(vtkAxis::BOTTOM)->SetTitle(xTitle);
-  chart->GetAxis(vtkAxis::LEFT)->SetTitle(yTitle);
+  SetUpChart(view, chart, width, height, title, xTitle, yTitle);
   for (size_t f = 0; f < families.size(); ++f)
   {
     const PlotFamily& family = families[f];
@@ -218,12 +268,6 @@ void WritePointsPlot(const std::vector<PlotFamily>& families, const std::vector<
       static_cast<int>(y0[1] + fy * (y1[1] - y0[1])) - 4);
     view->GetRenderer()->AddActor2D(label);
   }
-  view->GetRenderWindow()->Render();
-  vtkNew<vtkImageData> image;
-  std::vector<unsigned char> pixels = vtkFXScenes::Capture(view->GetRenderWindow());
-  image->SetDimensions(width, height, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  std::copy(pixels.begin(), pixels.end(), static_cast<unsigned char*>(image->GetScalarPointer()));
-  WritePNG(image, path);
+  SaveChart(view, width, height, path);
 }
 }

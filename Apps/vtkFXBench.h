@@ -74,6 +74,16 @@ void WritePointsPlot(const std::vector<PlotFamily>& families, const std::vector<
   const std::string& title, const std::string& xTitle, const std::string& yTitle,
   const std::string& path);
 
+// Curves y(x) on one chart, one colour each, named in the legend.
+struct PlotLine
+{
+  std::string Name;
+  unsigned char R, G, B;
+  std::vector<double> X, Y;
+};
+void WriteLinePlot(const std::vector<PlotLine>& lines, const std::string& title,
+  const std::string& xTitle, const std::string& yTitle, const std::string& path);
+
 void WritePNG(vtkImageData* image, const std::string& path);
 
 // A name for files about `input`: "bunny" for ".../bunny.obj", "glow" for

@@ -15,7 +15,9 @@
 // capture_ms, resolve_ms, lookup_ms, curve_bytes_per_texel,
 // list_bytes_per_texel), DIR/avsm-SCENE.png (RMSE against time) and
 // DIR/avsm-strip-SCENE.png (exact | AVSM-8 | VTK's vtkShadowMapPass, where
-// translucent props cast nothing | no shadows).
+// translucent props cast nothing | no shadows) and DIR/avsm-ray-SCENE.png
+// (the transmittance along the light ray through the texel with the most
+// fragments, exact against every curve, as the AVSM demo's debug view).
 #include "vtkFXAVSMPass.h"
 #include "vtkFXBench.h"
 #include "vtkFXPipelinePass.h"
@@ -41,8 +43,10 @@
 #include "vtkTimerLog.h"
 #include "vtkTranslucentPass.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 
@@ -63,6 +67,100 @@ struct Method
   std::vector<float> Visibility;
   std::vector<unsigned char> Image;
 };
+
+// Optical depth along a light ray at light depth z, from a curve as
+// vtkFXAVSMPass::GetTexelCurve gives it (nodes, or slices over `range`),
+// evaluated as the look-up shader does.
+double CurveAt(const std::vector<double>& depths, const std::vector<double>& tau,
+  const double range[2], double z)
+{
+  if (depths.empty()) // slices
+  {
+    const double k = static_cast<double>(tau.size());
+    const double x = (z - range[0]) / std::max(range[1] - range[0], 1e-30) * k;
+    if (!(x > 0.0))
+    {
+      return 0.0;
+    }
+    if (x >= k)
+    {
+      return tau.back();
+    }
+    const size_t i = static_cast<size_t>(x);
+    return (i == 0 ? 0.0 : tau[i - 1]) * (1.0 - (x - i)) + tau[i] * (x - i);
+  }
+  double result = 0.0;
+  for (size_t j = 0; j < depths.size(); ++j)
+  {
+    if (depths[j] <= z)
+    {
+      const bool last = j + 1 == depths.size() || depths[j + 1] > 1e37;
+      const double span = last ? 0.0 : depths[j + 1] - depths[j];
+      const double f = span > 0.0 ? std::min(1.0, (z - depths[j]) / span) : 1.0;
+      result = last ? tau[j] : tau[j] + f * (tau[j + 1] - tau[j]);
+    }
+  }
+  return result;
+}
+
+// The transmittance along the light ray through the texel with the most
+// fragments: exact (every fragment) against each curve.
+void WriteRayPlot(std::vector<Method>& methods, const std::string& title, const std::string& path)
+{
+  Method& exact = methods[methods.size() - 2];
+  exact.Window->MakeCurrent();
+  int x = 0, y = 0;
+  std::vector<double> depths, tau;
+  if (!exact.AVSM->GetLongestListTexel(x, y) || !exact.AVSM->GetTexelFragments(x, y, depths, tau) ||
+    depths.empty())
+  {
+    return;
+  }
+  const double lo = *std::min_element(depths.begin(), depths.end());
+  const double hi = *std::max_element(depths.begin(), depths.end());
+  const double margin = 0.1 * std::max(hi - lo, 1e-6);
+  std::vector<PlotLine> lines;
+  const unsigned char palette[][3] = { { 30, 30, 30 }, { 200, 60, 30 }, { 230, 150, 20 },
+    { 120, 40, 160 }, { 40, 150, 60 }, { 30, 80, 200 } };
+  size_t colour = 0;
+  const auto addLine = [&](const std::string& name, const std::function<double(double)>& opticalDepth) {
+    PlotLine line{ name, palette[colour][0], palette[colour][1], palette[colour][2], {}, {} };
+    colour = (colour + 1) % 6;
+    for (int i = 0; i <= 400; ++i)
+    {
+      const double z = lo - margin + (hi - lo + 2.0 * margin) * i / 400.0;
+      line.X.push_back(z);
+      line.Y.push_back(std::exp(-opticalDepth(z)));
+    }
+    lines.push_back(line);
+  };
+  addLine("exact (" + std::to_string(depths.size()) + " fragments)", [&](double z) {
+    double sum = 0.0;
+    for (size_t i = 0; i < depths.size(); ++i)
+    {
+      sum += depths[i] < z ? tau[i] : 0.0;
+    }
+    return sum;
+  });
+  for (Method& m : methods)
+  {
+    std::vector<double> nodeDepths, nodeTau;
+    if (!m.AVSM || m.Exact)
+    {
+      continue;
+    }
+    m.Window->MakeCurrent();
+    double range[2];
+    m.AVSM->GetCasterDepthRange(range);
+    if (m.AVSM->GetTexelCurve(x, y, nodeDepths, nodeTau))
+    {
+      addLine(m.Name + " " + m.Setting,
+        [=](double z) { return CurveAt(nodeDepths, nodeTau, range, z); });
+    }
+  }
+  WriteLinePlot(lines, title + " (texel " + std::to_string(x) + ", " + std::to_string(y) + ")",
+    "light depth (clip, 0..1)", "transmittance", path);
+}
 
 // VTK's own shadows on the renderer: the shadow-map baker and pass of
 // VTK's examples over lights and opaque props, then the translucent props.
@@ -254,6 +352,8 @@ int BenchAVSM(const Options& o)
       points, tag + ": translucent shadows, error against time",
       "shadow time (ms per frame, frame minus frame without shadows)",
       "transmittance RMSE against the exact mode", o.Out + "/avsm-" + tag + ".png");
+    WriteRayPlot(methods, tag + ": transmittance along the light ray with the most fragments",
+      o.Out + "/avsm-ray-" + tag + ".png");
     WriteRGBStrip({ &exact.Image, &methods[2].Image, &methods.back().Image, &methods[0].Image },
       o.Width, o.Height, o.Out + "/avsm-strip-" + tag + ".png");
   }

@@ -120,6 +120,92 @@ double vtkFXAVSMPass::GetListBytesPerTexel() const
   return 8.0 + 16.0 * this->StoredFragments / texels;
 }
 
+bool vtkFXAVSMPass::GetTexelFragments(
+  int x, int y, std::vector<double>& depths, std::vector<double>& opticalDepths)
+{
+  depths.clear();
+  opticalDepths.clear();
+  const int n = this->ShadowMapSize;
+  if (!this->Buffers[HeadsBuffer] || x < 0 || y < 0 || x >= n || y >= n ||
+    vtkIdType(n) * n != this->BufferTexels)
+  {
+    return false;
+  }
+  GLuint node = 0xFFFFFFFFu;
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[HeadsBuffer]);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 4 * (GLintptr(y) * n + x), 4, &node);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[NodesBuffer]);
+  for (vtkIdType step = 0; node != 0xFFFFFFFFu && node < this->StoredFragments &&
+       step < this->StoredFragments;
+       ++step)
+  {
+    struct
+    {
+      float Depth, OpticalDepth;
+      GLuint Next, Unused;
+    } record;
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, GLintptr(node) * NodeBytes, NodeBytes, &record);
+    depths.push_back(record.Depth);
+    opticalDepths.push_back(record.OpticalDepth);
+    node = record.Next;
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  return true;
+}
+
+bool vtkFXAVSMPass::GetTexelCurve(
+  int x, int y, std::vector<double>& depths, std::vector<double>& opticalDepths)
+{
+  depths.clear();
+  opticalDepths.clear();
+  const int n = this->ShadowMapSize;
+  if (this->Curves.empty() || x < 0 || y < 0 || x >= n || y >= n)
+  {
+    return false;
+  }
+  const bool slices = this->Representation == RegularSlices;
+  for (size_t k = 0; k < this->Curves.size(); ++k)
+  {
+    float texel[4];
+    glGetTextureSubImage(this->Curves[k]->GetHandle(), 0, x, y, 0, 1, 1, 1, GL_RGBA, GL_FLOAT,
+      sizeof(texel), texel);
+    const bool depthTexture = !slices && k < this->Curves.size() / 2;
+    for (float v : texel)
+    {
+      (depthTexture ? depths : opticalDepths).push_back(v);
+    }
+  }
+  return true;
+}
+
+bool vtkFXAVSMPass::GetLongestListTexel(int& x, int& y)
+{
+  const int n = this->ShadowMapSize;
+  if (!this->Buffers[CountsBuffer] || vtkIdType(n) * n != this->BufferTexels)
+  {
+    return false;
+  }
+  std::vector<GLuint> counts(static_cast<size_t>(n) * n);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CountsBuffer]);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, counts.size() * 4, counts.data());
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  const auto longest = std::max_element(counts.begin(), counts.end());
+  if (*longest == 0)
+  {
+    return false;
+  }
+  const size_t slot = static_cast<size_t>(longest - counts.begin());
+  x = static_cast<int>(slot % n);
+  y = static_cast<int>(slot / n);
+  return true;
+}
+
+void vtkFXAVSMPass::GetCasterDepthRange(double range[2]) const
+{
+  range[0] = this->SliceRange[0];
+  range[1] = this->SliceRange[1];
+}
+
 unsigned int vtkFXAVSMPass::GetRequiredChannels()
 {
   return GB::ChannelBit(GB::LinearDepth);
@@ -552,9 +638,7 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
     program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->StoredFragments));
     if (slices)
     {
-      float range[2];
-      this->CasterDepthRange(range);
-      program->SetUniform2f("fxSliceRange", range);
+      program->SetUniform2f("fxSliceRange", this->SliceRange);
     }
     this->ResolveQuad->Render();
   }
@@ -617,9 +701,7 @@ void vtkFXAVSMPass::SetCurveUniforms(vtkShaderProgram* program)
   program->SetUniformi("fxAVSMSize", this->ShadowMapSize);
   if (this->Representation == RegularSlices)
   {
-    float range[2];
-    this->CasterDepthRange(range);
-    program->SetUniform2f("fxSliceRange", range);
+    program->SetUniform2f("fxSliceRange", this->SliceRange);
   }
   for (size_t k = 0; k < this->Curves.size(); ++k)
   {
@@ -699,6 +781,9 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
     return;
   }
   this->FitLightCamera(ren);
+  // Kept for the frame: the casters are forgotten after Render, and VTK's
+  // translucent step (translucent receivers) comes later.
+  this->CasterDepthRange(this->SliceRange);
   this->EnsureBuffers();
   this->StoredFragments = this->Capacity;
   // With Profile on, each phase is finished before the clock reads it.

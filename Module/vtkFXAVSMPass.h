@@ -56,6 +56,7 @@
 #include "vtkFXModule.h"
 #include "vtkSmartPointer.h"
 #include "vtkTimeStamp.h" // for the shader stage time
+#include "vtkWrappingHints.h" // for VTK_WRAPEXCLUDE
 
 #include <memory>
 #include <string>
@@ -195,6 +196,25 @@ public:
   vtkTextureObject* GetCurveTexture(int i);
   ///@}
 
+  ///@{
+  /**
+   * One light ray of the last frame, for plots and tests (call with the
+   * window's context current, after a frame): the fragments of texel
+   * (x, y)'s list (light clip depths 0..1 and optical depths, in list
+   * order), and its resolved curve (AdaptiveNodes: node depths and
+   * optical depths; RegularSlices: the slices' accumulated optical depths
+   * in `opticalDepths`, `depths` empty). False when there is none.
+   */
+  VTK_WRAPEXCLUDE bool GetTexelFragments(
+    int x, int y, std::vector<double>& depths, std::vector<double>& opticalDepths);
+  VTK_WRAPEXCLUDE bool GetTexelCurve(
+    int x, int y, std::vector<double>& depths, std::vector<double>& opticalDepths);
+  /** The texel with the longest list of the last frame (false: none). */
+  VTK_WRAPEXCLUDE bool GetLongestListTexel(int& x, int& y);
+  /** The casters' light depth range (0..1), as the slices use it. */
+  VTK_WRAPEXCLUDE void GetCasterDepthRange(double range[2]) const;
+  ///@}
+
   bool HasWork(const vtkFXSceneInfo& scene) override;
   unsigned int GetRequiredChannels() override;
   Output GetOutput(const char* name) override;
@@ -268,6 +288,7 @@ protected:
   vtkSmartPointer<vtkCamera> LightCamera;
   vtkSmartPointer<vtkMatrix4x4> LightProjection;
   vtkSmartPointer<vtkMatrix4x4> ViewToLight; // this frame's, transposed for GLSL
+  float SliceRange[2] = { 0.0f, 1.0f };      // this frame's casters' light depths
   vtkSmartPointer<vtkTranslucentPass> CasterPass;
   unsigned int Buffers[4] = { 0, 0, 0, 0 }; // heads, nodes, counter, counts per texel
   vtkIdType LongestList = 0;                // of the last capture
