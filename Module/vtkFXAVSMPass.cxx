@@ -2,6 +2,7 @@
 
 #include "vtkFXAVSMCapture.h"
 #include "vtkFXAVSMCurves.h"
+#include "vtkFXAVSMLightDepth.h"
 #include "vtkFXAVSMLists.h"
 #include "vtkFXAVSMLookupFS.h"
 #include "vtkFXAVSMResolveFS.h"
@@ -67,6 +68,18 @@ bool Contains(const std::string& s, const char* what)
 
 // Storage buffers, their clears, program-interface queries and memory
 // barriers: all of OpenGL 4.3 (llvmpipe has 4.5).
+// Lights a map can be made for: directional ones (an orthographic view)
+// and spot lights (a perspective view of twice the cone), not headlights
+// (they cast no visible shadow) nor omnidirectional positional lights.
+bool IsCasting(vtkLight* light)
+{
+  if (light->LightTypeIsHeadlight())
+  {
+    return false;
+  }
+  return !light->GetPositional() || light->GetConeAngle() < 89.0;
+}
+
 bool StorageBuffersSupported()
 {
   return glewIsSupported("GL_VERSION_4_3");
@@ -98,7 +111,7 @@ bool vtkFXAVSMPass::HasWork(const vtkFXSceneInfo& scene)
   for (size_t i = 0; i < scene.Lights.size(); ++i)
   {
     vtkLight* light = scene.Lights[i];
-    if (!light->GetPositional() && !light->LightTypeIsHeadlight())
+    if (IsCasting(light))
     {
       this->CastingLight = light;
       this->LightIndex = static_cast<int>(i);
@@ -286,20 +299,50 @@ void vtkFXAVSMPass::FitLightCamera(vtkOpenGLRenderer* ren)
   // Any up vector not along the light.
   const double up[3] = { std::fabs(direction[1]) < 0.9 ? 0.0 : 1.0,
     std::fabs(direction[1]) < 0.9 ? 1.0 : 0.0, 0.0 };
-  const double position[3] = { center[0] - 2.0 * radius * direction[0],
-    center[1] - 2.0 * radius * direction[1], center[2] - 2.0 * radius * direction[2] };
   vtkCamera* camera = this->LightCamera;
-  camera->SetPosition(position);
-  camera->SetFocalPoint(center);
-  camera->SetViewUp(up);
-  // glOrtho(-r, r, -r, r, r, 3r): the square map covers the bounding
-  // sphere whatever the window's aspect.
   vtkMatrix4x4* p = this->LightProjection;
-  p->Identity();
-  p->SetElement(0, 0, 1.0 / radius);
-  p->SetElement(1, 1, 1.0 / radius);
-  p->SetElement(2, 2, -1.0 / radius);
-  p->SetElement(2, 3, -2.0);
+  p->Zero();
+  this->LightPerspective = this->CastingLight->GetPositional() != 0;
+  if (this->LightPerspective)
+  {
+    // A spot light: the perspective view from the light through its cone.
+    // Depth from just in front of the light (it may sit inside the data)
+    // to the far side of the props' bounding sphere.
+    const double* from = this->CastingLight->GetTransformedPosition();
+    const double toCenter = std::sqrt(vtkMath::Distance2BetweenPoints(from, center));
+    const double farPlane = std::max(toCenter + radius, 1e-30);
+    const double nearPlane = std::max(toCenter - radius, 1e-3 * farPlane);
+    const double f = 1.0 / std::tan(vtkMath::RadiansFromDegrees(this->CastingLight->GetConeAngle()));
+    const double focal[3] = { from[0] + direction[0], from[1] + direction[1],
+      from[2] + direction[2] };
+    camera->SetPosition(from);
+    camera->SetFocalPoint(focal);
+    camera->SetViewUp(up);
+    p->SetElement(0, 0, f);
+    p->SetElement(1, 1, f);
+    p->SetElement(2, 2, -(farPlane + nearPlane) / (farPlane - nearPlane));
+    p->SetElement(2, 3, -2.0 * farPlane * nearPlane / (farPlane - nearPlane));
+    p->SetElement(3, 2, -1.0);
+    this->LightNearFar[0] = nearPlane;
+    this->LightNearFar[1] = farPlane;
+  }
+  else
+  {
+    // glOrtho(-r, r, -r, r, r, 3r) from 2r before the centre: the square
+    // map covers the bounding sphere whatever the window's aspect.
+    const double position[3] = { center[0] - 2.0 * radius * direction[0],
+      center[1] - 2.0 * radius * direction[1], center[2] - 2.0 * radius * direction[2] };
+    camera->SetPosition(position);
+    camera->SetFocalPoint(center);
+    camera->SetViewUp(up);
+    p->SetElement(0, 0, 1.0 / radius);
+    p->SetElement(1, 1, 1.0 / radius);
+    p->SetElement(2, 2, -1.0 / radius);
+    p->SetElement(2, 3, -2.0);
+    p->SetElement(3, 3, 1.0);
+    this->LightNearFar[0] = radius;
+    this->LightNearFar[1] = 3.0 * radius;
+  }
   camera->SetExplicitProjectionTransformMatrix(p);
   camera->UseExplicitProjectionTransformMatrixOn();
 }
@@ -317,8 +360,8 @@ void vtkFXAVSMPass::CasterDepthRange(float range[2]) const
     double ndcMin[3], ndcMax[3];
     if (b && vtkFXRenderUtilities::ProjectBox(b, &toClip->Element[0][0], ndcMin, ndcMax) == 0)
     {
-      lo = std::min(lo, 0.5 * ndcMin[2] + 0.5);
-      hi = std::max(hi, 0.5 * ndcMax[2] + 0.5);
+      lo = std::min(lo, this->LightDepthFromNDC(ndcMin[2]));
+      hi = std::max(hi, this->LightDepthFromNDC(ndcMax[2]));
     }
   }
   range[0] = static_cast<float>(std::max(0.0, std::min(lo, hi)));
@@ -369,6 +412,7 @@ void vtkFXAVSMPass::BindBuffers(vtkShaderProgram* program)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, this->Buffers[i]);
   }
   program->SetUniformi("fxAVSMSize", this->ShadowMapSize);
+  this->SetLightDepthUniforms(program);
   if (program->IsUniformUsed("fxAVSMCapacity"))
   {
     program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->Capacity));
@@ -408,6 +452,8 @@ bool vtkFXAVSMPass::PreReplaceShaderValues(
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec", StorageExtension, false);
   vtkShaderProgram::Substitute(
     fragmentShader, "//VTK::Output::Dec", std::string("//VTK::Output::Dec\n") + vtkFXAVSMLists, false);
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::Output::Dec",
+    std::string("//VTK::Output::Dec\n") + vtkFXAVSMLightDepth, false);
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::TCoord::Impl",
     std::string("//VTK::TCoord::Impl\n") + CaptureMarker + "\n" + vtkFXAVSMCapture, false);
   return true;
@@ -682,14 +728,38 @@ std::string vtkFXAVSMPass::CurveCode() const
     fetch << "  tau[" << i << "] = curve" << nodes / 4 + i / 4 << "." << c << ";\n";
   }
   std::string code = vtkFXAVSMCurves;
+  vtkShaderProgram::Substitute(code, "//VTK::FXAVSMLightDepth::Dec", vtkFXAVSMLightDepth, false);
   vtkShaderProgram::Substitute(code, "//VTK::FXAVSMLookup::Samplers", samplers.str(), false);
   vtkShaderProgram::Substitute(code, "//VTK::FXAVSMLookup::Fetch", fetch.str(), false);
   vtkShaderProgram::Substitute(code, "//VTK::FXAVSMLookup::SliceFetch", sliceFetch.str(), false);
   return code;
 }
 
+void vtkFXAVSMPass::SetLightDepthUniforms(vtkShaderProgram* program)
+{
+  if (program->IsUniformUsed("fxAVSMPerspective"))
+  {
+    program->SetUniformi("fxAVSMPerspective", this->LightPerspective ? 1 : 0);
+    const float nearFar[2] = { static_cast<float>(this->LightNearFar[0]),
+      static_cast<float>(this->LightNearFar[1]) };
+    program->SetUniform2f("fxAVSMNearFar", nearFar);
+  }
+}
+
+double vtkFXAVSMPass::LightDepthFromNDC(double ndcZ) const
+{
+  if (!this->LightPerspective)
+  {
+    return 0.5 * ndcZ + 0.5;
+  }
+  const double n = this->LightNearFar[0], f = this->LightNearFar[1];
+  const double distance = 2.0 * n * f / (f + n - ndcZ * (f - n));
+  return (distance - n) / (f - n);
+}
+
 void vtkFXAVSMPass::SetCurveUniforms(vtkShaderProgram* program)
 {
+  this->SetLightDepthUniforms(program);
   program->SetUniformMatrix("fxViewToLight", this->ViewToLight);
   program->SetUniformf("fxBias", static_cast<float>(this->Bias));
   if (this->Exact)

@@ -4,9 +4,11 @@
  *
  * After Salvi, Vidimce, Lauritzen, Lefohn, "Adaptive Volumetric Shadow
  * Maps" (EGSR 2010; seed 003). For the first light that can cast (switched
- * on, directional, not a headlight), the translucent props are rendered from
- * the light through an orthographic view fitted to the visible props'
- * bounds (ShadowMapSize texels square). Every fragment, instead of being
+ * on, not a headlight, directional or a spot light with a cone below 89
+ * degrees), the translucent props are rendered from the light through an
+ * orthographic view fitted to the visible props' bounds, or for a spot
+ * light the perspective view of its cone, from just in front of it to the
+ * far side of the props (ShadowMapSize texels square). Every fragment, instead of being
  * drawn, joins its texel's linked list (shader storage buffers and an
  * atomic counter: OpenGL 4.3) as a light-
  * space depth and an optical depth -ln(1 - opacity), so that products of
@@ -40,7 +42,8 @@
  * does not shadow itself: casters within Bias of a fragment do not
  * count.
  *
- * Limitations of this first version: one casting light (directional);
+ * Limitations of this first version: one casting light, directional or
+ * spot (a positional light without a cone would need six maps);
  * point-gaussian splats are captured as the surfaces they draw.
  *
  * Cost: the translucent props drawn once more at ShadowMapSize^2, 16 bytes
@@ -133,8 +136,9 @@ public:
 
   /**
    * Receiver depth offset towards the light, as a fraction of the light
-   * view's depth range (0..0.1, default 1e-3): casters closer to a
-   * receiver than this do not shadow it.
+   * view's depth range (0..0.1, default 1e-3; distances along the light,
+   * for spot lights too): casters closer to a receiver than this do not
+   * shadow it.
    */
   vtkSetClampMacro(Bias, double, 0.0, 0.1);
   vtkGetMacro(Bias, double);
@@ -259,6 +263,8 @@ protected:
   std::string CurveDefines(bool exact) const;
   std::string CurveCode() const;
   void SetCurveUniforms(vtkShaderProgram* program);
+  void SetLightDepthUniforms(vtkShaderProgram* program);
+  double LightDepthFromNDC(double ndcZ) const; // see vtkFXAVSMLightDepth.glsl
   void ReleaseCurveUnits();
 
   int ShadowMapSize = 512;
@@ -289,6 +295,8 @@ protected:
   vtkSmartPointer<vtkMatrix4x4> LightProjection;
   vtkSmartPointer<vtkMatrix4x4> ViewToLight; // this frame's, transposed for GLSL
   float SliceRange[2] = { 0.0f, 1.0f };      // this frame's casters' light depths
+  bool LightPerspective = false;             // a spot light's view
+  double LightNearFar[2] = { 1.0, 3.0 };     // the light view's depth range
   vtkSmartPointer<vtkTranslucentPass> CasterPass;
   unsigned int Buffers[4] = { 0, 0, 0, 0 }; // heads, nodes, counter, counts per texel
   vtkIdType LongestList = 0;                // of the last capture

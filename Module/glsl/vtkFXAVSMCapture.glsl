@@ -17,7 +17,7 @@
         ivec2 fxTexel = clamp(ivec2(gl_FragCoord.xy), ivec2(0), ivec2(fxAVSMSize - 1));
         int fxSlot = fxTexel.y * fxAVSMSize + fxTexel.x;
         uint fxHead = atomicExchange(fxAVSMHeads[fxSlot], fxIndex);
-        fxAVSMNodes[fxIndex] = fxAVSMNode(gl_FragCoord.z, fxTau, fxHead, 0u);
+        fxAVSMNodes[fxIndex] = fxAVSMNode(fxLightDepthOfFragment(), fxTau, fxHead, 0u);
         atomicMax(fxAVSMLongestList, atomicAdd(fxAVSMCounts[fxSlot], 1u) + 1u);
       }
     }

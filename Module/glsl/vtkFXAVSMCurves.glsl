@@ -15,8 +15,9 @@
 // their transmittances blended bilinearly (percentage-closer filtering of
 // the curves, as the AVSM demo's AVSMBilinearSample). Outside the map the
 // light is unshadowed.
+//VTK::FXAVSMLightDepth::Dec
 uniform mat4 fxViewToLight;
-uniform float fxBias;      // light clip depth (0..1)
+uniform float fxBias;      // light depth (0..1, vtkFXAVSMLightDepth)
 uniform vec2 fxSliceRange; // FX_SLICES
 #if !FX_EXACT
 //VTK::FXAVSMLookup::Samplers
@@ -93,9 +94,8 @@ float fxTransmittance(ivec2 texel, float depth)
 float fxLightTransmittance(vec3 positionVC)
 {
   vec4 light = fxViewToLight * vec4(positionVC, 1.0);
-  vec3 p = light.xyz / light.w;
-  vec2 uv = (0.5 * p.xy + 0.5) * float(fxAVSMSize);
-  float depth = 0.5 * p.z + 0.5 - fxBias;
+  vec2 uv = (0.5 * light.xy / light.w + 0.5) * float(fxAVSMSize);
+  float depth = fxLightDepthFromClip(light) - fxBias;
   float visibility;
 #if FX_BILINEAR
   vec2 corner = uv - 0.5;

@@ -14,6 +14,8 @@
 // - a list buffer far too small: the capture counts what it dropped, the
 //   buffer grows, and the next frame is right;
 // - the same under a perspective camera;
+// - a spot light (perspective map) gives the same shadow, and from
+//   between two slabs only the slab below it casts;
 // - a translucent receiver under a translucent caster: its lit colour
 //   loses the caster's share (from 8-bit images, within 0.04);
 // - nothing translucent: the pass is left out, with its buffers.
@@ -107,10 +109,24 @@ vtkRenderer* GroundScene(vtkRenderWindow* window, bool parallel, vtkActor** grou
 
 // The ground, the light and `casters` in a pipeline with `avsm`; renders
 // `frames` frames and returns the visibility per pixel (rows bottom-up).
+// With spotHeight > 0 the light is a spot light that high over the origin,
+// pointing down, with a cone of spotCone degrees.
 std::vector<float> Visibility(vtkRenderWindow* window, vtkFXAVSMPass* avsm,
-  const std::vector<vtkSmartPointer<vtkActor>>& casters, bool parallel, int frames = 1)
+  const std::vector<vtkSmartPointer<vtkActor>>& casters, bool parallel, int frames = 1,
+  double spotHeight = 0.0, double spotCone = 60.0)
 {
   vtkRenderer* renderer = GroundScene(window, parallel);
+  if (spotHeight > 0.0)
+  {
+    renderer->RemoveAllLights();
+    vtkNew<vtkLight> spot;
+    spot->SetLightTypeToSceneLight();
+    spot->PositionalOn();
+    spot->SetPosition(0.0, 0.0, spotHeight);
+    spot->SetFocalPoint(0.0, 0.0, 0.0);
+    spot->SetConeAngle(spotCone);
+    renderer->AddLight(spot);
+  }
   for (const auto& caster : casters)
   {
     renderer->AddActor(caster);
@@ -384,6 +400,17 @@ int TestAVSM(int, char*[])
   }
 
   FX_CHECK(CheckTranslucentReceiver(window) == EXIT_SUCCESS, "translucent receiver");
+
+  // A spot light: the perspective map gives the same shadow; from between
+  // two slabs (the light inside the "cloud") only the one below casts (a
+  // cone of 85 degrees, so that the whole view is in it).
+  FX_CHECK(CheckHalves("spot light, one slab",
+             Visibility(window, MakeAVSM(8, false, true), { Quad(-10, 0, 1, 0.3) }, true, 1, 6.0),
+             0.7, 1e-3) == EXIT_SUCCESS, "");
+  FX_CHECK(CheckHalves("spot light between two slabs",
+             Visibility(window, MakeAVSM(8, false, true),
+               { Quad(-10, 0, 1, 0.3), Quad(-10, 0, 2, 0.5) }, true, 1, 1.5, 85.0),
+             0.7, 1e-3) == EXIT_SUCCESS, "");
 
   // Nothing translucent: the pass is left out and allocates nothing.
   {
