@@ -159,7 +159,7 @@ void WriteRayPlot(std::vector<Method>& methods, const std::string& title, const 
     }
   }
   WriteLinePlot(lines, title + " (texel " + std::to_string(x) + ", " + std::to_string(y) + ")",
-    "light depth (clip, 0..1)", "transmittance", path);
+    "light depth (0..1, linear along the light)", "transmittance", path);
 }
 
 // VTK's own shadows on the renderer: the shadow-map baker and pass of

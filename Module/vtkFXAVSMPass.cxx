@@ -16,6 +16,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkProp.h"
+#include "vtkPropCollection.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -77,7 +78,7 @@ bool IsCasting(vtkLight* light)
   {
     return false;
   }
-  return !light->GetPositional() || light->GetConeAngle() < 89.0;
+  return !light->GetPositional() || (light->GetConeAngle() > 0.0 && light->GetConeAngle() < 89.0);
 }
 
 bool StorageBuffersSupported()
@@ -268,10 +269,29 @@ void vtkFXAVSMPass::UnbindCompositeResources()
   }
 }
 
+void vtkFXAVSMPass::GatherCasters(vtkRenderer* ren)
+{
+  // Every visible translucent prop casts, also one outside the viewer's
+  // frustum (VTK's culler has left those out of the frame's prop list) whose
+  // shadow falls on what the viewer sees.
+  this->Casters.clear();
+  vtkPropCollection* props = ren->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry())
+    {
+      this->Casters.push_back(prop);
+    }
+  }
+}
+
 void vtkFXAVSMPass::FitLightCamera(vtkOpenGLRenderer* ren)
 {
-  // An orthographic view along the light, around the visible props: every
-  // caster and receiver is inside the map.
+  // A view from the light that holds every caster and receiver: along a
+  // directional light, an orthographic box around the visible props; from
+  // a spot light, the perspective view of its cone.
   double bounds[6];
   ren->ComputeVisiblePropBounds(bounds);
   double center[3] = { 0.0, 0.0, 0.0 };
@@ -309,10 +329,15 @@ void vtkFXAVSMPass::FitLightCamera(vtkOpenGLRenderer* ren)
     // Depth from just in front of the light (it may sit inside the data)
     // to the far side of the props' bounding sphere.
     const double* from = this->CastingLight->GetTransformedPosition();
-    const double toCenter = std::sqrt(vtkMath::Distance2BetweenPoints(from, center));
-    const double farPlane = std::max(toCenter + radius, 1e-30);
-    const double nearPlane = std::max(toCenter - radius, 1e-3 * farPlane);
-    const double f = 1.0 / std::tan(vtkMath::RadiansFromDegrees(this->CastingLight->GetConeAngle()));
+    // Depth is the distance along the light's axis (clip w): the props'
+    // bounding sphere spans the centre's axial distance plus or minus r,
+    // wherever the spot is aimed.
+    const double toCenter[3] = { center[0] - from[0], center[1] - from[1], center[2] - from[2] };
+    const double axial = vtkMath::Dot(toCenter, direction);
+    const double farPlane = std::max(axial + radius, 1e-30);
+    const double nearPlane = std::max(axial - radius, 1e-3 * farPlane);
+    const double cone = std::max(0.5, this->CastingLight->GetConeAngle());
+    const double f = 1.0 / std::tan(vtkMath::RadiansFromDegrees(cone));
     const double focal[3] = { from[0] + direction[0], from[1] + direction[1],
       from[2] + direction[2] };
     camera->SetPosition(from);
@@ -349,7 +374,9 @@ void vtkFXAVSMPass::FitLightCamera(vtkOpenGLRenderer* ren)
 
 void vtkFXAVSMPass::CasterDepthRange(float range[2]) const
 {
-  // The casters' bounds seen from the light, in light clip depth (0..1).
+  // The casters' bounds seen from the light, in light depth (0..1, see
+  // vtkFXAVSMLightDepth.glsl). A box reaching behind a spot light (the
+  // light inside the data) starts at the near plane.
   double lo = 1.0, hi = 0.0;
   vtkNew<vtkMatrix4x4> toClip;
   vtkMatrix4x4::Multiply4x4(
@@ -358,11 +385,13 @@ void vtkFXAVSMPass::CasterDepthRange(float range[2]) const
   {
     const double* b = prop->GetBounds();
     double ndcMin[3], ndcMax[3];
-    if (b && vtkFXRenderUtilities::ProjectBox(b, &toClip->Element[0][0], ndcMin, ndcMax) == 0)
+    const int behind = b ? vtkFXRenderUtilities::ProjectBox(b, &toClip->Element[0][0], ndcMin, ndcMax) : 8;
+    if (behind == 8)
     {
-      lo = std::min(lo, this->LightDepthFromNDC(ndcMin[2]));
-      hi = std::max(hi, this->LightDepthFromNDC(ndcMax[2]));
+      continue;
     }
+    lo = std::min(lo, behind > 0 ? 0.0 : this->LightDepthFromNDC(ndcMin[2]));
+    hi = std::max(hi, this->LightDepthFromNDC(ndcMax[2]));
   }
   range[0] = static_cast<float>(std::max(0.0, std::min(lo, hi)));
   range[1] = static_cast<float>(std::min(1.0, std::max(lo, hi)));
@@ -510,6 +539,10 @@ void vtkFXAVSMPass::EndForwardShading(const vtkRenderState* s)
   }
   this->PostRender(s);
   this->ReleaseCurveUnits();
+  for (GLuint i = 0; i < NumberOfBuffers; ++i)
+  {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0); // exact mode bound the lists
+  }
   this->Receiving = false;
   this->ShaderStageTime.Modified();
 }
@@ -850,6 +883,7 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
     vtkFXRenderUtilities::Release(this->Visibility, window);
     return;
   }
+  this->GatherCasters(ren);
   this->FitLightCamera(ren);
   // Kept for the frame: the casters are forgotten after Render, and VTK's
   // translucent step (translucent receivers) comes later.

@@ -36,7 +36,8 @@
  * atomic counter; no out-of-bounds write happens) drops the extra fragments
  * that frame, warns once and grows for the next one.
  *
- * Receivers: opaque props (the look-up above) and translucent props, whose
+ * Receivers: opaque props (the look-up above) and translucent props (in a
+ * scene that has some opaque prop: the pass runs after the G-buffer), whose
  * VTK shaders scale the casting light's terms by the transmittance at each
  * fragment during the pipeline's translucent step. A translucent surface
  * does not shadow itself: casters within Bias of a fragment do not
@@ -72,6 +73,7 @@ class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderer;
+class vtkRenderer;
 class vtkTextureObject;
 class vtkTranslucentPass;
 
@@ -191,7 +193,7 @@ public:
   /**
    * The curves of the last frame (for tests and debugging), n = the nodes
    * used. AdaptiveNodes: textures 0 .. n/4 - 1 hold the nodes' depths
-   * (RGBA32F, four nodes each, light clip depth 0..1, 3e38 for unused
+   * (RGBA32F, four nodes each, light depth 0..1 (vtkFXAVSMLightDepth.glsl), 3e38 for unused
    * nodes), n/4 .. n/2 - 1 their optical depths. RegularSlices: the n/2
    * textures hold the 2n slices' accumulated optical depths, nearest first.
    * None in Exact mode.
@@ -204,7 +206,7 @@ public:
   /**
    * One light ray of the last frame, for plots and tests (call with the
    * window's context current, after a frame): the fragments of texel
-   * (x, y)'s list (light clip depths 0..1 and optical depths, in list
+   * (x, y)'s list (light depths 0..1, see vtkFXAVSMLightDepth.glsl, and optical depths, in list
    * order), and its resolved curve (AdaptiveNodes: node depths and
    * optical depths; RegularSlices: the slices' accumulated optical depths
    * in `opticalDepths`, `depths` empty). False when there is none.
@@ -253,6 +255,7 @@ protected:
   ~vtkFXAVSMPass() override;
 
   int Nodes() const; // NumberOfNodes rounded to 4, 8 or 16
+  void GatherCasters(vtkRenderer* ren);
   void FitLightCamera(vtkOpenGLRenderer* ren);
   void CasterDepthRange(float range[2]) const;
   bool EnsureBuffers();

@@ -110,10 +110,10 @@ vtkRenderer* GroundScene(vtkRenderWindow* window, bool parallel, vtkActor** grou
 // The ground, the light and `casters` in a pipeline with `avsm`; renders
 // `frames` frames and returns the visibility per pixel (rows bottom-up).
 // With spotHeight > 0 the light is a spot light that high over the origin,
-// pointing down, with a cone of spotCone degrees.
+// pointing at (spotAimX, 0, 0), with a cone of spotCone degrees.
 std::vector<float> Visibility(vtkRenderWindow* window, vtkFXAVSMPass* avsm,
   const std::vector<vtkSmartPointer<vtkActor>>& casters, bool parallel, int frames = 1,
-  double spotHeight = 0.0, double spotCone = 60.0)
+  double spotHeight = 0.0, double spotCone = 60.0, double spotAimX = 0.0)
 {
   vtkRenderer* renderer = GroundScene(window, parallel);
   if (spotHeight > 0.0)
@@ -123,7 +123,7 @@ std::vector<float> Visibility(vtkRenderWindow* window, vtkFXAVSMPass* avsm,
     spot->SetLightTypeToSceneLight();
     spot->PositionalOn();
     spot->SetPosition(0.0, 0.0, spotHeight);
-    spot->SetFocalPoint(0.0, 0.0, 0.0);
+    spot->SetFocalPoint(spotAimX, 0.0, 0.0);
     spot->SetConeAngle(spotCone);
     renderer->AddLight(spot);
   }
@@ -406,6 +406,10 @@ int TestAVSM(int, char*[])
   // cone of 85 degrees, so that the whole view is in it).
   FX_CHECK(CheckHalves("spot light, one slab",
              Visibility(window, MakeAVSM(8, false, true), { Quad(-10, 0, 1, 0.3) }, true, 1, 6.0),
+             0.7, 1e-3) == EXIT_SUCCESS, "");
+  FX_CHECK(CheckHalves("spot light aimed off the data's centre",
+             Visibility(window, MakeAVSM(8, false, true), { Quad(-10, 0, 1, 0.3) }, true, 1, 6.0,
+               80.0, -8.0),
              0.7, 1e-3) == EXIT_SUCCESS, "");
   FX_CHECK(CheckHalves("spot light between two slabs",
              Visibility(window, MakeAVSM(8, false, true),
