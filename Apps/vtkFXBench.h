@@ -6,6 +6,7 @@
 #include "vtkSmartPointer.h"
 
 #include <fstream>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,25 @@ std::vector<float> Download(vtkRenderWindow* window, vtkTextureObject* texture, 
 
 // Wall-clock milliseconds of one finished frame.
 double TimedRender(vtkRenderWindow* window, vtkTimerLog* timer);
+
+// Times `frames` frames of every method's window, the methods in turn
+// within each frame (so that a slow stretch of the machine falls on all of
+// them alike), appending to each method's FrameMs; progress goes to stderr
+// as "<label>: frame f/frames".
+template <typename Method>
+void TimeFramesInTurn(
+  std::vector<Method>& methods, int frames, const std::string& label, vtkTimerLog* timer)
+{
+  for (int f = 0; f < frames; ++f)
+  {
+    std::cerr << "\r" << label << ": frame " << f + 1 << "/" << frames << std::flush;
+    for (auto& m : methods)
+    {
+      m.FrameMs.push_back(TimedRender(m.Window, timer));
+    }
+  }
+  std::cerr << "\n";
+}
 
 // An offscreen window without multisampling, of the options' size.
 vtkSmartPointer<vtkRenderWindow> MakeWindow(const Options& o);

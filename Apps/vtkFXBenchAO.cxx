@@ -395,16 +395,8 @@ int BenchAO(const Options& o)
           << radius << ", " << truth.CoveredPixels << " pixels; standard error bound of the reference "
           << "(RMS over pixels) " << truth.StandardErrorRMS << "; " << truth.Seconds << " s\n";
 
-    for (int f = 0; f < o.Frames; ++f)
-    {
-      std::cerr << "\r[" << s + 1 << "/" << o.Inputs.size() << "] " << input << ": frame "
-                << f + 1 << "/" << o.Frames << std::flush;
-      for (auto& m : methods)
-      {
-        m.FrameMs.push_back(TimedRender(m.Window, timer));
-      }
-    }
-    std::cerr << "\n";
+    TimeFramesInTurn(methods, o.Frames,
+      "[" + std::to_string(s + 1) + "/" + std::to_string(o.Inputs.size()) + "] " + input, timer);
 
     const auto base = vtkFXScenes::Capture(methods[0].Window);
     const double vtkBase = Median(methods[0].FrameMs), fxBase = Median(methods[1].FrameMs);

@@ -285,15 +285,7 @@ int BenchAVSM(const Options& o)
       m.Window->Render(); // warm up; the list buffer grows to the scene here
       m.Window->Render();
     }
-    for (int f = 0; f < o.Frames; ++f)
-    {
-      std::cerr << "\r" << input << ": frame " << f + 1 << "/" << o.Frames << std::flush;
-      for (auto& m : methods)
-      {
-        m.FrameMs.push_back(TimedRender(m.Window, timer));
-      }
-    }
-    std::cerr << "\n";
+    TimeFramesInTurn(methods, o.Frames, input, timer);
     for (auto& m : methods)
     {
       m.Image = vtkFXScenes::Capture(m.Window);

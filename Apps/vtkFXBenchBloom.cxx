@@ -295,15 +295,7 @@ int BenchBloom(const Options& o)
       m.FrameMs.clear();
       m.Window->Render(); // warm up
     }
-    for (int f = 0; f < o.Frames; ++f)
-    {
-      std::cerr << "\r" << input << ": frame " << f + 1 << "/" << o.Frames << std::flush;
-      for (auto& m : methods)
-      {
-        m.FrameMs.push_back(TimedRender(m.Window, timer));
-      }
-    }
-    std::cerr << "\n";
+    TimeFramesInTurn(methods, o.Frames, input, timer);
     for (auto& m : methods)
     {
       m.Image = vtkFXScenes::Capture(m.Window);
