@@ -327,10 +327,19 @@ int BenchAVSM(const Options& o)
           << listBytes << "\n";
       std::cout << std::fixed << std::setprecision(2) << input << ": " << m.Name << " ("
                 << m.Setting << ") frame " << frame << " ms, " << frame / none
-                << "x the frame without shadows; transmittance RMSE " << std::setprecision(4)
-                << rmse << ", PSNR " << std::setprecision(2) << psnr << " dB; capture " << capture
-                << ", resolve " << resolve << ", look-up " << lookup << " ms; " << curveBytes
-                << " B/texel kept, " << listBytes << " B/texel of lists" << std::endl;
+                << "x the frame without shadows; ";
+      if (m.Nodes < 0)
+      {
+        std::cout << "no transmittance (opaque shadows), image PSNR " << psnr << " dB"
+                  << std::endl;
+      }
+      else
+      {
+        std::cout << "transmittance RMSE " << std::setprecision(4) << rmse << ", PSNR "
+                  << std::setprecision(2) << psnr << " dB; capture " << capture << ", resolve "
+                  << resolve << ", look-up " << lookup << " ms; " << curveBytes
+                  << " B/texel kept, " << listBytes << " B/texel of lists" << std::endl;
+      }
       if (m.AVSM)
       {
         const int family = m.Exact ? 2 : m.Representation == slices ? 1 : 0;
