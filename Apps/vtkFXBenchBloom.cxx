@@ -118,7 +118,7 @@ public:
           "        texelFetch(fxEmission, clamp(p + fxStep * ivec2(x, y), ivec2(0), size - 1), 0).rgb;\n"
           "  gl_FragData[0] = vec4(sum, 0.0);\n"
           "}\n";
-    vtkShaderProgram* program = vtkFXRenderUtilities::ReadyQuad(this->Quad, this->Source, window, fs.str());
+    vtkShaderProgram* program = vtkFXRenderUtilities::ReadyQuad(this->Quad, window, fs.str());
     if (!program)
     {
       return;
@@ -128,20 +128,19 @@ public:
     program->SetUniformi("fxEmission", emission->GetTextureUnit());
     program->SetUniform1fv("fxWeights", static_cast<int>(this->Weights.size()), this->Weights.data());
     program->SetUniformi("fxStep", this->Step);
-    this->Quad->Render();
+    this->Quad.Helper->Render();
     emission->Deactivate();
   }
   void ReleaseGraphicsResources(vtkWindow* w) override
   {
-    vtkFXRenderUtilities::ReleaseQuad(this->Quad, this->Source, w);
+    vtkFXRenderUtilities::ReleaseQuad(this->Quad, w);
   }
 
 private:
   int Taps = 21;
   int Step = 1;
   std::vector<float> Weights;
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
-  std::string Source;
+  vtkFXRenderUtilities::FullScreenQuad Quad;
 };
 vtkStandardNewMacro(DirectGlow);
 

@@ -711,7 +711,7 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
   }
   vtkFXRenderUtilities::RenderTargetScope target(window, this->ResolveFrameBuffer, targetList);
   if (vtkShaderProgram* program =
-        vtkFXRenderUtilities::ReadyQuad(this->ResolveQuad, this->ResolveSource, window, fs))
+        vtkFXRenderUtilities::ReadyQuad(this->ResolveQuad, window, fs))
   {
     this->BindBuffers(program);
     program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->StoredFragments));
@@ -719,7 +719,7 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
     {
       program->SetUniform2f("fxSliceRange", this->SliceRange);
     }
-    this->ResolveQuad->Render();
+    this->ResolveQuad.Helper->Render();
   }
 }
 
@@ -848,7 +848,7 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
 
   vtkFXRenderUtilities::RenderTargetScope target(window, this->LookUpFrameBuffer, this->Visibility);
   vtkShaderProgram* program =
-    vtkFXRenderUtilities::ReadyQuad(this->LookUpQuad, this->LookUpSource, window, fs);
+    vtkFXRenderUtilities::ReadyQuad(this->LookUpQuad, window, fs);
   if (!program)
   {
     return;
@@ -857,7 +857,7 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
   program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());
   vtkFXRenderUtilities::SetFrustumRayUniforms(program, ren);
   this->SetCurveUniforms(program);
-  this->LookUpQuad->Render();
+  this->LookUpQuad.Helper->Render();
   depth->Deactivate();
   this->ReleaseCurveUnits();
 }
@@ -939,8 +939,8 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
 void vtkFXAVSMPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->CasterPass->ReleaseGraphicsResources(w);
-  vtkFXRenderUtilities::ReleaseQuad(this->ResolveQuad, this->ResolveSource, w);
-  vtkFXRenderUtilities::ReleaseQuad(this->LookUpQuad, this->LookUpSource, w);
+  vtkFXRenderUtilities::ReleaseQuad(this->ResolveQuad, w);
+  vtkFXRenderUtilities::ReleaseQuad(this->LookUpQuad, w);
   for (auto& t : this->Curves)
   {
     vtkFXRenderUtilities::Release(t, w);

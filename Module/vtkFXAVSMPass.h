@@ -58,11 +58,11 @@
 
 #include "vtkFXEffectPass.h"
 #include "vtkFXModule.h"
+#include "vtkFXRenderUtilities.h" // for the full-screen quads
 #include "vtkSmartPointer.h"
 #include "vtkTimeStamp.h" // for the shader stage time
 #include "vtkWrappingHints.h" // for VTK_WRAPEXCLUDE
 
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -70,7 +70,6 @@ class vtkCamera;
 class vtkLight;
 class vtkMatrix4x4;
 class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderer;
 class vtkRenderer;
@@ -310,10 +309,8 @@ protected:
   vtkSmartPointer<vtkOpenGLFramebufferObject> ResolveFrameBuffer;
   vtkSmartPointer<vtkTextureObject> Visibility;
   vtkSmartPointer<vtkOpenGLFramebufferObject> LookUpFrameBuffer;
-  std::unique_ptr<vtkOpenGLQuadHelper> ResolveQuad;
-  std::string ResolveSource;
-  std::unique_ptr<vtkOpenGLQuadHelper> LookUpQuad;
-  std::string LookUpSource;
+  vtkFXRenderUtilities::FullScreenQuad ResolveQuad;
+  vtkFXRenderUtilities::FullScreenQuad LookUpQuad;
 
 private:
   vtkFXAVSMPass(const vtkFXAVSMPass&) = delete;

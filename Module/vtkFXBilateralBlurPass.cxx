@@ -76,7 +76,7 @@ void vtkFXBilateralBlurPass::RunStage(int mode, vtkOpenGLRenderWindow* window,
   // One framebuffer per stage: its attachment never changes between frames.
   vtkFXRenderUtilities::RenderTargetScope target(window, this->FrameBuffers[mode], output);
   vtkShaderProgram* program =
-    vtkFXRenderUtilities::ReadyQuad(this->Quads[mode], this->QuadSources[mode], window, fs);
+    vtkFXRenderUtilities::ReadyQuad(this->Quads[mode], window, fs);
   if (!program)
   {
     return;
@@ -103,7 +103,7 @@ void vtkFXBilateralBlurPass::RunStage(int mode, vtkOpenGLRenderWindow* window,
   program->SetUniformi("fxStep", step);
   program->SetUniformi("fxRadius", this->Radius);
   program->SetUniformf("fxDepthSigma", static_cast<float>(this->DepthSigma));
-  this->Quads[mode]->Render();
+  this->Quads[mode].Helper->Render();
   input->Deactivate();
   depth->Deactivate();
   normal->Deactivate();
@@ -185,7 +185,7 @@ void vtkFXBilateralBlurPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   for (int i = 0; i < NumberOfModes; ++i)
   {
-    vtkFXRenderUtilities::ReleaseQuad(this->Quads[i], this->QuadSources[i], w);
+    vtkFXRenderUtilities::ReleaseQuad(this->Quads[i], w);
   }
   for (auto* texture : { &this->GuideTexture, &this->Horizontal, &this->Blurred, &this->Upsampled })
   {

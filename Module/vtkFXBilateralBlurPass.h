@@ -34,13 +34,12 @@
 
 #include "vtkFXEffectPass.h"
 #include "vtkFXModule.h"
+#include "vtkFXRenderUtilities.h" // for the full-screen quads
 #include "vtkSmartPointer.h"
 
-#include <memory>
 #include <string>
 
 class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 
@@ -136,8 +135,7 @@ protected:
   Output Result; // what the last Render() wrote
   static constexpr int NumberOfModes = 4; // horizontal, vertical, upsample, guide
   vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffers[NumberOfModes];
-  std::unique_ptr<vtkOpenGLQuadHelper> Quads[NumberOfModes];
-  std::string QuadSources[NumberOfModes];
+  vtkFXRenderUtilities::FullScreenQuad Quads[NumberOfModes];
 
 private:
   vtkFXBilateralBlurPass(const vtkFXBilateralBlurPass&) = delete;

@@ -188,7 +188,7 @@ vtkTextureObject* vtkFXBloomPass::GetGlowTexture()
 vtkShaderProgram* vtkFXBloomPass::ReadyProgram(
   int which, vtkOpenGLRenderWindow* window, const std::string& fs)
 {
-  return vtkFXRenderUtilities::ReadyQuad(this->Quads[which], this->QuadSources[which], window, fs);
+  return vtkFXRenderUtilities::ReadyQuad(this->Quads[which], window, fs);
 }
 
 bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject* color, int levels)
@@ -264,7 +264,7 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
       above->Activate();
       program->SetUniformi("fxSource", above->GetTextureUnit());
     }
-    this->Quads[first ? FirstDown : Down]->Render();
+    this->Quads[first ? FirstDown : Down].Helper->Render();
     for (vtkTextureObject* t : read)
     {
       if (first)
@@ -310,7 +310,7 @@ void vtkFXBloomPass::Upsample(vtkOpenGLRenderWindow* window, int levels)
     program->SetUniform2f("fxCoarseTexel", texel);
     program->SetUniformf("fxCoarseScale", coarsest ? share : 1.0f);
     program->SetUniformf("fxShare", share);
-    this->Quads[Up]->Render();
+    this->Quads[Up].Helper->Render();
     coarse->Deactivate();
     level.Down->Deactivate();
   }
@@ -342,7 +342,7 @@ void vtkFXBloomPass::AddGlow(vtkOpenGLRenderWindow* window, int levels)
   program->SetUniform2f("fxCoarseTexel", texel);
   program->SetUniformf("fxCoarseScale", 1.0f);
   program->SetUniformf("fxIntensity", static_cast<float>(this->Intensity));
-  this->Quads[Final]->Render();
+  this->Quads[Final].Helper->Render();
   glow->Deactivate();
 }
 
@@ -413,7 +413,7 @@ void vtkFXBloomPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   for (int i = 0; i < NumberOfPrograms; ++i)
   {
-    vtkFXRenderUtilities::ReleaseQuad(this->Quads[i], this->QuadSources[i], w);
+    vtkFXRenderUtilities::ReleaseQuad(this->Quads[i], w);
   }
   for (auto& level : this->Levels)
   {

@@ -42,6 +42,7 @@
 
 #include "vtkFXEffectPass.h"
 #include "vtkFXModule.h"
+#include "vtkFXRenderUtilities.h" // for the full-screen quads
 #include "vtkSmartPointer.h"
 
 #include <memory>
@@ -49,7 +50,6 @@
 #include <vector>
 
 class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkTextureObject;
@@ -183,8 +183,7 @@ protected:
     Final,
     NumberOfPrograms
   };
-  std::unique_ptr<vtkOpenGLQuadHelper> Quads[NumberOfPrograms];
-  std::string QuadSources[NumberOfPrograms];
+  vtkFXRenderUtilities::FullScreenQuad Quads[NumberOfPrograms];
 
 private:
   vtkFXBloomPass(const vtkFXBloomPass&) = delete;

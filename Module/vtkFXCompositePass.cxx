@@ -437,7 +437,7 @@ void vtkFXCompositePass::Draw(vtkOpenGLRenderer* ren)
   // (vtkActor::ForceOpaque) shows the background as it does forward.
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  this->Quad->Render();
+  this->Quad.Helper->Render();
 }
 
 void vtkFXCompositePass::Render(const vtkRenderState* s)
@@ -463,7 +463,7 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
     return;
   }
   vtkShaderProgram* program =
-    vtkFXRenderUtilities::ReadyQuad(this->Quad, this->QuadSource, window, fragmentShader);
+    vtkFXRenderUtilities::ReadyQuad(this->Quad, window, fragmentShader);
   if (!program)
   {
     return;
@@ -496,7 +496,7 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
 
 void vtkFXCompositePass::ReleaseGraphicsResources(vtkWindow* w)
 {
-  vtkFXRenderUtilities::ReleaseQuad(this->Quad, this->QuadSource, w);
+  vtkFXRenderUtilities::ReleaseQuad(this->Quad, w);
   vtkFXRenderUtilities::Release(this->LightTexture, w);
   if (this->LightTiles)
   {

@@ -41,6 +41,7 @@
 #include "vtkFXGBufferPass.h" // for the channel count
 #include "vtkFXLightTiles.h" // for the tiles' light entries
 #include "vtkFXModule.h"
+#include "vtkFXRenderUtilities.h" // for the full-screen quads
 #include "vtkRenderPass.h"
 
 #include "vtkSmartPointer.h" // for the contributors
@@ -50,7 +51,6 @@
 #include <vector>
 
 class vtkFXEffectPass;
-class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
@@ -192,8 +192,7 @@ protected:
   vtkSmartPointer<vtkTextureObject> LightTexture;
   std::unique_ptr<vtkFXLightTiles> LightTiles;
   bool LightTilesUsed = false;
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
-  std::string QuadSource;
+  vtkFXRenderUtilities::FullScreenQuad Quad;
 
 private:
   vtkFXCompositePass(const vtkFXCompositePass&) = delete;

@@ -110,7 +110,7 @@ void vtkFXHDRTargetPass::WriteBack(vtkOpenGLRenderWindow* window)
 {
   std::string fs = vtkFXHDRResolveFS;
   vtkShaderProgram* program =
-    vtkFXRenderUtilities::ReadyQuad(this->Quad, this->QuadSource, window, fs);
+    vtkFXRenderUtilities::ReadyQuad(this->Quad, window, fs);
   if (!program)
   {
     return;
@@ -129,7 +129,7 @@ void vtkFXHDRTargetPass::WriteBack(vtkOpenGLRenderWindow* window)
   this->Depth->Activate();
   program->SetUniformi("fxColor", this->Color->GetTextureUnit());
   program->SetUniformi("fxDepth", this->Depth->GetTextureUnit());
-  this->Quad->Render();
+  this->Quad.Helper->Render();
   this->Color->Deactivate();
   this->Depth->Deactivate();
 }
@@ -212,7 +212,7 @@ void vtkFXHDRTargetPass::ReleaseGraphicsResources(vtkWindow* w)
   {
     this->DelegatePass->ReleaseGraphicsResources(w);
   }
-  vtkFXRenderUtilities::ReleaseQuad(this->Quad, this->QuadSource, w);
+  vtkFXRenderUtilities::ReleaseQuad(this->Quad, w);
   vtkFXRenderUtilities::Release(this->Color, w);
   vtkFXRenderUtilities::Release(this->Depth, w);
   vtkFXRenderUtilities::Release(this->FrameBuffer, w);

@@ -30,14 +30,13 @@
 #define vtkFXHDRTargetPass_h
 
 #include "vtkFXModule.h"
+#include "vtkFXRenderUtilities.h" // for the full-screen quads
 #include "vtkRenderPass.h"
 #include "vtkSmartPointer.h"
 
-#include <memory>
 #include <string>
 
 class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLState;
 class vtkTextureObject;
@@ -84,8 +83,7 @@ protected:
   vtkSmartPointer<vtkTextureObject> Color;
   vtkSmartPointer<vtkTextureObject> Depth;
   vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
-  std::string QuadSource;
+  vtkFXRenderUtilities::FullScreenQuad Quad;
 
 private:
   vtkFXHDRTargetPass(const vtkFXHDRTargetPass&) = delete;

@@ -102,37 +102,36 @@ bool vtkFXRenderUtilities::EnsureTexture(vtkSmartPointer<vtkTextureObject>& text
   return true;
 }
 
-vtkShaderProgram* vtkFXRenderUtilities::ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad,
-  std::string& builtSource, vtkOpenGLRenderWindow* window, const std::string& fragmentSource)
+vtkShaderProgram* vtkFXRenderUtilities::ReadyQuad(
+  FullScreenQuad& quad, vtkOpenGLRenderWindow* window, const std::string& fragmentSource)
 {
-  if (!quad || builtSource != fragmentSource)
+  if (!quad.Helper || quad.Source != fragmentSource)
   {
-    quad.reset(new vtkOpenGLQuadHelper(window,
+    quad.Helper.reset(new vtkOpenGLQuadHelper(window,
       vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fragmentSource.c_str(),
       ""));
-    builtSource = fragmentSource;
+    quad.Source = fragmentSource;
   }
   else
   {
-    window->GetShaderCache()->ReadyShaderProgram(quad->Program);
+    window->GetShaderCache()->ReadyShaderProgram(quad.Helper->Program);
   }
-  if (!quad->Program || !quad->Program->GetCompiled())
+  if (!quad.Helper->Program || !quad.Helper->Program->GetCompiled())
   {
     vtkGenericWarningMacro("vtkFX: a full-screen shader failed to compile.");
     return nullptr;
   }
-  return quad->Program;
+  return quad.Helper->Program;
 }
 
-void vtkFXRenderUtilities::ReleaseQuad(
-  std::unique_ptr<vtkOpenGLQuadHelper>& quad, std::string& builtSource, vtkWindow* window)
+void vtkFXRenderUtilities::ReleaseQuad(FullScreenQuad& quad, vtkWindow* window)
 {
-  if (quad)
+  if (quad.Helper)
   {
-    quad->ReleaseGraphicsResources(window);
-    quad.reset();
+    quad.Helper->ReleaseGraphicsResources(window);
+    quad.Helper.reset();
   }
-  builtSource.clear();
+  quad.Source.clear();
 }
 
 vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow* window,

@@ -68,20 +68,29 @@ public:
     vtkOpenGLRenderWindow* window, int width, int height, int format);
 
   /**
-   * Make `quad` a full-screen quad whose fragment shader is `fragmentSource`,
-   * rebuilding it only when the source differs from `builtSource`, and bind
-   * its program. Returns the bound program, or nullptr (with an error) when
-   * the shader does not compile.
+   * A full-screen quad and the fragment source its program was built from,
+   * made by ReadyQuad and freed by ReleaseQuad.
    */
-  static vtkShaderProgram* ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad,
-    std::string& builtSource, vtkOpenGLRenderWindow* window, const std::string& fragmentSource);
+  struct FullScreenQuad
+  {
+    std::unique_ptr<vtkOpenGLQuadHelper> Helper;
+    std::string Source;
+  };
+
+  /**
+   * Make `quad` a full-screen quad whose fragment shader is `fragmentSource`,
+   * rebuilding it only when the source differs from the one it was built
+   * from, and bind its program. Returns the bound program, or nullptr (with
+   * an error) when the shader does not compile.
+   */
+  static vtkShaderProgram* ReadyQuad(
+    FullScreenQuad& quad, vtkOpenGLRenderWindow* window, const std::string& fragmentSource);
 
   /**
    * Releases a quad made by ReadyQuad and forgets its source, so that the
    * next ReadyQuad builds it again.
    */
-  static void ReleaseQuad(
-    std::unique_ptr<vtkOpenGLQuadHelper>& quad, std::string& builtSource, vtkWindow* window);
+  static void ReleaseQuad(FullScreenQuad& quad, vtkWindow* window);
 
   /**
    * Releases the GL resources of `object` (a texture or a framebuffer) in

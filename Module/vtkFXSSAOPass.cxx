@@ -232,7 +232,7 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
 
   vtkFXRenderUtilities::RenderTargetScope target(window, this->FrameBuffer, this->Occlusion);
   vtkShaderProgram* program =
-    vtkFXRenderUtilities::ReadyQuad(this->Quad, this->QuadSource, window, fs);
+    vtkFXRenderUtilities::ReadyQuad(this->Quad, window, fs);
   if (!program)
   {
     return;
@@ -256,14 +256,14 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   program->SetUniformf("fxRadius", static_cast<float>(this->EffectiveRadius));
   program->SetUniformf("fxBias", static_cast<float>(this->Bias * this->EffectiveRadius));
   this->SetKernelUniforms(program);
-  this->Quad->Render();
+  this->Quad.Helper->Render();
   depth->Deactivate();
   normal->Deactivate();
 }
 
 void vtkFXSSAOPass::ReleaseGraphicsResources(vtkWindow* w)
 {
-  vtkFXRenderUtilities::ReleaseQuad(this->Quad, this->QuadSource, w);
+  vtkFXRenderUtilities::ReleaseQuad(this->Quad, w);
   this->UnbindCompositeResources();
   vtkFXRenderUtilities::Release(this->Occlusion, w);
   vtkFXRenderUtilities::Release(this->FrameBuffer, w);

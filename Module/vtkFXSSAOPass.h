@@ -37,13 +37,12 @@
 
 #include "vtkFXEffectPass.h"
 #include "vtkFXModule.h"
+#include "vtkFXRenderUtilities.h" // for the full-screen quads
 #include "vtkSmartPointer.h"
 
-#include <memory>
 #include <string>
 
 class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
 class vtkRenderer;
 
 class VTKFX_EXPORT vtkFXSSAOPass : public vtkFXEffectPass
@@ -174,8 +173,7 @@ protected:
   vtkSmartPointer<vtkTextureObject> Occlusion;
   vtkTextureObject* BoundInComposite = nullptr;
   vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
-  std::string QuadSource;
+  vtkFXRenderUtilities::FullScreenQuad Quad;
 
 private:
   vtkFXSSAOPass(const vtkFXSSAOPass&) = delete;

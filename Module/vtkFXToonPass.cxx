@@ -193,7 +193,7 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   vtkShaderProgram::Substitute(fs, "//VTK::FXViewPosition::Dec", vtkFXViewPosition, false);
   vtkFXRenderUtilities::RenderTargetScope target(window, this->EdgeFrameBuffer, this->Edges);
   vtkShaderProgram* program =
-    vtkFXRenderUtilities::ReadyQuad(this->EdgeQuad, this->EdgeQuadSource, window, fs);
+    vtkFXRenderUtilities::ReadyQuad(this->EdgeQuad, window, fs);
   if (!program)
   {
     return false;
@@ -207,7 +207,7 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   program->SetUniformf("fxSilhouetteThreshold", static_cast<float>(this->SilhouetteThreshold));
   program->SetUniformf(
     "fxCreaseCosine", static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(this->CreaseAngle))));
-  this->EdgeQuad->Render();
+  this->EdgeQuad.Helper->Render();
   depth->Deactivate();
   normal->Deactivate();
   return true;
@@ -218,7 +218,7 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
   std::string fs = vtkFXToonLinesFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", GatherDefines, false);
   vtkShaderProgram* program =
-    vtkFXRenderUtilities::ReadyQuad(this->LineQuad, this->LineQuadSource, window, fs);
+    vtkFXRenderUtilities::ReadyQuad(this->LineQuad, window, fs);
   if (!program)
   {
     return;
@@ -255,7 +255,7 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
     color[i] = static_cast<float>(c >= 0.0 ? std::min(c, 65504.0) : 0.0);
   }
   program->SetUniform3f("fxLineColor", color);
-  this->LineQuad->Render();
+  this->LineQuad.Helper->Render();
   this->Edges->Deactivate();
 }
 
@@ -282,8 +282,8 @@ void vtkFXToonPass::Render(const vtkRenderState* s)
 
 void vtkFXToonPass::ReleaseGraphicsResources(vtkWindow* w)
 {
-  vtkFXRenderUtilities::ReleaseQuad(this->EdgeQuad, this->EdgeQuadSource, w);
-  vtkFXRenderUtilities::ReleaseQuad(this->LineQuad, this->LineQuadSource, w);
+  vtkFXRenderUtilities::ReleaseQuad(this->EdgeQuad, w);
+  vtkFXRenderUtilities::ReleaseQuad(this->LineQuad, w);
   vtkFXRenderUtilities::Release(this->Edges, w);
   vtkFXRenderUtilities::Release(this->EdgeFrameBuffer, w);
 }

@@ -43,14 +43,13 @@
 
 #include "vtkFXEffectPass.h"
 #include "vtkFXModule.h"
+#include "vtkFXRenderUtilities.h" // for the full-screen quads
 #include "vtkSmartPointer.h"
 
-#include <memory>
 #include <string>
 #include <vector>
 
 class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
 
@@ -188,10 +187,8 @@ protected:
 
   vtkSmartPointer<vtkTextureObject> Edges;
   vtkSmartPointer<vtkOpenGLFramebufferObject> EdgeFrameBuffer;
-  std::unique_ptr<vtkOpenGLQuadHelper> EdgeQuad;
-  std::string EdgeQuadSource;
-  std::unique_ptr<vtkOpenGLQuadHelper> LineQuad;
-  std::string LineQuadSource;
+  vtkFXRenderUtilities::FullScreenQuad EdgeQuad;
+  vtkFXRenderUtilities::FullScreenQuad LineQuad;
 
 private:
   vtkFXToonPass(const vtkFXToonPass&) = delete;

@@ -61,7 +61,7 @@ public:
                            "  float zero = texCoord.x < -1.0 ? 1.0 : 0.0;\n"
                            "  vec4 color = vec4(zero * big);\n" +
       this->Paint + "\n  gl_FragData[0] = color;\n}\n";
-    vtkShaderProgram* program = vtkFXRenderUtilities::ReadyQuad(this->Quad, this->Source, window, fs);
+    vtkShaderProgram* program = vtkFXRenderUtilities::ReadyQuad(this->Quad, window, fs);
     if (program)
     {
       // Over whatever the image shows, depth or not.
@@ -71,16 +71,15 @@ public:
       state->vtkglDisable(GL_DEPTH_TEST);
       state->vtkglDisable(GL_BLEND);
       program->SetUniformf("big", 1e30f);
-      this->Quad->Render();
+      this->Quad.Helper->Render();
     }
   }
   void ReleaseGraphicsResources(vtkWindow* w) override
   {
-    vtkFXRenderUtilities::ReleaseQuad(this->Quad, this->Source, w);
+    vtkFXRenderUtilities::ReleaseQuad(this->Quad, w);
   }
   std::string Paint;
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
-  std::string Source;
+  vtkFXRenderUtilities::FullScreenQuad Quad;
 };
 vtkStandardNewMacro(PaintProbe);
 

@@ -158,7 +158,7 @@ public:
         "void main() { float z = texCoord.x < -1.0 ? 1.0 : 0.0; gl_FragData[0] = vec4(z / z); }\n"
       : "//VTK::System::Dec\nin vec2 texCoord;\n//VTK::Output::Dec\n"
         "void main() { gl_FragData[0] = vec4(texCoord.x < -1.0 ? 1.0 : 0.5); }\n";
-    vtkShaderProgram* program = vtkFXRenderUtilities::ReadyQuad(this->Quad, this->Source, window, fs);
+    vtkShaderProgram* program = vtkFXRenderUtilities::ReadyQuad(this->Quad, window, fs);
     if (!program)
     {
       return;
@@ -177,21 +177,15 @@ public:
     }
     state->vtkglDisable(GL_DEPTH_TEST);
     state->vtkglBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ZERO, GL_ONE);
-    this->Quad->Render();
+    this->Quad.Helper->Render();
   }
   void ReleaseGraphicsResources(vtkWindow* w) override
   {
-    if (this->Quad)
-    {
-      this->Quad->ReleaseGraphicsResources(w);
-      this->Quad.reset();
-    }
-    this->Source.clear();
+    vtkFXRenderUtilities::ReleaseQuad(this->Quad, w);
   }
   bool SawFrameBuffer = false;
   bool WriteNaN = false;
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
-  std::string Source;
+  vtkFXRenderUtilities::FullScreenQuad Quad;
 };
 vtkStandardNewMacro(HalveProbe);
 
