@@ -67,8 +67,6 @@ bool Contains(const std::string& s, const char* what)
   return s.find(what) != std::string::npos;
 }
 
-// Storage buffers, their clears, program-interface queries and memory
-// barriers: all of OpenGL 4.3 (llvmpipe has 4.5).
 // Lights a map can be made for: directional ones (an orthographic view)
 // and spot lights (a perspective view of twice the cone), not headlights
 // (they cast no visible shadow) nor omnidirectional positional lights.
@@ -81,6 +79,8 @@ bool IsCasting(vtkLight* light)
   return !light->GetPositional() || (light->GetConeAngle() > 0.0 && light->GetConeAngle() < 89.0);
 }
 
+// Storage buffers, their clears, program-interface queries and memory
+// barriers: all of OpenGL 4.3 (llvmpipe has 4.5).
 bool StorageBuffersSupported()
 {
   return glewIsSupported("GL_VERSION_4_3");
@@ -372,7 +372,7 @@ void vtkFXAVSMPass::FitLightCamera(vtkOpenGLRenderer* ren)
   camera->UseExplicitProjectionTransformMatrixOn();
 }
 
-void vtkFXAVSMPass::CasterDepthRange(float range[2]) const
+void vtkFXAVSMPass::ComputeCasterDepthRange(float range[2]) const
 {
   // The casters' bounds seen from the light, in light depth (0..1, see
   // vtkFXAVSMLightDepth.glsl). A box reaching behind a spot light (the
@@ -887,7 +887,7 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
   this->FitLightCamera(ren);
   // Kept for the frame: the casters are forgotten after Render, and VTK's
   // translucent step (translucent receivers) comes later.
-  this->CasterDepthRange(this->SliceRange);
+  this->ComputeCasterDepthRange(this->SliceRange);
   this->EnsureBuffers();
   this->StoredFragments = this->Capacity;
   // With Profile on, each phase is finished before the clock reads it.

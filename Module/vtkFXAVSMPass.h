@@ -256,7 +256,7 @@ protected:
   int Nodes() const; // NumberOfNodes rounded to 4, 8 or 16
   void GatherCasters(vtkRenderer* ren);
   void FitLightCamera(vtkOpenGLRenderer* ren);
-  void CasterDepthRange(float range[2]) const;
+  void ComputeCasterDepthRange(float range[2]) const; // for SliceRange
   bool EnsureBuffers();
   void BindBuffers(vtkShaderProgram* program);
   void Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
