@@ -132,19 +132,18 @@ unsigned int vtkFXToonPass::GetRequiredChannels()
 
 std::string vtkFXToonPass::BandCode() const
 {
+  // Crossing threshold i raises the level to threshold i + 1 (to 1 past
+  // the last one): one step per threshold, by the rise.
   std::ostringstream steps;
   steps.precision(9);
-  double below = 0.0; // the band value under the current threshold
-  for (size_t i = 0; i <= this->BandThresholds.size(); ++i)
+  const size_t n = this->BandThresholds.size();
+  double level = 0.0;
+  for (size_t i = 0; i < n; ++i)
   {
-    const double threshold = i == 0 ? 0.0 : this->BandThresholds[i - 1];
-    const double band = i < this->BandThresholds.size() ? this->BandThresholds[i] : 1.0;
-    if (i > 0)
-    {
-      steps << "  level += step(" << std::fixed << threshold << ", df) * " << band - below
-            << ";\n";
-    }
-    below = i > 0 ? band : 0.0;
+    const double next = i + 1 < n ? this->BandThresholds[i + 1] : 1.0;
+    steps << "  level += step(" << std::fixed << this->BandThresholds[i] << ", df) * "
+          << next - level << ";\n";
+    level = next;
   }
   if (this->BandThresholds.empty())
   {

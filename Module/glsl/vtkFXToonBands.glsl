@@ -3,8 +3,9 @@
 // deferred toon shader of seed 004 (0-0.05 -> 0, 0.05-0.25 -> 0.25, ...,
 // 0.75-1 -> 1): with thresholds t[0] < ... < t[k-1], df < t[0] gives 0,
 // t[i] <= df < t[i+1] gives t[i+1], df >= t[k-1] gives 1. The thresholds
-// are compiled in, as a sum of steps, each adding the rise from the band
-// below (step(t[i], df) * (t[i+1] - t[i])): a few instructions per light,
+// are compiled in, as a sum of steps, each adding the rise from the level
+// below it (step(t[i], df) * (t[i+1] - t[i]), with t[k] = 1, and t[1] for
+// the first step, whose level below is 0): a few instructions per light,
 // no loop and no uniforms; changing them rebuilds the composite.
 float @band(float df)
 {
