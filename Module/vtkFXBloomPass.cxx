@@ -5,6 +5,7 @@
 #include "vtkFXGBufferPass.h"
 #include "vtkFXRenderUtilities.h"
 
+#include "vtkBoundingBox.h"
 #include "vtkCamera.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -77,18 +78,15 @@ vtkFXBloomPass::~vtkFXBloomPass() = default;
 bool vtkFXBloomPass::HasWork(const vtkFXSceneInfo& scene)
 {
   // Where the glow can be: around the emissive props (see ComputeGlowRect).
-  vtkMath::UninitializeBounds(this->EmissiveBounds);
+  vtkBoundingBox emissive;
   for (vtkProp* prop : scene.EmissiveProps)
   {
-    const double* b = prop->GetBounds();
-    for (int a = 0; b && a < 3; ++a)
+    if (const double* b = prop->GetBounds())
     {
-      const bool first = !vtkMath::AreBoundsInitialized(this->EmissiveBounds);
-      this->EmissiveBounds[2 * a] = first ? b[2 * a] : std::min(this->EmissiveBounds[2 * a], b[2 * a]);
-      this->EmissiveBounds[2 * a + 1] =
-        first ? b[2 * a + 1] : std::max(this->EmissiveBounds[2 * a + 1], b[2 * a + 1]);
+      emissive.AddBounds(b); // skips a prop without bounds
     }
   }
+  emissive.GetBounds(this->EmissiveBounds); // uninitialized when none has bounds
   const bool source = (this->UseEmission && !scene.EmissiveProps.empty()) || this->Threshold >= 0.0;
   return source && this->Intensity > 0.0 && this->Superclass::HasWork(scene);
 }
