@@ -66,6 +66,14 @@ struct vtkFXBloomPass::Level
   vtkSmartPointer<vtkTextureObject> Up;
   vtkSmartPointer<vtkOpenGLFramebufferObject> DownTarget;
   vtkSmartPointer<vtkOpenGLFramebufferObject> UpTarget;
+
+  void Release(vtkWindow* window)
+  {
+    vtkFXRenderUtilities::Release(this->Down, window);
+    vtkFXRenderUtilities::Release(this->Up, window);
+    vtkFXRenderUtilities::Release(this->DownTarget, window);
+    vtkFXRenderUtilities::Release(this->UpTarget, window);
+  }
 };
 
 vtkFXBloomPass::vtkFXBloomPass()
@@ -314,10 +322,9 @@ void vtkFXBloomPass::Upsample(vtkOpenGLRenderWindow* window, int levels)
   }
 }
 
-void vtkFXBloomPass::AddGlow(vtkOpenGLRenderWindow* window, int levels)
+void vtkFXBloomPass::AddGlow(vtkOpenGLRenderWindow* window)
 {
-  // With one level, its own share is the whole glow.
-  vtkTextureObject* glow = levels > 1 ? this->Levels[0]->Up : this->Levels[0]->Down;
+  vtkTextureObject* glow = this->GetGlowTexture();
   std::string fs = vtkFXBloomUpsampleFS;
   vtkShaderProgram::Substitute(
     fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define FX_FINAL 1\n", false);
@@ -378,15 +385,7 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
     this->GetNumberOfLevels(static_cast<int>(full->GetWidth()), static_cast<int>(full->GetHeight()));
   while (static_cast<int>(this->Levels.size()) > levels)
   {
-    Level& last = *this->Levels.back();
-    for (auto* t : { &last.Down, &last.Up })
-    {
-      vtkFXRenderUtilities::Release(*t, window);
-    }
-    for (auto* f : { &last.DownTarget, &last.UpTarget })
-    {
-      vtkFXRenderUtilities::Release(*f, window);
-    }
+    this->Levels.back()->Release(window);
     this->Levels.pop_back();
   }
   while (static_cast<int>(this->Levels.size()) < levels)
@@ -403,7 +402,7 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
   if (this->Downsample(window, color, levels))
   {
     this->Upsample(window, levels);
-    this->AddGlow(window, levels);
+    this->AddGlow(window);
   }
 }
 
@@ -415,10 +414,7 @@ void vtkFXBloomPass::ReleaseGraphicsResources(vtkWindow* w)
   }
   for (auto& level : this->Levels)
   {
-    vtkFXRenderUtilities::Release(level->Down, w);
-    vtkFXRenderUtilities::Release(level->Up, w);
-    vtkFXRenderUtilities::Release(level->DownTarget, w);
-    vtkFXRenderUtilities::Release(level->UpTarget, w);
+    level->Release(w);
   }
   this->Levels.clear();
   if (this->LinearSampler)

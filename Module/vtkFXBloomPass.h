@@ -156,7 +156,7 @@ protected:
   struct Level;
   bool Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject* color, int levels);
   void Upsample(vtkOpenGLRenderWindow* window, int levels);
-  void AddGlow(vtkOpenGLRenderWindow* window, int levels);
+  void AddGlow(vtkOpenGLRenderWindow* window); // adds GetGlowTexture()
   vtkShaderProgram* ReadyProgram(int which, vtkOpenGLRenderWindow* window, const std::string& fs);
   void ComputeGlowRect(vtkRenderer* ren, int width, int height, int levels);
   void LevelRect(int k, int rect[4]) const;
