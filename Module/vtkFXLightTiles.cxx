@@ -89,18 +89,26 @@ void vtkFXLightTiles::Build(
   const size_t tiles = static_cast<size_t>(this->TilesX) * this->TilesY;
   std::vector<int> boxes(4 * lights.size());
   std::vector<char> visible(lights.size());
-  std::vector<size_t> counts(tiles, 0);
   for (size_t i = 0; i < lights.size(); ++i)
   {
-    int* box = &boxes[4 * i];
-    visible[i] = this->CoveredTiles(lights[i], projection, box);
+    visible[i] = this->CoveredTiles(lights[i], projection, &boxes[4 * i]);
+  }
+  // Calls visit(tile) for every tile light i covers: once to count the
+  // lists, once to fill them.
+  const auto forEachCoveredTile = [&](size_t i, auto&& visit) {
+    const int* box = &boxes[4 * i];
     for (int y = box[1]; visible[i] && y <= box[3]; ++y)
     {
       for (int x = box[0]; x <= box[2]; ++x)
       {
-        ++counts[static_cast<size_t>(y) * this->TilesX + x];
+        visit(static_cast<size_t>(y) * this->TilesX + x);
       }
     }
+  };
+  std::vector<size_t> counts(tiles, 0);
+  for (size_t i = 0; i < lights.size(); ++i)
+  {
+    forEachCoveredTile(i, [&](size_t t) { ++counts[t]; });
   }
   this->HeaderData.assign(2 * tiles, 0.0f);
   size_t total = 0;
@@ -113,16 +121,10 @@ void vtkFXLightTiles::Build(
   std::fill(counts.begin(), counts.end(), 0);
   for (size_t i = 0; i < lights.size(); ++i)
   {
-    const int* box = &boxes[4 * i];
-    for (int y = box[1]; visible[i] && y <= box[3]; ++y)
-    {
-      for (int x = box[0]; x <= box[2]; ++x)
-      {
-        const size_t t = static_cast<size_t>(y) * this->TilesX + x;
-        this->IndexData[static_cast<size_t>(this->HeaderData[2 * t]) + counts[t]++] =
-          static_cast<float>(i);
-      }
-    }
+    forEachCoveredTile(i, [&](size_t t) {
+      this->IndexData[static_cast<size_t>(this->HeaderData[2 * t]) + counts[t]++] =
+        static_cast<float>(i);
+    });
   }
   for (size_t t = 0; t < tiles; ++t)
   {
