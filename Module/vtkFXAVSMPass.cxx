@@ -85,6 +85,42 @@ bool StorageBuffersSupported()
 {
   return glewIsSupported("GL_VERSION_4_3");
 }
+
+// VTK's point-gaussian splats (vtkPointGaussianGS.glsl: a triangle around
+// each point, facing the camera, with the offset from the centre in scale
+// units): the geometry shader also hands the fragment shader the splat's
+// scale (view units per offset unit) and the view position of the
+// fragment, which that shader lacks, and the fragment shader keeps VTK's
+// gaussian falloff apart from the opacity. Then FX_SPLAT is defined. Other
+// shaders are left as they are.
+void ExposeSplatGeometry(std::string& geometryShader, std::string& fragmentShader)
+{
+  const char* const offsetOut = "out vec2 offsetVCGSOutput;";
+  const char* const offsetSet = "offsetVCGSOutput = offset.xy/radius;";
+  // The fragment shader says VSOutput: VTK renames its inputs to GSOutput
+  // when it compiles them with a geometry shader.
+  const char* const offsetIn = "in vec2 offsetVCVSOutput;";
+  if (!Contains(geometryShader, offsetOut) || !Contains(geometryShader, offsetSet) ||
+    !Contains(fragmentShader, offsetIn))
+  {
+    return;
+  }
+  vtkShaderProgram::Substitute(geometryShader, offsetOut,
+    std::string(offsetOut) + "\nout float fxSplatScaleGSOutput;\nout vec3 fxSplatVCGSOutput;",
+    false);
+  vtkShaderProgram::Substitute(geometryShader, offsetSet,
+    std::string(offsetSet) +
+      "\n  fxSplatScaleGSOutput = radius;"
+      "\n  fxSplatVCGSOutput = (gl_in[0].gl_Position + offset.x*base1 + offset.y*base2).xyz;",
+    true);
+  vtkShaderProgram::Substitute(fragmentShader, offsetIn,
+    std::string("#define FX_SPLAT 1\n") + offsetIn +
+      "\nin float fxSplatScaleVSOutput;\nin vec3 fxSplatVCVSOutput;\n"
+      "uniform float fxSplatRadius;\nfloat fxSplatFalloff = 1.0;",
+    false);
+  vtkShaderProgram::Substitute(fragmentShader, "opacity = opacity*gaussian;",
+    "opacity = opacity*gaussian;\n  fxSplatFalloff = gaussian;", false);
+}
 }
 
 vtkFXAVSMPass::vtkFXAVSMPass()
@@ -134,11 +170,15 @@ double vtkFXAVSMPass::GetListBytesPerTexel() const
   return 8.0 + 16.0 * this->StoredFragments / texels;
 }
 
-bool vtkFXAVSMPass::GetTexelFragments(
-  int x, int y, std::vector<double>& depths, std::vector<double>& opticalDepths)
+bool vtkFXAVSMPass::GetTexelFragments(int x, int y, std::vector<double>& depths,
+  std::vector<double>& opticalDepths, std::vector<double>* exitDepths)
 {
   depths.clear();
   opticalDepths.clear();
+  if (exitDepths)
+  {
+    exitDepths->clear();
+  }
   const int n = this->ShadowMapSize;
   if (!this->Buffers[HeadsBuffer] || x < 0 || y < 0 || x >= n || y >= n ||
     vtkIdType(n) * n != this->BufferTexels)
@@ -156,11 +196,16 @@ bool vtkFXAVSMPass::GetTexelFragments(
     struct
     {
       float Depth, OpticalDepth;
-      GLuint Next, Unused;
+      GLuint Next;
+      float ExitDepth;
     } record;
     glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, GLintptr(node) * NodeBytes, NodeBytes, &record);
     depths.push_back(record.Depth);
     opticalDepths.push_back(record.OpticalDepth);
+    if (exitDepths)
+    {
+      exitDepths->push_back(record.ExitDepth);
+    }
     node = record.Next;
   }
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
@@ -368,6 +413,8 @@ void vtkFXAVSMPass::FitLightCamera(vtkOpenGLRenderer* ren)
     this->LightNearFar[0] = radius;
     this->LightNearFar[1] = 3.0 * radius;
   }
+  // VTK's splats face a parallel camera along its axis (not its position).
+  camera->SetParallelProjection(!this->LightPerspective);
   camera->SetExplicitProjectionTransformMatrix(p);
   camera->UseExplicitProjectionTransformMatrixOn();
 }
@@ -489,20 +536,41 @@ bool vtkFXAVSMPass::PreReplaceShaderValues(
 }
 
 bool vtkFXAVSMPass::PostReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+  std::string&, std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
+  // After VTK's own replacements: they declare the splat's offset.
+  if (Contains(fragmentShader, CaptureMarker) || Contains(fragmentShader, ReceiverMarker))
+  {
+    ExposeSplatGeometry(geometryShader, fragmentShader);
+  }
   if (!this->Receiving || !Contains(fragmentShader, ReceiverMarker))
   {
     return true;
   }
+
   // VTK 9.1's per-light statements (the ones vtkShadowMapPass rewrites
-  // too); a shader without them (unlit) keeps its colour.
+  // too); a shader without them (unlit) keeps its colour, unless it draws
+  // splats.
   const std::string n = std::to_string(this->LightIndex);
   const std::string diffuse = "diffuse += (df * lightColor" + n + ");";
   const std::string specular = "specular += (sf * lightColor" + n + ");";
   const bool lit = Contains(fragmentShader, diffuse.c_str());
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::FXAVSMReceive::Impl",
-    lit ? "float fxAVSMT = fxLightTransmittance(vertexVC.xyz);" : "", false);
+  const bool splat = Contains(fragmentShader, "#define FX_SPLAT");
+  std::string receive;
+  if (lit || splat)
+  {
+    receive = std::string("float fxAVSMT = fxLightTransmittance(") +
+      (splat ? "fxSplatVCVSOutput" : "vertexVC.xyz") + ");";
+  }
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::FXAVSMReceive::Impl", receive, false);
+  if (splat && !lit)
+  {
+    // VTK draws splats unlit (ambient plus diffuse colour, set in place of
+    // the light tag): the diffuse part is taken as the casting light's, so
+    // the cloud shadows itself.
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
+      "gl_FragData[0].rgb = ambientColor + diffuseColor * fxAVSMT;\n  //VTK::Light::Impl", false);
+  }
   if (lit)
   {
     vtkShaderProgram::Substitute(
@@ -565,6 +633,10 @@ bool vtkFXAVSMPass::SetShaderParameters(
   else if (program->IsUniformUsed("fxAVSMCapacity"))
   {
     this->BindBuffers(program);
+    if (program->IsUniformUsed("fxSplatRadius"))
+    {
+      program->SetUniformf("fxSplatRadius", static_cast<float>(this->SplatRadius));
+    }
   }
   return true;
 }
@@ -975,6 +1047,7 @@ void vtkFXAVSMPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Bilinear: " << this->Bilinear << "\n";
   os << indent << "TranslucentReceivers: " << this->TranslucentReceivers << "\n";
   os << indent << "Bias: " << this->Bias << "\n";
+  os << indent << "SplatRadius: " << this->SplatRadius << "\n";
   os << indent << "InitialNodesPerTexel: " << this->InitialNodesPerTexel << "\n";
   os << indent << "CapturedFragments: " << this->CapturedFragments << " (capacity "
      << this->Capacity << ")\n";

@@ -10,16 +10,19 @@
  * light the perspective view of its cone, from just in front of it to the
  * far side of the props (ShadowMapSize texels square). Every fragment, instead of being
  * drawn, joins its texel's linked list (shader storage buffers and an
- * atomic counter: OpenGL 4.3) as a light-
- * space depth and an optical depth -ln(1 - opacity), so that products of
- * transmittances are sums and never underflow. Then, per texel:
+ * atomic counter: OpenGL 4.3) as a segment along the light: a light-space
+ * entry and exit depth and an optical depth, so that products of
+ * transmittances are sums and never underflow. A surface is a segment of
+ * zero length and optical depth -ln(1 - opacity); a point-gaussian splat
+ * (vtkPointGaussianMapper) is a sphere of uniform density (SplatRadius),
+ * each fragment the chord through it along the light ray. Then, per texel:
  * - AVSM (default): the lists are resolved into curves of NumberOfNodes
  *   nodes (4, 8 or 16) by the paper's rule (segments inserted in depth
  *   order; past the budget, the node whose removal changes the area under
  *   the transmittance curve least goes); up to NumberOfNodes / 2 surfaces
  *   per texel are kept exactly;
  * - Exact: the lists themselves are the deep shadow map; the look-up sums
- *   the optical depth of every fragment in front of the receiver (the
+ *   the optical depth of every segment in front of the receiver (the
  *   reference the AVSM is measured against).
  * Fragments are sorted (by depth, then optical depth) before insertion, so
  * the result does not depend on the order they arrived in.
@@ -41,11 +44,13 @@
  * VTK shaders scale the casting light's terms by the transmittance at each
  * fragment during the pipeline's translucent step. A translucent surface
  * does not shadow itself: casters within Bias of a fragment do not
- * count.
+ * count. VTK draws splats unlit; their diffuse colour is taken as the
+ * casting light's and scaled by the transmittance at the splat's centre
+ * plane, so a particle cloud shadows itself (a splat by the half of its
+ * own sphere in front of that plane too).
  *
  * Limitations of this first version: one casting light, directional or
- * spot (a positional light without a cone would need six maps);
- * point-gaussian splats are captured as the surfaces they draw.
+ * spot (a positional light without a cone would need six maps).
  *
  * Cost: the translucent props drawn once more at ShadowMapSize^2, 16 bytes
  * per captured fragment plus 8 per texel (list head and count); the resolve,
@@ -145,6 +150,18 @@ public:
   vtkGetMacro(Bias, double);
 
   /**
+   * Radius of the uniform-density sphere a point-gaussian splat
+   * (vtkPointGaussianMapper) casts as, in the splat's scale units (0.1..3,
+   * default sqrt(3) = 1.732: for low opacity, the optical depth integrated
+   * over the sphere's shadow equals that over VTK's default gaussian splat,
+   * whose opacity falls as exp(-d^2 / 2)). The sphere's density makes its
+   * centre chord as opaque as the splat's centre; fragments of the splat
+   * outside the sphere cast nothing.
+   */
+  vtkSetClampMacro(SplatRadius, double, 0.1, 3.0);
+  vtkGetMacro(SplatRadius, double);
+
+  /**
    * Fragments the list buffer holds, per shadow-map texel, before it first
    * grows (1..1024, default 4).
    */
@@ -204,14 +221,15 @@ public:
   ///@{
   /**
    * One light ray of the last frame, for plots and tests (call with the
-   * window's context current, after a frame): the fragments of texel
-   * (x, y)'s list (light depths 0..1, see vtkFXAVSMLightDepth.glsl, and optical depths, in list
-   * order), and its resolved curve (AdaptiveNodes: node depths and
+   * window's context current, after a frame): the segments of texel
+   * (x, y)'s list (entry light depths 0..1, see vtkFXAVSMLightDepth.glsl,
+   * optical depths and, if asked, exit light depths, equal to the entry for
+   * a surface; in list order), and its resolved curve (AdaptiveNodes: node depths and
    * optical depths; RegularSlices: the slices' accumulated optical depths
    * in `opticalDepths`, `depths` empty). False when there is none.
    */
-  VTK_WRAPEXCLUDE bool GetTexelFragments(
-    int x, int y, std::vector<double>& depths, std::vector<double>& opticalDepths);
+  VTK_WRAPEXCLUDE bool GetTexelFragments(int x, int y, std::vector<double>& depths,
+    std::vector<double>& opticalDepths, std::vector<double>* exitDepths = nullptr);
   VTK_WRAPEXCLUDE bool GetTexelCurve(
     int x, int y, std::vector<double>& depths, std::vector<double>& opticalDepths);
   /** The texel with the longest list of the last frame (false: none). */
@@ -275,6 +293,7 @@ protected:
   int Representation = AdaptiveNodes;
   bool Bilinear = true;
   double Bias = 1e-3;
+  double SplatRadius = 1.7320508075688772;
   int InitialNodesPerTexel = 4;
 
   vtkIdType CapturedFragments = 0;

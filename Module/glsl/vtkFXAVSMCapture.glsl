@@ -1,23 +1,45 @@
 // vtkFXAVSMCapture: appended to VTK's fragment shader of a translucent prop
 // rendered from the light, after its colour (textures included) is final.
-// The fragment becomes a node of its texel's list and is not drawn. A
-// surface of opacity a is a segment of zero thickness with transmittance
-// 1 - a (seed 003: "1 = completely translucent, 0 = fully opaque");
-// opacity 0 (or NaN) casts nothing, opacity 1 blocks all (an optical depth
+// The fragment becomes a segment of its texel's list and is not drawn.
+// - A surface of opacity a is a segment of zero thickness with
+//   transmittance 1 - a (seed 003: "1 = completely translucent, 0 = fully
+//   opaque").
+// - A point-gaussian splat (FX_SPLAT; its inputs are named VSOutput here,
+//   VTK renames them GSOutput) is a sphere of uniform density, of
+//   radius fxSplatRadius in the splat's scale units, centred on the splat
+//   (seed 003's particles): the fragment at offset d from the centre is the
+//   chord of half-length r sqrt(1 - d^2 / R^2) around the splat's depth,
+//   and its optical depth is the centre chord's, -ln(1 - a_centre), times
+//   the same fraction (uniform density: proportional to length). a_centre
+//   is the splat's opacity before VTK's gaussian falloff (fxSplatFalloff;
+//   1 for custom splat shaders, whose opacity is taken as it is).
+// Opacity 0 (or NaN) casts nothing, opacity 1 blocks all (an optical depth
 // of 1e4: exp(-1e4) is 0 in float). Past the buffer's capacity a fragment
 // is counted and dropped; the pass grows the buffer for the next frame.
   {
     float fxAlpha = gl_FragData[0].a;
-    if (fxAlpha > 0.0)
+    float fxEntry = fxLightDepthOfFragment();
+    float fxExit = fxEntry;
+    float fxShare = 1.0;
+#ifdef FX_SPLAT
+    fxAlpha = min(fxAlpha / max(fxSplatFalloff, 1e-30), 1.0);
+    float fxD2 = dot(offsetVCVSOutput, offsetVCVSOutput) / (fxSplatRadius * fxSplatRadius);
+    fxShare = sqrt(max(1.0 - fxD2, 0.0));
+    float fxHalf = fxSplatRadius * fxSplatScaleVSOutput * fxShare /
+      (fxAVSMNearFar.y - fxAVSMNearFar.x);
+    fxEntry -= fxHalf;
+    fxExit += fxHalf;
+#endif
+    if (fxAlpha > 0.0 && fxShare > 0.0)
     {
-      float fxTau = fxAlpha >= 1.0 ? 1e4 : min(-log(1.0 - fxAlpha), 1e4);
+      float fxTau = fxAlpha >= 1.0 ? 1e4 : min(-log(1.0 - fxAlpha) * fxShare, 1e4);
       uint fxIndex = atomicAdd(fxAVSMNodeCount, 1u);
       if (fxIndex < uint(fxAVSMCapacity))
       {
         ivec2 fxTexel = clamp(ivec2(gl_FragCoord.xy), ivec2(0), ivec2(fxAVSMSize - 1));
         int fxSlot = fxTexel.y * fxAVSMSize + fxTexel.x;
         uint fxHead = atomicExchange(fxAVSMHeads[fxSlot], fxIndex);
-        fxAVSMNodes[fxIndex] = fxAVSMNode(fxLightDepthOfFragment(), fxTau, fxHead, 0u);
+        fxAVSMNodes[fxIndex] = fxAVSMNode(fxEntry, fxTau, fxHead, fxExit);
         atomicMax(fxAVSMLongestList, atomicAdd(fxAVSMCounts[fxSlot], 1u) + 1u);
       }
     }

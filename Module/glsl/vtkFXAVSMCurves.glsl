@@ -9,8 +9,9 @@
 // - FX_SLICES > 0: an opacity shadow map of FX_SLICES slices (for
 //   comparison);
 // - FX_EXACT 1: the deep shadow map itself, the sum of the optical depths
-//   of every fragment of the texel's list in front of the receiver: exact,
-//   whatever the order or number of fragments.
+//   of every segment of the texel's list in front of the receiver (the
+//   share in front of it, for a segment it lies in): exact, whatever the
+//   order or number of fragments.
 // With FX_BILINEAR the four texels around the point are looked up and
 // their transmittances blended bilinearly (percentage-closer filtering of
 // the curves, as the AVSM demo's AVSMBilinearSample). Outside the map the
@@ -33,11 +34,9 @@ float fxOpticalDepth(ivec2 texel, float depth)
   {
     if (node != fxAVSMEnd && node < uint(fxAVSMCapacity))
     {
-      if (fxAVSMNodes[node].depth < depth)
-      {
-        sum = min(sum + fxAVSMNodes[node].opticalDepth, 1e4);
-      }
-      node = fxAVSMNodes[node].next;
+      fxAVSMNode segment = fxAVSMNodes[node];
+      sum = min(sum + fxSegmentShare(segment.depth, segment.exitDepth, segment.opticalDepth, depth), 1e4);
+      node = segment.next;
     }
   }
   return sum;

@@ -3,16 +3,32 @@
 // time concurrent linked list construction on the GPU", EGSR 2010, as the
 // AVSM demo of seed 003 captures its blockers). Shared by the capture (in
 // VTK's mapper shaders), the resolve and the exact look-up.
-// Each fragment keeps its light-space depth and its optical depth
-// tau = -ln(1 - opacity): products of transmittances become sums, which
-// do not underflow (1000 layers of opacity 0.9999 sum to 9210, not 1e-4000).
+// Each fragment is a segment along the light ray: where it starts and
+// ends in light depth (the same for a surface; the chord through a
+// point-gaussian splat's sphere otherwise) and its optical depth
+// tau = -ln(transmittance across it), spread evenly over its length (a
+// uniform density, seed 003's segments): products of transmittances
+// become sums, which do not underflow (1000 layers of opacity 0.9999 sum
+// to 9210, not 1e-4000).
 struct fxAVSMNode
 {
-  float depth;
+  float depth;        // entry
   float opticalDepth;
-  uint next;   // index of the next node, 0xFFFFFFFF at the end
-  uint unused;
+  uint next;          // index of the next node, 0xFFFFFFFF at the end
+  float exitDepth;    // >= depth
 };
+
+// The part of a segment's optical depth in front of light depth z: all of
+// it past the exit, a linear share inside (uniform density), none before
+// the entry (a surface at exactly z does not count).
+float fxSegmentShare(float entry, float exitDepth, float tau, float z)
+{
+  if (exitDepth > entry)
+  {
+    return tau * clamp((z - entry) / (exitDepth - entry), 0.0, 1.0);
+  }
+  return entry < z ? tau : 0.0;
+}
 layout(std430) buffer FXAVSMHeads
 {
   uint fxAVSMHeads[];

@@ -1,20 +1,22 @@
 //VTK::System::Dec
-// vtkFXAVSMResolveFS: each shadow-map texel's list of fragments becomes a
+// vtkFXAVSMResolveFS: each shadow-map texel's list of segments becomes a
 // curve of FX_NODES nodes (depth, optical depth), linear in between, after
 // Salvi, Vidimce, Lauritzen, Lefohn, "Adaptive Volumetric Shadow Maps"
-// (EGSR 2010; seed 003): segments are inserted in depth order, each adding
-// a node where it starts (the optical depth so far) and one where it ends
-// (plus its own), and while the curve has more than FX_NODES nodes the
-// interior node whose removal changes the area under the transmittance
-// curve exp(-tau) least (the triangle it makes with its neighbours) goes.
-// A surface is a segment of zero thickness: a vertical step, so up to
-// FX_NODES / 2 surfaces per texel are kept exactly.
+// (EGSR 2010; seed 003): segments are inserted in order of entry depth,
+// each adding a node where it enters (the curve's optical depth there) and
+// one where it exits (plus its own), and raising the nodes it covers by
+// its share (uniform density: linear); while the curve has more than
+// FX_NODES nodes, the interior node whose removal changes the area under
+// the transmittance curve exp(-tau) least (the triangle it makes with its
+// neighbours) goes. A surface is a segment of zero thickness: a vertical
+// step, so up to FX_NODES / 2 segments per texel are kept exactly.
 // Order independence: the FX_MAX_LIST (the frame's longest list, up to 64)
-// nearest fragments (by depth, then
-// optical depth) are kept sorted and inserted in that order, so the curve does not depend
-// on the order fragments arrived in; fragments beyond them are summed into
-// one last segment from the nearest to the farthest of them (exact past
-// it). Optical depth is summed, capped at 1e4 (transmittance 0 in float).
+// nearest segments (by entry depth, then optical depth, then exit depth)
+// are kept sorted and inserted in that order, so the curve does not depend
+// on the order fragments arrived in; segments beyond them are summed into
+// one last segment from the nearest entry to the farthest exit among them
+// (exact past it). Optical depth is summed, capped at 1e4 (transmittance 0
+// in float).
 // Output: FX_NODES / 4 targets of depths, then FX_NODES / 4 of optical
 // depths; unused nodes have depth 3e38 and the last optical depth.
 
@@ -27,9 +29,10 @@ uniform vec2 fxSliceRange; // FX_SLICES: the casters' light depths, near and far
 
 // Local arrays are indexed with loop counters only (constant after
 // unrolling); list walks take the same number of steps for every pixel
-// (see fxAVSMWalk in vtkFXAVSMLists.glsl).
-float fxZ[FX_NODES + 1];
-float fxTau[FX_NODES + 1];
+// (see fxAVSMWalk in vtkFXAVSMLists.glsl). A segment adds two nodes before
+// the curve is trimmed back to FX_NODES.
+float fxZ[FX_NODES + 2];
+float fxTau[FX_NODES + 2];
 int fxCount = 0;
 
 // Exp(-tau) of a node: the transmittance the area rule weighs.
@@ -38,36 +41,73 @@ float fxT(float tau)
   return exp(-tau);
 }
 
-void fxInsert(float z, float tau)
+// The curve's optical depth at z: 0 before the first node, the last
+// node's past the last, linear in between.
+float fxCurveAt(float z)
 {
-  for (int i = 0; i <= FX_NODES; ++i)
+  float value = 0.0;
+  for (int i = 0; i < FX_NODES + 2; ++i)
   {
-    if (i == fxCount)
+    if (i < fxCount && fxZ[i] <= z)
+    {
+      value = fxTau[i];
+      if (i + 1 < fxCount && i + 1 < FX_NODES + 2 && fxZ[i + 1] > z)
+      {
+        value = mix(fxTau[i], fxTau[min(i + 1, FX_NODES + 1)],
+          (z - fxZ[i]) / (fxZ[min(i + 1, FX_NODES + 1)] - fxZ[i]));
+      }
+    }
+  }
+  return value;
+}
+
+// A node at depth z, after the nodes at or before z.
+void fxAddNode(float z, float tau)
+{
+  int at = 0;
+  for (int i = 0; i < FX_NODES + 2; ++i)
+  {
+    at += (i < fxCount && fxZ[i] <= z) ? 1 : 0;
+  }
+  for (int i = FX_NODES + 1; i > 0; --i)
+  {
+    if (i > at && i <= fxCount)
+    {
+      fxZ[i] = fxZ[i - 1];
+      fxTau[i] = fxTau[i - 1];
+    }
+  }
+  for (int i = 0; i < FX_NODES + 2; ++i)
+  {
+    if (i == at)
     {
       fxZ[i] = z;
       fxTau[i] = tau;
     }
   }
   ++fxCount;
-  if (fxCount <= FX_NODES)
-  {
-    return;
-  }
-  // Full: the interior node whose removal changes the area under the
-  // transmittance curve least (the triangle with its neighbours) goes.
+}
+
+// The interior node whose removal changes the area under the transmittance
+// curve least (the triangle with its neighbours) goes.
+void fxRemoveNode()
+{
   int victim = 1;
   float smallest = 3e38;
-  for (int i = 1; i < FX_NODES; ++i)
+  for (int i = 1; i < FX_NODES + 1; ++i)
   {
-    float area = abs((fxZ[i] - fxZ[i - 1]) * (fxT(fxTau[i + 1]) - fxT(fxTau[i - 1])) -
-      (fxT(fxTau[i]) - fxT(fxTau[i - 1])) * (fxZ[i + 1] - fxZ[i - 1]));
-    if (area < smallest)
+    if (i + 1 < fxCount)
     {
-      smallest = area;
-      victim = i;
+      float area = abs((fxZ[i] - fxZ[i - 1]) * (fxT(fxTau[i + 1]) - fxT(fxTau[i - 1])) -
+        (fxT(fxTau[i]) - fxT(fxTau[i - 1])) * (fxZ[i + 1] - fxZ[i - 1]));
+      if (area < smallest)
+      {
+        smallest = area;
+        victim = i;
+      }
     }
   }
-  for (int i = 1; i < FX_NODES; ++i)
+  for (int i = 1; i < FX_NODES + 1; ++i)
   {
     if (i >= victim)
     {
@@ -75,13 +115,38 @@ void fxInsert(float z, float tau)
       fxTau[i] = fxTau[i + 1];
     }
   }
-  fxCount = FX_NODES;
+  --fxCount;
 }
 
-// (a, b) before (c, d): by depth, then by optical depth.
-bool fxBefore(float a, float b, float c, float d)
+// Seed 003's insertion of a segment into the curve: nodes where it enters
+// and exits, its share added to every node (all of it past the exit).
+void fxInsertSegment(float entry, float exitDepth, float tau)
 {
-  return a < c || (a == c && b < d);
+  float atEntry = fxCurveAt(entry);
+  float atExit = min(fxCurveAt(exitDepth) + tau, 1e4);
+  for (int i = 0; i < FX_NODES + 2; ++i)
+  {
+    if (i < fxCount)
+    {
+      fxTau[i] = min(fxTau[i] + fxSegmentShare(entry, exitDepth, tau, fxZ[i]), 1e4);
+    }
+  }
+  fxAddNode(entry, atEntry);
+  fxAddNode(exitDepth, atExit);
+  for (int k = 0; k < 2; ++k)
+  {
+    if (fxCount > FX_NODES)
+    {
+      fxRemoveNode();
+    }
+  }
+}
+
+// (a, b, c) before (d, e, f): by entry depth, then optical depth, then
+// exit depth.
+bool fxBefore(float a, float b, float c, float d, float e, float f)
+{
+  return a < d || (a == d && (b < e || (b == e && c < f)));
 }
 
 void main()
@@ -102,24 +167,29 @@ void main()
   // An opacity shadow map instead (Kim and Neumann, "Opacity Shadow Maps",
   // EGWR 2001), for comparison at equal memory: FX_SLICES regular slices
   // of the casters' light depth range fxSliceRange, each holding the
-  // optical depth accumulated up to its far side. Order independent: sums.
+  // optical depth accumulated up to its far side; a segment puts into each
+  // slice the share of it the slice holds (the first and last slices reach
+  // out to whatever lies before and after the range). Order independent:
+  // sums.
   float bins[FX_SLICES];
   for (int k = 0; k < FX_SLICES; ++k)
   {
     bins[k] = 0.0;
   }
+  float sliceWidth = max(fxSliceRange.y - fxSliceRange.x, 1e-30) / float(FX_SLICES);
   for (int step = 0; step < fxAVSMWalk; ++step)
   {
     if (node != fxAVSMEnd && node < uint(fxAVSMCapacity))
     {
-      float x = (fxAVSMNodes[node].depth - fxSliceRange.x) /
-        max(fxSliceRange.y - fxSliceRange.x, 1e-30) * float(FX_SLICES);
-      int slice = int(clamp(floor(x), 0.0, float(FX_SLICES - 1)));
-      float t = fxAVSMNodes[node].opticalDepth;
-      node = fxAVSMNodes[node].next;
+      fxAVSMNode segment = fxAVSMNodes[node];
+      node = segment.next;
       for (int k = 0; k < FX_SLICES; ++k)
       {
-        bins[k] = k == slice ? min(bins[k] + t, 1e4) : bins[k];
+        float near = k == 0 ? -3e38 : fxSliceRange.x + float(k) * sliceWidth;
+        float far = k == FX_SLICES - 1 ? 3e38 : fxSliceRange.x + float(k + 1) * sliceWidth;
+        float share = fxSegmentShare(segment.depth, segment.exitDepth, segment.opticalDepth, far) -
+          fxSegmentShare(segment.depth, segment.exitDepth, segment.opticalDepth, near);
+        bins[k] = min(bins[k] + share, 1e4);
       }
     }
   }
@@ -132,15 +202,17 @@ void main()
   //VTK::FXAVSMResolve::SliceOutput
   return;
 #endif
-  // The FX_MAX_LIST nearest fragments, kept sorted as they come (each new
+  // The FX_MAX_LIST nearest segments, kept sorted as they come (each new
   // one bubbles to its place; what falls off the end is the farthest):
   // empty slots hold depth 3e38.
-  float depth[FX_MAX_LIST];
-  float tau[FX_MAX_LIST];
+  float entries[FX_MAX_LIST];
+  float taus[FX_MAX_LIST];
+  float exits[FX_MAX_LIST];
   for (int i = 0; i < FX_MAX_LIST; ++i)
   {
-    depth[i] = 3e38;
-    tau[i] = 0.0;
+    entries[i] = 3e38;
+    taus[i] = 0.0;
+    exits[i] = 3e38;
   }
   int n = 0;
   float droppedTau = 0.0;
@@ -152,33 +224,40 @@ void main()
     {
       continue; // past the end: nothing (see fxAVSMWalk)
     }
-    float d = fxAVSMNodes[node].depth;
-    float t = fxAVSMNodes[node].opticalDepth;
-    node = fxAVSMNodes[node].next;
+    fxAVSMNode segment = fxAVSMNodes[node];
+    float d = segment.depth;
+    float t = segment.opticalDepth;
+    float x = segment.exitDepth;
+    node = segment.next;
     // Full, and no nearer than the farthest kept: dropped at once (a list
     // arrives farthest-last when drawn back to front; a loop per fragment
     // would cost 64 steps, and llvmpipe stops a shader's loops after
     // 65535 iterations).
-    if (n == FX_MAX_LIST && !fxBefore(d, t, depth[FX_MAX_LIST - 1], tau[FX_MAX_LIST - 1]))
+    bool full = n == FX_MAX_LIST;
+    if (full &&
+      !fxBefore(d, t, x, entries[FX_MAX_LIST - 1], taus[FX_MAX_LIST - 1], exits[FX_MAX_LIST - 1]))
     {
       droppedTau = min(droppedTau + t, 1e4);
       droppedNear = min(droppedNear, d);
-      droppedFar = max(droppedFar, d);
+      droppedFar = max(droppedFar, x);
       continue;
     }
     for (int i = 0; i < FX_MAX_LIST; ++i)
     {
-      if (fxBefore(d, t, depth[i], tau[i]))
+      if (fxBefore(d, t, x, entries[i], taus[i], exits[i]))
       {
-        float swapD = depth[i];
-        float swapT = tau[i];
-        depth[i] = d;
-        tau[i] = t;
+        float swapD = entries[i];
+        float swapT = taus[i];
+        float swapX = exits[i];
+        entries[i] = d;
+        taus[i] = t;
+        exits[i] = x;
         d = swapD;
         t = swapT;
+        x = swapX;
       }
     }
-    if (n < FX_MAX_LIST)
+    if (!full)
     {
       ++n; // an empty slot fell off
     }
@@ -186,31 +265,27 @@ void main()
     {
       droppedTau = min(droppedTau + t, 1e4);
       droppedNear = min(droppedNear, d);
-      droppedFar = max(droppedFar, d);
+      droppedFar = max(droppedFar, x);
     }
   }
-  float sum = 0.0;
   for (int i = 0; i < FX_MAX_LIST; ++i)
   {
     if (i < n)
     {
-      fxInsert(depth[i], sum);
-      sum = min(sum + tau[i], 1e4);
-      fxInsert(depth[i], sum);
+      fxInsertSegment(entries[i], exits[i], taus[i]);
     }
   }
   if (droppedTau > 0.0)
   {
-    fxInsert(droppedNear, sum);
-    sum = min(sum + droppedTau, 1e4);
-    fxInsert(droppedFar, sum);
+    fxInsertSegment(droppedNear, droppedFar, droppedTau);
   }
+  float total = fxCurveAt(3e38);
   for (int i = 0; i < FX_NODES; ++i)
   {
     if (i >= fxCount)
     {
       fxZ[i] = 3e38;
-      fxTau[i] = sum;
+      fxTau[i] = total;
     }
   }
   //VTK::FXAVSMResolve::Output

@@ -18,6 +18,12 @@
 //   between two slabs only the slab below it casts;
 // - a translucent receiver under a translucent caster: its lit colour
 //   loses the caster's share (from 8-bit images, within 0.04);
+// - point-gaussian splats are uniform-density spheres: under one, the
+//   ground gets exp(-tau_c sqrt(1 - rho^2 / R^2)) at distance rho from its
+//   axis, and a ground through its centre half of that optical depth;
+// - splats shadow each other: of two in a row along the light, the far
+//   one is darker by the near one's centre transmittance; four whose
+//   chords overlap: AVSM-16 equals the exact mode;
 // - nothing translucent: the pass is left out, with its buffers.
 #include "vtkFXAVSMPass.h"
 #include "vtkFXPipelinePass.h"
@@ -26,7 +32,10 @@
 
 #include "vtkAppendPolyData.h"
 #include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkPlaneSource.h"
+#include "vtkPointGaussianMapper.h"
+#include "vtkPoints.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRendererCollection.h"
@@ -34,6 +43,7 @@
 #include "vtkPointData.h"
 #include "vtkCellData.h"
 
+#include <array>
 #include <functional>
 
 namespace
@@ -179,6 +189,110 @@ vtkSmartPointer<vtkFXAVSMPass> MakeAVSM(int nodes, bool exact, bool bilinear)
   avsm->SetBilinear(bilinear);
   return avsm;
 }
+
+// Point-gaussian splats at `centers`, of scale `scale` and opacity
+// `opacity` (white, unlit as VTK draws them).
+vtkSmartPointer<vtkActor> Splats(
+  const std::vector<std::array<double, 3>>& centers, double scale, double opacity)
+{
+  vtkNew<vtkPoints> points;
+  for (const auto& c : centers)
+  {
+    points->InsertNextPoint(c.data());
+  }
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(points);
+  vtkNew<vtkPointGaussianMapper> mapper;
+  mapper->SetInputData(cloud);
+  mapper->SetScaleFactor(scale);
+  mapper->EmissiveOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetOpacity(opacity);
+  return actor;
+}
+
+// One splat of scale 1 and opacity 0.5 (centre optical depth ln 2) over
+// the ground, seen through a 2048^2 map: the ground's transmittance at
+// distance rho from the splat's axis is exp(-ln 2 sqrt(1 - rho^2 / R^2))
+// for the sphere of radius R = SplatRadius (sqrt 3). With the ground
+// through the splat's centre, the ground lies half-way along each chord:
+// half the optical depth (less the bias's share, 0.028 units of the
+// chord's 2 x 1.73: 0.6% of it, 0.004 in transmittance; 0.01 allowed).
+// Checked off the rim (rho < 0.8 R or > 1.2 R), where the curve's slope is
+// at most 0.23 per unit and the bilinear look-up's error, a quarter texel
+// squared times the curvature, stays below 1e-4: 1e-3 allowed below the
+// splat.
+int CheckSplatSphere(vtkRenderWindow* window, bool exact, double height)
+{
+  auto avsm = MakeAVSM(8, exact, true);
+  avsm->SetShadowMapSize(2048);
+  const double R = avsm->GetSplatRadius();
+  const auto v = Visibility(window, avsm, { Splats({ { 0.0, 0.0, height } }, 1.0, 0.5) }, true);
+  FX_CHECK(v.size() == static_cast<size_t>(Width) * Height, "no visibility");
+  const double fraction = height > 0.0 ? 1.0 : 0.5;
+  const double unitsPerPixel = 8.0 / Height; // parallel scale 4
+  double worst = 0.0, centre = -1.0;
+  for (int y = 0; y < Height; ++y)
+  {
+    for (int x = 0; x < Width; ++x)
+    {
+      const double px = (x + 0.5 - 0.5 * Width) * unitsPerPixel;
+      const double py = (y + 0.5 - 0.5 * Height) * unitsPerPixel;
+      const double rho = std::sqrt(px * px + py * py);
+      const float t = v[static_cast<size_t>(y) * Width + x];
+      FX_CHECK(std::isfinite(t) && t >= 0.0f && t <= 1.0f, "splat: " << t << " at " << x << "," << y);
+      if (rho < 0.8 * R || rho > 1.2 * R)
+      {
+        const double chord = std::sqrt(std::max(0.0, 1.0 - rho * rho / (R * R)));
+        const double expected = std::exp(-std::log(2.0) * chord * fraction);
+        worst = std::max(worst, std::fabs(t - expected));
+      }
+      if (x == Width / 2 && y == Height / 2)
+      {
+        centre = t;
+      }
+
+    }
+  }
+  std::cout << "splat sphere (" << (exact ? "exact" : "AVSM-8") << ", ground "
+            << (height > 0.0 ? "below" : "through the centre") << "): centre " << centre
+            << ", largest error " << worst << std::endl;
+  FX_CHECK(worst < (height > 0.0 ? 1e-3 : 0.01), "splat sphere's shadow off by " << worst);
+  return EXIT_SUCCESS;
+}
+
+// Self-shadowing: two white splats (scale 0.3, opacity 0.5) side by side
+// at x = -1 and x = 1, z = 2, lit along -x only, over a ground the light
+// grazes (black). Each centre pixel is the splat's alpha times its colour
+// times the transmittance at its centre plane: the one at x = +1 sees half
+// its own sphere, the one at x = -1 that and the whole other one, so their
+// ratio is the near one's centre transmittance, 0.5; from 8-bit pixels of
+// about 90 and 45, within 0.03.
+int CheckSplatsShadowEachOther(vtkRenderWindow* window)
+{
+  vtkRenderer* renderer = GroundScene(window, true);
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  vtkLight* light = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
+  light->SetPosition(1.0, 0.0, 0.0);
+  renderer->AddActor(Splats({ { -1.0, 0.0, 2.0 }, { 1.0, 0.0, 2.0 } }, 0.3, 0.5));
+  vtkNew<vtkFXPipelinePass> pipeline;
+  vtkNew<vtkFXAVSMPass> avsm;
+  pipeline->AddEffect("avsm", avsm);
+  renderer->SetPass(pipeline);
+  window->Render();
+  const auto image = vtkFXScenes::Capture(window);
+  const auto green = [&](double worldX) {
+    const int x = static_cast<int>(0.5 * Width + worldX * Height / 8.0);
+    return double(image[3 * (static_cast<size_t>(Height / 2) * Width + x) + 1]);
+  };
+  const double far = green(-1.0), near = green(1.0);
+  std::cout << "splats in a row along the light: far " << far << ", near " << near
+            << ", ratio " << far / std::max(near, 1.0) << " (expected 0.5)" << std::endl;
+  FX_CHECK(near > 60.0 && std::fabs(far / near - 0.5) < 0.03, "splats do not shadow each other");
+  return EXIT_SUCCESS;
+}
+
 }
 
 // Translucent receivers: a nearly opaque white slab (opacity 0.99) at
@@ -415,6 +529,32 @@ int TestAVSM(int, char*[])
              Visibility(window, MakeAVSM(8, false, true),
                { Quad(-10, 0, 1, 0.3), Quad(-10, 0, 2, 0.5) }, true, 1, 1.5, 85.0),
              0.7, 1e-3) == EXIT_SUCCESS, "");
+
+  for (bool exactSplat : { true, false })
+  {
+    FX_CHECK(CheckSplatSphere(window, exactSplat, 3.0) == EXIT_SUCCESS, "splat over the ground");
+    FX_CHECK(CheckSplatSphere(window, exactSplat, 0.0) == EXIT_SUCCESS, "splat in the ground");
+  }
+  FX_CHECK(CheckSplatsShadowEachOther(window) == EXIT_SUCCESS, "splat self-shadowing");
+  // Four splats whose chords overlap along the light (scale 0.6, centres
+  // 0.5 apart, spheres 2.1 across): 8 entries and exits, which AVSM-16
+  // keeps exactly.
+  {
+    const std::vector<vtkSmartPointer<vtkActor>> column = { Splats(
+      { { 0.0, 0.0, 2.0 }, { 0.3, 0.0, 2.5 }, { -0.2, 0.1, 3.0 }, { 0.1, -0.3, 3.5 } }, 0.6, 0.4) };
+    const auto exactColumn = Visibility(window, MakeAVSM(8, true, true), column, true);
+    const auto avsmColumn = Visibility(window, MakeAVSM(16, false, true), column, true);
+    double worst = 0.0, darkest = 1.0;
+    for (size_t i = 0; i < exactColumn.size() && i < avsmColumn.size(); ++i)
+    {
+      worst = std::max(worst, static_cast<double>(std::fabs(exactColumn[i] - avsmColumn[i])));
+      darkest = std::min(darkest, static_cast<double>(exactColumn[i]));
+    }
+    std::cout << "four overlapping splats: darkest " << darkest << ", AVSM-16 against exact "
+              << worst << std::endl;
+    FX_CHECK(!exactColumn.empty() && darkest < 0.3 && worst < 1e-5,
+      "overlapping splats: AVSM-16 differs from exact by " << worst);
+  }
 
   // Nothing translucent: the pass is left out and allocates nothing.
   {
