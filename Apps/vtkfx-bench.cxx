@@ -164,7 +164,7 @@ void Usage(std::ostream& os)
         "bloom:    vtkFX's glow and the seed's direct 21x21 Gaussian against the exact\n"
         "          glow computed on the CPU (default: scene:glow, 1280x720)\n"
         "avsm:     shadows of translucent props, AVSM-4/8/16 against the exact deep shadow\n"
-        "          map (default: scene:cloud and scene:isoshadow, 1280x720)\n"
+        "          map (default: scene:particles, scene:cloud and scene:isoshadow, 1280x720)\n"
         "lights:   frame time with 1 to 1024 point lights, vtkFX against VTK's forward\n"
         "          render (VTK up to --max-vtk-lights, default 256; default INPUT\n"
         "          scene:spheres, 1280x720)\n";
@@ -260,7 +260,7 @@ int main(int argc, char* argv[])
   {
     if (o.Inputs.empty())
     {
-      o.Inputs = { "scene:cloud", "scene:isoshadow" };
+      o.Inputs = { "scene:particles", "scene:cloud", "scene:isoshadow" };
     }
     return BenchAVSM(o);
   }

@@ -52,7 +52,7 @@ enum Buffer
 };
 const GLsizeiptr NodeBytes = 16;
 const vtkIdType MaximumCapacity = vtkIdType(1) << 27; // 2 GiB of nodes
-const int MaximumListPerTexel = 64; // fragments one texel's resolve sorts
+const int MaximumListPerTexel = 64; // segments one texel's resolve inserts in order
 
 // After the version line (which VTK puts in place of the tag): storage
 // buffers in GLSL 1.50.
@@ -88,12 +88,15 @@ bool StorageBuffersSupported()
 
 // VTK's point-gaussian splats (vtkPointGaussianGS.glsl: a triangle around
 // each point, facing the camera, with the offset from the centre in scale
-// units): the geometry shader also hands the fragment shader the splat's
-// scale (view units per offset unit) and the view position of the
-// fragment, which that shader lacks, and the fragment shader keeps VTK's
-// gaussian falloff apart from the opacity. Then FX_SPLAT is defined. Other
-// shaders are left as they are.
-void ExposeSplatGeometry(std::string& geometryShader, std::string& fragmentShader)
+// units): the geometry shader gets `declarations` and, at each corner,
+// `perCorner` (with `radius`, view units per scale unit, and the corner's
+// `offset` at hand, before the corner is placed), the
+// fragment shader `fragmentDeclarations`, FX_SPLAT, and VTK's gaussian
+// falloff kept apart from the opacity (fxSplatFalloff). False, and nothing
+// changed, for other shaders.
+bool ExtendSplatShaders(std::string& geometryShader, std::string& fragmentShader,
+  const std::string& declarations, const std::string& perCorner,
+  const std::string& fragmentDeclarations)
 {
   const char* const offsetOut = "out vec2 offsetVCGSOutput;";
   const char* const offsetSet = "offsetVCGSOutput = offset.xy/radius;";
@@ -103,23 +106,19 @@ void ExposeSplatGeometry(std::string& geometryShader, std::string& fragmentShade
   if (!Contains(geometryShader, offsetOut) || !Contains(geometryShader, offsetSet) ||
     !Contains(fragmentShader, offsetIn))
   {
-    return;
+    return false;
   }
-  vtkShaderProgram::Substitute(geometryShader, offsetOut,
-    std::string(offsetOut) + "\nout float fxSplatScaleGSOutput;\nout vec3 fxSplatVCGSOutput;",
-    false);
-  vtkShaderProgram::Substitute(geometryShader, offsetSet,
-    std::string(offsetSet) +
-      "\n  fxSplatScaleGSOutput = radius;"
-      "\n  fxSplatVCGSOutput = (gl_in[0].gl_Position + offset.x*base1 + offset.y*base2).xyz;",
-    true);
+  vtkShaderProgram::Substitute(
+    geometryShader, offsetOut, std::string(offsetOut) + "\n" + declarations, false);
+  vtkShaderProgram::Substitute(
+    geometryShader, offsetSet, std::string(offsetSet) + "\n  " + perCorner, true);
   vtkShaderProgram::Substitute(fragmentShader, offsetIn,
-    std::string("#define FX_SPLAT 1\n") + offsetIn +
-      "\nin float fxSplatScaleVSOutput;\nin vec3 fxSplatVCVSOutput;\n"
-      "uniform float fxSplatRadius;\nfloat fxSplatFalloff = 1.0;",
+    std::string("#define FX_SPLAT 1\n") + offsetIn + "\nfloat fxSplatFalloff = 1.0;\n" +
+      fragmentDeclarations,
     false);
   vtkShaderProgram::Substitute(fragmentShader, "opacity = opacity*gaussian;",
     "opacity = opacity*gaussian;\n  fxSplatFalloff = gaussian;", false);
+  return true;
 }
 }
 
@@ -131,6 +130,7 @@ vtkFXAVSMPass::vtkFXAVSMPass()
   this->LightProjection = vtkSmartPointer<vtkMatrix4x4>::New();
   this->ViewToLight = vtkSmartPointer<vtkMatrix4x4>::New();
   this->CasterPass = vtkSmartPointer<vtkTranslucentPass>::New();
+  this->ResolveQuad.OneTriangle = true; // its walks stop at each texel's count
 }
 
 vtkFXAVSMPass::~vtkFXAVSMPass() = default;
@@ -539,13 +539,33 @@ bool vtkFXAVSMPass::PostReplaceShaderValues(
   std::string&, std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
   // After VTK's own replacements: they declare the splat's offset.
-  if (Contains(fragmentShader, CaptureMarker) || Contains(fragmentShader, ReceiverMarker))
+  if (Contains(fragmentShader, CaptureMarker))
   {
-    ExposeSplatGeometry(geometryShader, fragmentShader);
+    // The capture's chord needs the splat's scale in view units; its
+    // triangle shrinks to hold just the sphere (VTK's holds triangleScale,
+    // 3 by default, scale units: some 3x the fragments).
+    ExtendSplatShaders(geometryShader, fragmentShader,
+      "out float fxSplatScaleGSOutput;\nuniform float fxSplatRadius;",
+      "offset.xy *= min(1.0, fxSplatRadius / triangleScale);\n"
+      "  offsetVCGSOutput = offset.xy/radius;\n"
+      "  fxSplatScaleGSOutput = radius;",
+      "in float fxSplatScaleVSOutput;\nuniform float fxSplatRadius;");
   }
   if (!this->Receiving || !Contains(fragmentShader, ReceiverMarker))
   {
     return true;
+  }
+  // A splat takes the transmittance at its centre, looked up once per
+  // splat (at its corners) rather than per fragment: a cloud's splats
+  // overlap in many layers on screen.
+  const bool splat = ExtendSplatShaders(geometryShader, fragmentShader,
+    "out float fxSplatTransmittanceGSOutput;\n" + this->CurveDefines(this->Exact) +
+      (this->Exact ? vtkFXAVSMLists : "") + this->CurveCode(),
+    "fxSplatTransmittanceGSOutput = fxLightTransmittance(gl_in[0].gl_Position.xyz);",
+    "in float fxSplatTransmittanceVSOutput;");
+  if (splat && this->Exact)
+  {
+    vtkShaderProgram::Substitute(geometryShader, "//VTK::System::Dec", StorageExtension, false);
   }
 
   // VTK 9.1's per-light statements (the ones vtkShadowMapPass rewrites
@@ -555,12 +575,11 @@ bool vtkFXAVSMPass::PostReplaceShaderValues(
   const std::string diffuse = "diffuse += (df * lightColor" + n + ");";
   const std::string specular = "specular += (sf * lightColor" + n + ");";
   const bool lit = Contains(fragmentShader, diffuse.c_str());
-  const bool splat = Contains(fragmentShader, "#define FX_SPLAT");
   std::string receive;
   if (lit || splat)
   {
-    receive = std::string("float fxAVSMT = fxLightTransmittance(") +
-      (splat ? "fxSplatVCVSOutput" : "vertexVC.xyz") + ");";
+    receive = splat ? "float fxAVSMT = fxSplatTransmittanceVSOutput;"
+                    : "float fxAVSMT = fxLightTransmittance(vertexVC.xyz);";
   }
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::FXAVSMReceive::Impl", receive, false);
   if (splat && !lit)
@@ -733,18 +752,9 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
       t, window, this->ShadowMapSize, this->ShadowMapSize, vtkFXRenderUtilities::RGBA32F);
   }
   std::ostringstream defines;
-  // The sorted array holds the longest list of the frame (at least the
-  // nodes' worth of surfaces, at most MaximumListPerTexel, in powers of two
-  // so that few shader variants exist): a software rasteriser pays for
-  // every slot of every texel.
-  int kept = std::max(4, nodes / 2);
-  while (kept < MaximumListPerTexel && kept < this->LongestList)
-  {
-    kept *= 2;
-  }
   const bool slices = this->Representation == RegularSlices;
   defines << StorageExtension << "#define FX_NODES " << nodes << "\n#define FX_MAX_LIST "
-          << std::min(kept, MaximumListPerTexel) << "\n#define FX_SLICES "
+          << MaximumListPerTexel << "\n#define FX_SLICES "
           << (slices ? 2 * nodes : 0) << "\n";
   std::ostringstream sliceOutput;
   for (int k = 0; k < nodes / 2; ++k)

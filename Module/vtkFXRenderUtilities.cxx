@@ -105,11 +105,24 @@ bool vtkFXRenderUtilities::EnsureTexture(vtkSmartPointer<vtkTextureObject>& text
 vtkShaderProgram* vtkFXRenderUtilities::ReadyQuad(
   FullScreenQuad& quad, vtkOpenGLRenderWindow* window, const std::string& fragmentSource)
 {
+  // VTK's quad is a strip of four corners (-1..1, texture 0..1); doubled
+  // and moved, its first triangle (-1,-1), (3,-1), (-1,3) holds the whole
+  // viewport and its second lies beyond the corner (1, 1).
+  static const char* const oneTriangle = "//VTK::System::Dec\n"
+                                         "in vec4 ndCoordIn;\n"
+                                         "in vec2 texCoordIn;\n"
+                                         "out vec2 texCoord;\n"
+                                         "void main()\n"
+                                         "{\n"
+                                         "  gl_Position = vec4(2.0 * ndCoordIn.xy + 1.0, 0.0, 1.0);\n"
+                                         "  texCoord = 2.0 * texCoordIn;\n"
+                                         "}\n";
   if (!quad.Helper || quad.Source != fragmentSource)
   {
     quad.Helper.reset(new vtkOpenGLQuadHelper(window,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fragmentSource.c_str(),
-      ""));
+      quad.OneTriangle ? oneTriangle
+                       : vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
+      fragmentSource.c_str(), ""));
     quad.Source = fragmentSource;
   }
   else

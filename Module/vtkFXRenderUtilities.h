@@ -75,6 +75,14 @@ public:
   {
     std::unique_ptr<vtkOpenGLQuadHelper> Helper;
     std::string Source;
+    /**
+     * Draw one triangle over the viewport instead of two (set before the
+     * first ReadyQuad). On llvmpipe, a loop whose trip count differs
+     * between neighbouring pixels ends early in 2x2 groups that the quad's
+     * diagonal splits; a single triangle has no inner edge, so such loops
+     * are safe. texCoord is 0..1 over the viewport either way.
+     */
+    bool OneTriangle = false;
   };
 
   /**

@@ -18,7 +18,11 @@
 // is counted and dropped; the pass grows the buffer for the next frame.
   {
     float fxAlpha = gl_FragData[0].a;
-    float fxEntry = fxLightDepthOfFragment();
+    // The fragment's light depth (vtkFXAVSMLightDepth.glsl): from its
+    // clip w for a spot light, its window depth for a directional one.
+    float fxEntry = fxAVSMPerspective != 0
+      ? (1.0 / gl_FragCoord.w - fxAVSMNearFar.x) / (fxAVSMNearFar.y - fxAVSMNearFar.x)
+      : gl_FragCoord.z;
     float fxExit = fxEntry;
     float fxShare = 1.0;
 #ifdef FX_SPLAT

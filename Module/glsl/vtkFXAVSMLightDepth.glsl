@@ -16,10 +16,3 @@ float fxLightDepthFromClip(vec4 clip)
     : 0.5 * clip.z / clip.w + 0.5;
 }
 
-// Of the fragment being rendered from the light.
-float fxLightDepthOfFragment()
-{
-  return fxAVSMPerspective != 0
-    ? (1.0 / gl_FragCoord.w - fxAVSMNearFar.x) / (fxAVSMNearFar.y - fxAVSMNearFar.x)
-    : gl_FragCoord.z;
-}

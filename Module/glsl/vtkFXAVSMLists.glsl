@@ -48,10 +48,12 @@ layout(std430) buffer FXAVSMCounts
 };
 uniform int fxAVSMSize;     // shadow map texels per side
 uniform int fxAVSMCapacity; // nodes the buffer holds
-// Steps of every list walk: the longest list of the frame, the same for
-// all pixels. A walk that stopped at its own list's end (a loop whose exit
+// Steps of the list walks drawn over meshes (the exact look-up of
+// translucent receivers): the longest list of the frame, the same for all
+// pixels. A walk that stopped at its own list's end (a loop whose exit
 // differs between neighbouring pixels) went wrong on llvmpipe for pixels
-// along a primitive's inner edge; walks step fxAVSMWalk times and do
-// nothing past the end.
+// along a primitive's inner edge; such walks step fxAVSMWalk times and do
+// nothing past the end. The resolve, drawn as one triangle over the map,
+// has no inner edge and stops at the texel's own count (fxAVSMCounts).
 uniform int fxAVSMWalk;
 const uint fxAVSMEnd = 0xFFFFFFFFu;

@@ -10,12 +10,11 @@
 // the transmittance curve exp(-tau) least (the triangle it makes with its
 // neighbours) goes. A surface is a segment of zero thickness: a vertical
 // step, so up to FX_NODES / 2 segments per texel are kept exactly.
-// Order independence: the FX_MAX_LIST (the frame's longest list, up to 64)
-// nearest segments (by entry depth, then optical depth, then exit depth)
-// are kept sorted and inserted in that order, so the curve does not depend
-// on the order fragments arrived in; segments beyond them are summed into
-// one last segment from the nearest entry to the farthest exit among them
-// (exact past it). Optical depth is summed, capped at 1e4 (transmittance 0
+// Order independence: the segments are inserted in order (of entry depth,
+// then optical depth, then exit depth; equal ones together), so the curve
+// does not depend on the order fragments arrived in; past the first
+// FX_MAX_LIST, the rest are summed into one last segment from the nearest
+// entry to the farthest exit among them (exact past it). Optical depth is summed, capped at 1e4 (transmittance 0
 // in float).
 // Output: FX_NODES / 4 targets of depths, then FX_NODES / 4 of optical
 // depths; unused nodes have depth 3e38 and the last optical depth.
@@ -28,9 +27,8 @@ uniform vec2 fxSliceRange; // FX_SLICES: the casters' light depths, near and far
 //VTK::Output::Dec
 
 // Local arrays are indexed with loop counters only (constant after
-// unrolling); list walks take the same number of steps for every pixel
-// (see fxAVSMWalk in vtkFXAVSMLists.glsl). A segment adds two nodes before
-// the curve is trimmed back to FX_NODES.
+// unrolling). A segment adds two nodes before the curve is trimmed back to
+// FX_NODES.
 float fxZ[FX_NODES + 2];
 float fxTau[FX_NODES + 2];
 int fxCount = 0;
@@ -163,6 +161,14 @@ void main()
     //VTK::FXAVSMResolve::Empty
     return;
   }
+  // Walks stop at the texel's own count: the draw is one triangle, so no
+  // primitive edge splits a 2x2 group (see fxAVSMWalk in
+  // vtkFXAVSMLists.glsl); a texel pays for its own list only.
+  // llvmpipe stops a shader's loops after some 65535 iterations, nested
+  // loops' together (59 rounds of 1000 steps lost the tail walk after
+  // them): at most 15000 segments are walked, and the rounds below and the
+  // tail walk stay within 30000 steps.
+  int count = min(int(fxAVSMCounts[texel.y * fxAVSMSize + texel.x]), 15000);
 #if FX_SLICES
   // An opacity shadow map instead (Kim and Neumann, "Opacity Shadow Maps",
   // EGWR 2001), for comparison at equal memory: FX_SLICES regular slices
@@ -177,20 +183,21 @@ void main()
     bins[k] = 0.0;
   }
   float sliceWidth = max(fxSliceRange.y - fxSliceRange.x, 1e-30) / float(FX_SLICES);
-  for (int step = 0; step < fxAVSMWalk; ++step)
+  for (int step = 0; step < count; ++step)
   {
-    if (node != fxAVSMEnd && node < uint(fxAVSMCapacity))
+    if (node == fxAVSMEnd || node >= uint(fxAVSMCapacity))
     {
-      fxAVSMNode segment = fxAVSMNodes[node];
-      node = segment.next;
-      for (int k = 0; k < FX_SLICES; ++k)
-      {
-        float near = k == 0 ? -3e38 : fxSliceRange.x + float(k) * sliceWidth;
-        float far = k == FX_SLICES - 1 ? 3e38 : fxSliceRange.x + float(k + 1) * sliceWidth;
-        float share = fxSegmentShare(segment.depth, segment.exitDepth, segment.opticalDepth, far) -
-          fxSegmentShare(segment.depth, segment.exitDepth, segment.opticalDepth, near);
-        bins[k] = min(bins[k] + share, 1e4);
-      }
+      break;
+    }
+    fxAVSMNode segment = fxAVSMNodes[node];
+    node = segment.next;
+    for (int k = 0; k < FX_SLICES; ++k)
+    {
+      float near = k == 0 ? -3e38 : fxSliceRange.x + float(k) * sliceWidth;
+      float far = k == FX_SLICES - 1 ? 3e38 : fxSliceRange.x + float(k + 1) * sliceWidth;
+      float share = fxSegmentShare(segment.depth, segment.exitDepth, segment.opticalDepth, far) -
+        fxSegmentShare(segment.depth, segment.exitDepth, segment.opticalDepth, near);
+      bins[k] = min(bins[k] + share, 1e4);
     }
   }
   float accumulated = 0.0;
@@ -202,82 +209,88 @@ void main()
   //VTK::FXAVSMResolve::SliceOutput
   return;
 #endif
-  // The FX_MAX_LIST nearest segments, kept sorted as they come (each new
-  // one bubbles to its place; what falls off the end is the farthest):
-  // empty slots hold depth 3e38.
-  float entries[FX_MAX_LIST];
-  float taus[FX_MAX_LIST];
-  float exits[FX_MAX_LIST];
-  for (int i = 0; i < FX_MAX_LIST; ++i)
+  // The texel's segments in order (selection: each round walks the list
+  // for the least segment after the last one taken, and how many share
+  // it, which go in as one); past FX_MAX_LIST rounds, the rest go in as
+  // one segment. No local arrays: count^2 reads of the texel's own list.
+  uint head = node;
+  float lastEntry = -3e38;
+  float lastTau = -3e38;
+  float lastExit = -3e38;
+  int taken = 0;
+  int rounds = min(FX_MAX_LIST, 30000 / max(count, 1) - 1);
+  for (int round = 0; round < FX_MAX_LIST; ++round)
   {
-    entries[i] = 3e38;
-    taus[i] = 0.0;
-    exits[i] = 3e38;
-  }
-  int n = 0;
-  float droppedTau = 0.0;
-  float droppedNear = 3e38;
-  float droppedFar = -3e38;
-  for (int step = 0; step < fxAVSMWalk; ++step)
-  {
-    if (node == fxAVSMEnd || node >= uint(fxAVSMCapacity))
+    if (taken >= count || round >= rounds)
     {
-      continue; // past the end: nothing (see fxAVSMWalk)
+      break;
     }
-    fxAVSMNode segment = fxAVSMNodes[node];
-    float d = segment.depth;
-    float t = segment.opticalDepth;
-    float x = segment.exitDepth;
-    node = segment.next;
-    // Full, and no nearer than the farthest kept: dropped at once (a list
-    // arrives farthest-last when drawn back to front; a loop per fragment
-    // would cost 64 steps, and llvmpipe stops a shader's loops after
-    // 65535 iterations).
-    bool full = n == FX_MAX_LIST;
-    if (full &&
-      !fxBefore(d, t, x, entries[FX_MAX_LIST - 1], taus[FX_MAX_LIST - 1], exits[FX_MAX_LIST - 1]))
+    float entry = 3e38;
+    float tau = 3e38;
+    float exitDepth = 3e38;
+    int same = 0;
+    node = head;
+    for (int step = 0; step < count; ++step)
     {
-      droppedTau = min(droppedTau + t, 1e4);
-      droppedNear = min(droppedNear, d);
-      droppedFar = max(droppedFar, x);
-      continue;
-    }
-    for (int i = 0; i < FX_MAX_LIST; ++i)
-    {
-      if (fxBefore(d, t, x, entries[i], taus[i], exits[i]))
+      if (node == fxAVSMEnd || node >= uint(fxAVSMCapacity))
       {
-        float swapD = entries[i];
-        float swapT = taus[i];
-        float swapX = exits[i];
-        entries[i] = d;
-        taus[i] = t;
-        exits[i] = x;
-        d = swapD;
-        t = swapT;
-        x = swapX;
+        break;
+      }
+      fxAVSMNode segment = fxAVSMNodes[node];
+      node = segment.next;
+      if (fxBefore(lastEntry, lastTau, lastExit, segment.depth, segment.opticalDepth,
+            segment.exitDepth))
+      {
+        if (fxBefore(segment.depth, segment.opticalDepth, segment.exitDepth, entry, tau, exitDepth))
+        {
+          entry = segment.depth;
+          tau = segment.opticalDepth;
+          exitDepth = segment.exitDepth;
+          same = 1;
+        }
+        else if (segment.depth == entry && segment.opticalDepth == tau &&
+          segment.exitDepth == exitDepth)
+        {
+          ++same;
+        }
       }
     }
-    if (!full)
+    if (same == 0)
     {
-      ++n; // an empty slot fell off
+      break; // the list was shorter than its count (never)
     }
-    else
-    {
-      droppedTau = min(droppedTau + t, 1e4);
-      droppedNear = min(droppedNear, d);
-      droppedFar = max(droppedFar, x);
-    }
+    fxInsertSegment(entry, exitDepth, min(tau * float(same), 1e4));
+    taken += same;
+    lastEntry = entry;
+    lastTau = tau;
+    lastExit = exitDepth;
   }
-  for (int i = 0; i < FX_MAX_LIST; ++i)
+  if (taken < count)
   {
-    if (i < n)
+    float restTau = 0.0;
+    float restNear = 3e38;
+    float restFar = -3e38;
+    node = head;
+    for (int step = 0; step < count; ++step)
     {
-      fxInsertSegment(entries[i], exits[i], taus[i]);
+      if (node == fxAVSMEnd || node >= uint(fxAVSMCapacity))
+      {
+        break;
+      }
+      fxAVSMNode segment = fxAVSMNodes[node];
+      node = segment.next;
+      if (fxBefore(lastEntry, lastTau, lastExit, segment.depth, segment.opticalDepth,
+            segment.exitDepth))
+      {
+        restTau = min(restTau + segment.opticalDepth, 1e4);
+        restNear = min(restNear, segment.depth);
+        restFar = max(restFar, segment.exitDepth);
+      }
     }
-  }
-  if (droppedTau > 0.0)
-  {
-    fxInsertSegment(droppedNear, droppedFar, droppedTau);
+    if (restTau > 0.0)
+    {
+      fxInsertSegment(restNear, restFar, restTau);
+    }
   }
   float total = fxCurveAt(3e38);
   for (int i = 0; i < FX_NODES; ++i)
