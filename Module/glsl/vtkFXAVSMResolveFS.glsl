@@ -28,16 +28,12 @@ uniform vec2 fxSliceRange; // FX_SLICES: the casters' light depths, near and far
 
 // Local arrays are indexed with loop counters only (constant after
 // unrolling). A segment adds two nodes before the curve is trimmed back to
-// FX_NODES.
+// FX_NODES. Each node keeps its transmittance beside its optical depth:
+// the area rule weighs transmittance, and exp() is paid once per change.
 float fxZ[FX_NODES + 2];
 float fxTau[FX_NODES + 2];
+float fxTr[FX_NODES + 2];
 int fxCount = 0;
-
-// Exp(-tau) of a node: the transmittance the area rule weighs.
-float fxT(float tau)
-{
-  return exp(-tau);
-}
 
 // The curve's optical depth at z: 0 before the first node, the last
 // node's past the last, linear in between.
@@ -46,41 +42,41 @@ float fxCurveAt(float z)
   float value = 0.0;
   for (int i = 0; i < FX_NODES + 2; ++i)
   {
+    int next = min(i + 1, FX_NODES + 1);
     if (i < fxCount && fxZ[i] <= z)
     {
-      value = fxTau[i];
-      if (i + 1 < fxCount && i + 1 < FX_NODES + 2 && fxZ[i + 1] > z)
-      {
-        value = mix(fxTau[i], fxTau[min(i + 1, FX_NODES + 1)],
-          (z - fxZ[i]) / (fxZ[min(i + 1, FX_NODES + 1)] - fxZ[i]));
-      }
+      value = (i + 1 < fxCount && fxZ[next] > z)
+        ? mix(fxTau[i], fxTau[next], (z - fxZ[i]) / (fxZ[next] - fxZ[i]))
+        : fxTau[i];
     }
   }
   return value;
 }
 
-// A node at depth z, after the nodes at or before z.
+// A node at depth z, after the nodes at or before z: from the end down,
+// nodes past z move up one, and z takes the place above the first that
+// does not.
 void fxAddNode(float z, float tau)
 {
-  int at = 0;
-  for (int i = 0; i < FX_NODES + 2; ++i)
+  bool placed = false;
+  for (int i = FX_NODES + 1; i >= 0; --i)
   {
-    at += (i < fxCount && fxZ[i] <= z) ? 1 : 0;
-  }
-  for (int i = FX_NODES + 1; i > 0; --i)
-  {
-    if (i > at && i <= fxCount)
+    int below = max(i - 1, 0);
+    if (i <= fxCount && !placed)
     {
-      fxZ[i] = fxZ[i - 1];
-      fxTau[i] = fxTau[i - 1];
-    }
-  }
-  for (int i = 0; i < FX_NODES + 2; ++i)
-  {
-    if (i == at)
-    {
-      fxZ[i] = z;
-      fxTau[i] = tau;
+      if (i > 0 && fxZ[below] > z)
+      {
+        fxZ[i] = fxZ[below];
+        fxTau[i] = fxTau[below];
+        fxTr[i] = fxTr[below];
+      }
+      else
+      {
+        fxZ[i] = z;
+        fxTau[i] = tau;
+        fxTr[i] = exp(-tau);
+        placed = true;
+      }
     }
   }
   ++fxCount;
@@ -96,8 +92,8 @@ void fxRemoveNode()
   {
     if (i + 1 < fxCount)
     {
-      float area = abs((fxZ[i] - fxZ[i - 1]) * (fxT(fxTau[i + 1]) - fxT(fxTau[i - 1])) -
-        (fxT(fxTau[i]) - fxT(fxTau[i - 1])) * (fxZ[i + 1] - fxZ[i - 1]));
+      float area = abs((fxZ[i] - fxZ[i - 1]) * (fxTr[i + 1] - fxTr[i - 1]) -
+        (fxTr[i] - fxTr[i - 1]) * (fxZ[i + 1] - fxZ[i - 1]));
       if (area < smallest)
       {
         smallest = area;
@@ -111,26 +107,49 @@ void fxRemoveNode()
     {
       fxZ[i] = fxZ[i + 1];
       fxTau[i] = fxTau[i + 1];
+      fxTr[i] = fxTr[i + 1];
     }
   }
   --fxCount;
 }
 
 // Seed 003's insertion of a segment into the curve: nodes where it enters
-// and exits, its share added to every node (all of it past the exit).
+// and exits (the curve's value there before, plus all of the segment at
+// the exit), its share added to every node it reaches (all of it past the
+// exit). One pass reads the old curve at both ends and adds the shares:
+// node i is read before it changes, node i + 1 after.
 void fxInsertSegment(float entry, float exitDepth, float tau)
 {
-  float atEntry = fxCurveAt(entry);
-  float atExit = min(fxCurveAt(exitDepth) + tau, 1e4);
+  float atEntry = 0.0;
+  float atExit = 0.0;
   for (int i = 0; i < FX_NODES + 2; ++i)
   {
+    int next = min(i + 1, FX_NODES + 1);
     if (i < fxCount)
     {
-      fxTau[i] = min(fxTau[i] + fxSegmentShare(entry, exitDepth, tau, fxZ[i]), 1e4);
+      bool last = i + 1 >= fxCount;
+      if (fxZ[i] <= entry)
+      {
+        atEntry = (!last && fxZ[next] > entry)
+          ? mix(fxTau[i], fxTau[next], (entry - fxZ[i]) / (fxZ[next] - fxZ[i]))
+          : fxTau[i];
+      }
+      if (fxZ[i] <= exitDepth)
+      {
+        atExit = (!last && fxZ[next] > exitDepth)
+          ? mix(fxTau[i], fxTau[next], (exitDepth - fxZ[i]) / (fxZ[next] - fxZ[i]))
+          : fxTau[i];
+      }
+      float share = fxSegmentShare(entry, exitDepth, tau, fxZ[i]);
+      if (share > 0.0)
+      {
+        fxTau[i] = min(fxTau[i] + share, 1e4);
+        fxTr[i] = exp(-fxTau[i]);
+      }
     }
   }
   fxAddNode(entry, atEntry);
-  fxAddNode(exitDepth, atExit);
+  fxAddNode(exitDepth, min(atExit + tau, 1e4));
   for (int k = 0; k < 2; ++k)
   {
     if (fxCount > FX_NODES)
