@@ -67,17 +67,30 @@ bool Contains(const std::string& s, const char* what)
   return s.find(what) != std::string::npos;
 }
 
-// Lights a map can be made for: directional ones (an orthographic view)
-// and spot lights (a perspective view of twice the cone), not headlights
-// (they cast no visible shadow) nor omnidirectional positional lights.
+// Lights that cast: not headlights (their shadows hide behind what casts
+// them) and not those whose ShadowAttenuation (VTK's per-light shadow
+// strength) is 0.
 bool IsCasting(vtkLight* light)
 {
-  if (light->LightTypeIsHeadlight())
-  {
-    return false;
-  }
-  return !light->GetPositional() || (light->GetConeAngle() > 0.0 && light->GetConeAngle() < 89.0);
+  return !light->LightTypeIsHeadlight() && light->GetShadowAttenuation() > 0.0f;
 }
+
+// A spot light (one perspective view of its cone) rather than a light in
+// every direction (six).
+bool IsSpot(vtkLight* light)
+{
+  return light->GetConeAngle() > 0.0 && light->GetConeAngle() < 89.0;
+}
+
+// What decides which lights cast first.
+double Brightness(vtkLight* light)
+{
+  const double* c = light->GetDiffuseColor();
+  return light->GetIntensity() * std::max(c[0], std::max(c[1], c[2]));
+}
+
+// Views of the atlas per row: a light in every direction fills one row.
+const int AtlasColumns = 6;
 
 // Storage buffers, their clears, program-interface queries and memory
 // barriers: all of OpenGL 4.3 (llvmpipe has 4.5).
@@ -126,9 +139,6 @@ vtkFXAVSMPass::vtkFXAVSMPass()
 {
   this->Stage = AfterGBuffer;
   this->DeclareOutput("visibility");
-  this->LightCamera = vtkSmartPointer<vtkCamera>::New();
-  this->LightProjection = vtkSmartPointer<vtkMatrix4x4>::New();
-  this->ViewToLight = vtkSmartPointer<vtkMatrix4x4>::New();
   this->CasterPass = vtkSmartPointer<vtkTranslucentPass>::New();
   this->ResolveQuad.OneTriangle = true; // its walks stop at each texel's count
 }
@@ -143,20 +153,35 @@ int vtkFXAVSMPass::Nodes() const
 bool vtkFXAVSMPass::HasWork(const vtkFXSceneInfo& scene)
 {
   this->Casters = scene.TranslucentProps;
-  this->CastingLight = nullptr;
-  this->LightIndex = -1;
+  this->CastingLights.clear();
   for (size_t i = 0; i < scene.Lights.size(); ++i)
   {
     vtkLight* light = scene.Lights[i];
     if (IsCasting(light))
     {
-      this->CastingLight = light;
-      this->LightIndex = static_cast<int>(i);
-      break;
+      CastingLight casting;
+      casting.Light = light;
+      casting.Index = static_cast<int>(i);
+      casting.Attenuation = std::min(1.0f, light->GetShadowAttenuation());
+      this->CastingLights.push_back(casting);
     }
   }
-  return this->CastingLight && !this->Casters.empty() && !scene.OpaqueProps.empty() &&
+  // The brightest first; among equals, the first.
+  std::stable_sort(this->CastingLights.begin(), this->CastingLights.end(),
+    [](const CastingLight& a, const CastingLight& b) {
+      return Brightness(a.Light) > Brightness(b.Light);
+    });
+  if (static_cast<int>(this->CastingLights.size()) > this->MaximumNumberOfLights)
+  {
+    this->CastingLights.resize(this->MaximumNumberOfLights);
+  }
+  return !this->CastingLights.empty() && !this->Casters.empty() && !scene.OpaqueProps.empty() &&
     this->Superclass::HasWork(scene);
+}
+
+int vtkFXAVSMPass::GetCastingLightIndex(int k) const
+{
+  return (k >= 0 && k < this->GetNumberOfCastingLights()) ? this->CastingLights[k].Index : -1;
 }
 
 vtkTextureObject* vtkFXAVSMPass::GetCurveTexture(int i)
@@ -166,8 +191,8 @@ vtkTextureObject* vtkFXAVSMPass::GetCurveTexture(int i)
 
 double vtkFXAVSMPass::GetListBytesPerTexel() const
 {
-  const double texels = double(this->ShadowMapSize) * this->ShadowMapSize;
-  return 8.0 + 16.0 * this->StoredFragments / texels;
+  const double texels = double(this->AtlasSize[0]) * this->AtlasSize[1];
+  return texels > 0.0 ? 8.0 + 16.0 * this->StoredFragments / texels : 0.0;
 }
 
 bool vtkFXAVSMPass::GetTexelFragments(int x, int y, std::vector<double>& depths,
@@ -179,9 +204,9 @@ bool vtkFXAVSMPass::GetTexelFragments(int x, int y, std::vector<double>& depths,
   {
     exitDepths->clear();
   }
-  const int n = this->ShadowMapSize;
-  if (!this->Buffers[HeadsBuffer] || x < 0 || y < 0 || x >= n || y >= n ||
-    vtkIdType(n) * n != this->BufferTexels)
+  const int n = this->AtlasSize[0];
+  if (!this->Buffers[HeadsBuffer] || x < 0 || y < 0 || x >= n || y >= this->AtlasSize[1] ||
+    vtkIdType(n) * this->AtlasSize[1] != this->BufferTexels)
   {
     return false;
   }
@@ -217,8 +242,8 @@ bool vtkFXAVSMPass::GetTexelCurve(
 {
   depths.clear();
   opticalDepths.clear();
-  const int n = this->ShadowMapSize;
-  if (this->Curves.empty() || x < 0 || y < 0 || x >= n || y >= n)
+  if (this->Curves.empty() || x < 0 || y < 0 || x >= this->AtlasSize[0] ||
+    y >= this->AtlasSize[1])
   {
     return false;
   }
@@ -239,12 +264,13 @@ bool vtkFXAVSMPass::GetTexelCurve(
 
 bool vtkFXAVSMPass::GetLongestListTexel(int& x, int& y)
 {
-  const int n = this->ShadowMapSize;
-  if (!this->Buffers[CountsBuffer] || vtkIdType(n) * n != this->BufferTexels)
+  const int n = this->AtlasSize[0];
+  if (!this->Buffers[CountsBuffer] || n <= 0 ||
+    vtkIdType(n) * this->AtlasSize[1] != this->BufferTexels)
   {
     return false;
   }
-  std::vector<GLuint> counts(static_cast<size_t>(n) * n);
+  std::vector<GLuint> counts(static_cast<size_t>(this->BufferTexels));
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CountsBuffer]);
   glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, counts.size() * 4, counts.data());
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
@@ -259,10 +285,22 @@ bool vtkFXAVSMPass::GetLongestListTexel(int& x, int& y)
   return true;
 }
 
-void vtkFXAVSMPass::GetCasterDepthRange(double range[2]) const
+void vtkFXAVSMPass::GetCasterDepthRange(double range[2], int view) const
 {
-  range[0] = this->SliceRange[0];
-  range[1] = this->SliceRange[1];
+  const bool known = view >= 0 && view < this->GetNumberOfViews();
+  range[0] = known ? this->Views[view].SliceRange[0] : 0.0;
+  range[1] = known ? this->Views[view].SliceRange[1] : 1.0;
+}
+
+bool vtkFXAVSMPass::GetViewOrigin(int view, int origin[2]) const
+{
+  if (view < 0 || view >= this->GetNumberOfViews())
+  {
+    return false;
+  }
+  origin[0] = this->Views[view].Origin[0];
+  origin[1] = this->Views[view].Origin[1];
+  return true;
 }
 
 unsigned int vtkFXAVSMPass::GetRequiredChannels()
@@ -276,8 +314,8 @@ vtkFXEffectPass::Output vtkFXAVSMPass::GetOutput(const char* name)
   if (name && std::string(name) == "visibility" && this->Visibility)
   {
     out.Texture = this->Visibility;
-    out.Components = 1;
-    out.Format = vtkFXRenderUtilities::R32F;
+    out.Components = this->VisibilityChannels();
+    out.Format = out.Components == 1 ? vtkFXRenderUtilities::R32F : vtkFXRenderUtilities::RGBA32F;
   }
   return out;
 }
@@ -287,9 +325,13 @@ std::string vtkFXAVSMPass::GetCompositeCode(int hook)
   switch (hook)
   {
     case Declarations:
-      return "uniform sampler2D @visibility;\nuniform int @light;";
+      return "uniform sampler2D @visibility;\nuniform int @lights[4]; // casting, -1: none";
     case LightVisibility:
-      return "      if (lightIndex == @light) { lightVisibility *= texture(@visibility, texCoord).r; }";
+      // Channel k holds the k-th casting light's visibility.
+      return "      for (int k = 0; k < 4; ++k)\n"
+             "      {\n"
+             "        if (lightIndex == @lights[k]) { lightVisibility *= texture(@visibility, texCoord)[k]; }\n"
+             "      }";
     default:
       return std::string();
   }
@@ -297,13 +339,18 @@ std::string vtkFXAVSMPass::GetCompositeCode(int hook)
 
 void vtkFXAVSMPass::BindCompositeResources(vtkShaderProgram* program, const std::string& prefix)
 {
-  const bool ready = this->Visibility && this->LightIndex >= 0;
+  const bool ready = this->Visibility && !this->CastingLights.empty();
   if (ready)
   {
     this->Visibility->Activate();
     program->SetUniformi((prefix + "visibility").c_str(), this->Visibility->GetTextureUnit());
   }
-  program->SetUniformi((prefix + "light").c_str(), ready ? this->LightIndex : -1);
+  int lights[4] = { -1, -1, -1, -1 };
+  for (int k = 0; ready && k < this->GetNumberOfCastingLights(); ++k)
+  {
+    lights[k] = this->CastingLights[k].Index;
+  }
+  program->SetUniform1iv((prefix + "lights").c_str(), 4, lights);
 }
 
 void vtkFXAVSMPass::UnbindCompositeResources()
@@ -332,11 +379,39 @@ void vtkFXAVSMPass::GatherCasters(vtkRenderer* ren)
   }
 }
 
-void vtkFXAVSMPass::FitLightCamera(vtkOpenGLRenderer* ren)
+void vtkFXAVSMPass::AddView(const double position[3], const double direction[3],
+  vtkMatrix4x4* projection, bool perspective, const double nearFar[2])
 {
-  // A view from the light that holds every caster and receiver: along a
-  // directional light, an orthographic box around the visible props; from
-  // a spot light, the perspective view of its cone.
+  LightView view;
+  view.Camera = vtkSmartPointer<vtkCamera>::New();
+  view.Projection = projection;
+  view.ViewToLight = vtkSmartPointer<vtkMatrix4x4>::New();
+  view.Perspective = perspective;
+  view.NearFar[0] = nearFar[0];
+  view.NearFar[1] = nearFar[1];
+  // Any up vector not along the view.
+  const double up[3] = { std::fabs(direction[1]) < 0.9 ? 0.0 : 1.0,
+    std::fabs(direction[1]) < 0.9 ? 1.0 : 0.0, 0.0 };
+  view.Camera->SetPosition(position);
+  view.Camera->SetFocalPoint(
+    position[0] + direction[0], position[1] + direction[1], position[2] + direction[2]);
+  view.Camera->SetViewUp(up);
+  // VTK's splats face a parallel camera along its axis (not its position).
+  view.Camera->SetParallelProjection(!perspective);
+  view.Camera->SetExplicitProjectionTransformMatrix(projection);
+  view.Camera->UseExplicitProjectionTransformMatrixOn();
+  const int index = static_cast<int>(this->Views.size());
+  view.Origin[0] = (index % AtlasColumns) * this->ShadowMapSize;
+  view.Origin[1] = (index / AtlasColumns) * this->ShadowMapSize;
+  this->Views.push_back(view);
+}
+
+void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
+{
+  // Views from each light that hold every caster and receiver (the visible
+  // props' bounding sphere): along a directional light, an orthographic
+  // box around it; from a spot light, the perspective view of its cone;
+  // from any other positional light, the six faces of a cube.
   double bounds[6];
   ren->ComputeVisiblePropBounds(bounds);
   double center[3] = { 0.0, 0.0, 0.0 };
@@ -352,82 +427,87 @@ void vtkFXAVSMPass::FitLightCamera(vtkOpenGLRenderer* ren)
     radius = std::sqrt(radius);
     radius = (std::isfinite(radius) && radius > 0.0) ? radius : 1.0;
   }
-  double direction[3];
-  vtkMath::Subtract(this->CastingLight->GetTransformedFocalPoint(),
-    this->CastingLight->GetTransformedPosition(), direction);
-  if (vtkMath::Normalize(direction) <= 0.0)
+  this->Views.clear();
+  for (CastingLight& casting : this->CastingLights)
   {
-    direction[0] = 0.0;
-    direction[1] = 0.0;
-    direction[2] = -1.0;
+    vtkLight* light = casting.Light;
+    casting.FirstView = static_cast<int>(this->Views.size());
+    double direction[3];
+    vtkMath::Subtract(light->GetTransformedFocalPoint(), light->GetTransformedPosition(), direction);
+    if (vtkMath::Normalize(direction) <= 0.0)
+    {
+      direction[0] = 0.0;
+      direction[1] = 0.0;
+      direction[2] = -1.0;
+    }
+    vtkNew<vtkMatrix4x4> p;
+    p->Zero();
+    if (!light->GetPositional())
+    {
+      // glOrtho(-r, r, -r, r, r, 3r) from 2r before the centre: the square
+      // map covers the bounding sphere whatever the window's aspect.
+      const double position[3] = { center[0] - 2.0 * radius * direction[0],
+        center[1] - 2.0 * radius * direction[1], center[2] - 2.0 * radius * direction[2] };
+      p->SetElement(0, 0, 1.0 / radius);
+      p->SetElement(1, 1, 1.0 / radius);
+      p->SetElement(2, 2, -1.0 / radius);
+      p->SetElement(2, 3, -2.0);
+      p->SetElement(3, 3, 1.0);
+      const double nearFar[2] = { radius, 3.0 * radius };
+      this->AddView(position, direction, p, false, nearFar);
+    }
+    else
+    {
+      // Perspective views from the light, depth from just in front of it
+      // (it may sit inside the data) to the far side of the props' bounding
+      // sphere. Depth is the distance along a view's axis (clip w): the
+      // sphere spans the centre's axial distance plus or minus r for a spot
+      // light, wherever it is aimed; for a cube face, up to the centre's
+      // distance plus r.
+      const double* from = light->GetTransformedPosition();
+      const double toCenter[3] = { center[0] - from[0], center[1] - from[1], center[2] - from[2] };
+      const bool spot = IsSpot(light);
+      const double axial = spot ? vtkMath::Dot(toCenter, direction) : vtkMath::Norm(toCenter);
+      const double farPlane = std::max(axial + radius, 1e-30);
+      const double nearPlane = std::max(spot ? axial - radius : 0.0, 1e-3 * farPlane);
+      const double f = spot
+        ? 1.0 / std::tan(vtkMath::RadiansFromDegrees(std::max(0.5, light->GetConeAngle())))
+        : 1.0; // 90 degrees
+      p->SetElement(0, 0, f);
+      p->SetElement(1, 1, f);
+      p->SetElement(2, 2, -(farPlane + nearPlane) / (farPlane - nearPlane));
+      p->SetElement(2, 3, -2.0 * farPlane * nearPlane / (farPlane - nearPlane));
+      p->SetElement(3, 2, -1.0);
+      const double nearFar[2] = { nearPlane, farPlane };
+      if (spot)
+      {
+        this->AddView(from, direction, p, true, nearFar);
+      }
+      else
+      {
+        const double faces[6][3] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 },
+          { 0, 0, 1 }, { 0, 0, -1 } };
+        for (const auto& face : faces)
+        {
+          this->AddView(from, face, p, true, nearFar);
+        }
+      }
+    }
+    casting.NumberOfViews = static_cast<int>(this->Views.size()) - casting.FirstView;
   }
-  // Any up vector not along the light.
-  const double up[3] = { std::fabs(direction[1]) < 0.9 ? 0.0 : 1.0,
-    std::fabs(direction[1]) < 0.9 ? 1.0 : 0.0, 0.0 };
-  vtkCamera* camera = this->LightCamera;
-  vtkMatrix4x4* p = this->LightProjection;
-  p->Zero();
-  this->LightPerspective = this->CastingLight->GetPositional() != 0;
-  if (this->LightPerspective)
-  {
-    // A spot light: the perspective view from the light through its cone.
-    // Depth from just in front of the light (it may sit inside the data)
-    // to the far side of the props' bounding sphere.
-    const double* from = this->CastingLight->GetTransformedPosition();
-    // Depth is the distance along the light's axis (clip w): the props'
-    // bounding sphere spans the centre's axial distance plus or minus r,
-    // wherever the spot is aimed.
-    const double toCenter[3] = { center[0] - from[0], center[1] - from[1], center[2] - from[2] };
-    const double axial = vtkMath::Dot(toCenter, direction);
-    const double farPlane = std::max(axial + radius, 1e-30);
-    const double nearPlane = std::max(axial - radius, 1e-3 * farPlane);
-    const double cone = std::max(0.5, this->CastingLight->GetConeAngle());
-    const double f = 1.0 / std::tan(vtkMath::RadiansFromDegrees(cone));
-    const double focal[3] = { from[0] + direction[0], from[1] + direction[1],
-      from[2] + direction[2] };
-    camera->SetPosition(from);
-    camera->SetFocalPoint(focal);
-    camera->SetViewUp(up);
-    p->SetElement(0, 0, f);
-    p->SetElement(1, 1, f);
-    p->SetElement(2, 2, -(farPlane + nearPlane) / (farPlane - nearPlane));
-    p->SetElement(2, 3, -2.0 * farPlane * nearPlane / (farPlane - nearPlane));
-    p->SetElement(3, 2, -1.0);
-    this->LightNearFar[0] = nearPlane;
-    this->LightNearFar[1] = farPlane;
-  }
-  else
-  {
-    // glOrtho(-r, r, -r, r, r, 3r) from 2r before the centre: the square
-    // map covers the bounding sphere whatever the window's aspect.
-    const double position[3] = { center[0] - 2.0 * radius * direction[0],
-      center[1] - 2.0 * radius * direction[1], center[2] - 2.0 * radius * direction[2] };
-    camera->SetPosition(position);
-    camera->SetFocalPoint(center);
-    camera->SetViewUp(up);
-    p->SetElement(0, 0, 1.0 / radius);
-    p->SetElement(1, 1, 1.0 / radius);
-    p->SetElement(2, 2, -1.0 / radius);
-    p->SetElement(2, 3, -2.0);
-    p->SetElement(3, 3, 1.0);
-    this->LightNearFar[0] = radius;
-    this->LightNearFar[1] = 3.0 * radius;
-  }
-  // VTK's splats face a parallel camera along its axis (not its position).
-  camera->SetParallelProjection(!this->LightPerspective);
-  camera->SetExplicitProjectionTransformMatrix(p);
-  camera->UseExplicitProjectionTransformMatrixOn();
+  const int views = static_cast<int>(this->Views.size());
+  this->AtlasSize[0] = std::min(views, AtlasColumns) * this->ShadowMapSize;
+  this->AtlasSize[1] = ((views + AtlasColumns - 1) / AtlasColumns) * this->ShadowMapSize;
 }
 
-void vtkFXAVSMPass::ComputeCasterDepthRange(float range[2]) const
+void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
 {
   // The casters' bounds seen from the light, in light depth (0..1, see
-  // vtkFXAVSMLightDepth.glsl). A box reaching behind a spot light (the
-  // light inside the data) starts at the near plane.
+  // vtkFXAVSMLightDepth.glsl). A box reaching behind a spot or point light
+  // (the light inside the data) starts at the near plane.
   double lo = 1.0, hi = 0.0;
   vtkNew<vtkMatrix4x4> toClip;
-  vtkMatrix4x4::Multiply4x4(
-    this->LightProjection, this->LightCamera->GetViewTransformMatrix(), toClip);
+  vtkMatrix4x4::Multiply4x4(view.Projection, view.Camera->GetViewTransformMatrix(), toClip);
   for (vtkProp* prop : this->Casters)
   {
     const double* b = prop->GetBounds();
@@ -437,16 +517,16 @@ void vtkFXAVSMPass::ComputeCasterDepthRange(float range[2]) const
     {
       continue;
     }
-    lo = std::min(lo, behind > 0 ? 0.0 : this->LightDepthFromNDC(ndcMin[2]));
-    hi = std::max(hi, this->LightDepthFromNDC(ndcMax[2]));
+    lo = std::min(lo, behind > 0 ? 0.0 : LightDepthFromNDC(view, ndcMin[2]));
+    hi = std::max(hi, LightDepthFromNDC(view, ndcMax[2]));
   }
-  range[0] = static_cast<float>(std::max(0.0, std::min(lo, hi)));
-  range[1] = static_cast<float>(std::min(1.0, std::max(lo, hi)));
+  view.SliceRange[0] = static_cast<float>(std::max(0.0, std::min(lo, hi)));
+  view.SliceRange[1] = static_cast<float>(std::min(1.0, std::max(lo, hi)));
 }
 
 bool vtkFXAVSMPass::EnsureBuffers()
 {
-  const vtkIdType texels = vtkIdType(this->ShadowMapSize) * this->ShadowMapSize;
+  const vtkIdType texels = vtkIdType(this->AtlasSize[0]) * this->AtlasSize[1];
   if (!this->Buffers[HeadsBuffer])
   {
     glGenBuffers(NumberOfBuffers, this->Buffers);
@@ -487,8 +567,8 @@ void vtkFXAVSMPass::BindBuffers(vtkShaderProgram* program)
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, this->Buffers[i]);
   }
-  program->SetUniformi("fxAVSMSize", this->ShadowMapSize);
-  this->SetLightDepthUniforms(program);
+  program->SetUniform2i("fxAVSMAtlas", this->AtlasSize);
+  this->SetCaptureViewUniforms(program);
   if (program->IsUniformUsed("fxAVSMCapacity"))
   {
     program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->Capacity));
@@ -555,13 +635,13 @@ bool vtkFXAVSMPass::PostReplaceShaderValues(
   {
     return true;
   }
-  // A splat takes the transmittance at its centre, looked up once per
-  // splat (at its corners) rather than per fragment: a cloud's splats
-  // overlap in many layers on screen.
+  // A splat takes the brightest casting light's visibility at its centre,
+  // looked up once per splat (at its corners) rather than per fragment: a
+  // cloud's splats overlap in many layers on screen.
   const bool splat = ExtendSplatShaders(geometryShader, fragmentShader,
     "out float fxSplatTransmittanceGSOutput;\n" + this->CurveDefines(this->Exact) +
       (this->Exact ? vtkFXAVSMLists : "") + this->CurveCode(),
-    "fxSplatTransmittanceGSOutput = fxLightTransmittance(gl_in[0].gl_Position.xyz);",
+    "fxSplatTransmittanceGSOutput = fxLightTransmittance(0, gl_in[0].gl_Position.xyz);",
     "in float fxSplatTransmittanceVSOutput;");
   if (splat && this->Exact)
   {
@@ -569,34 +649,35 @@ bool vtkFXAVSMPass::PostReplaceShaderValues(
   }
 
   // VTK 9.1's per-light statements (the ones vtkShadowMapPass rewrites
-  // too); a shader without them (unlit) keeps its colour, unless it draws
-  // splats.
-  const std::string n = std::to_string(this->LightIndex);
-  const std::string diffuse = "diffuse += (df * lightColor" + n + ");";
-  const std::string specular = "specular += (sf * lightColor" + n + ");";
-  const bool lit = Contains(fragmentShader, diffuse.c_str());
+  // too) take each casting light's visibility; a shader without them
+  // (unlit) keeps its colour, unless it draws splats.
   std::string receive;
-  if (lit || splat)
+  for (int k = 0; k < this->GetNumberOfCastingLights(); ++k)
   {
-    receive = splat ? "float fxAVSMT = fxSplatTransmittanceVSOutput;"
-                    : "float fxAVSMT = fxLightTransmittance(vertexVC.xyz);";
+    const std::string n = std::to_string(this->CastingLights[k].Index);
+    const std::string t = "fxAVSMT" + std::to_string(k);
+    const std::string diffuse = "diffuse += (df * lightColor" + n + ");";
+    const std::string specular = "specular += (sf * lightColor" + n + ");";
+    if (Contains(fragmentShader, diffuse.c_str()))
+    {
+      receive += "float " + t + " = fxLightTransmittance(" + std::to_string(k) + ", vertexVC.xyz);\n  ";
+      vtkShaderProgram::Substitute(
+        fragmentShader, diffuse, "diffuse += (df * " + t + " * lightColor" + n + ");", false);
+      vtkShaderProgram::Substitute(
+        fragmentShader, specular, "specular += (sf * " + t + " * lightColor" + n + ");", false);
+    }
   }
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::FXAVSMReceive::Impl", receive, false);
-  if (splat && !lit)
+  if (splat && receive.empty())
   {
     // VTK draws splats unlit (ambient plus diffuse colour, set in place of
-    // the light tag): the diffuse part is taken as the casting light's, so
-    // the cloud shadows itself.
+    // the light tag): the diffuse part is taken as the brightest casting
+    // light's, so the cloud shadows itself.
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
-      "gl_FragData[0].rgb = ambientColor + diffuseColor * fxAVSMT;\n  //VTK::Light::Impl", false);
+      "gl_FragData[0].rgb = ambientColor + diffuseColor * fxSplatTransmittanceVSOutput;\n"
+      "  //VTK::Light::Impl",
+      false);
   }
-  if (lit)
-  {
-    vtkShaderProgram::Substitute(
-      fragmentShader, diffuse, "diffuse += (df * fxAVSMT * lightColor" + n + ");", false);
-    vtkShaderProgram::Substitute(
-      fragmentShader, specular, "specular += (sf * fxAVSMT * lightColor" + n + ");", false);
-  }
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::FXAVSMReceive::Impl", receive, false);
   return true;
 }
 
@@ -609,7 +690,7 @@ void vtkFXAVSMPass::BeginForwardShading(const vtkRenderState* s)
 {
   // Nothing captured this frame (no casting light, no GL 4.3): no shadows.
   const bool ready = this->Exact ? this->Buffers[HeadsBuffer] != 0 : !this->Curves.empty();
-  if (!ready || this->LightIndex < 0 || !this->Visibility)
+  if (!ready || this->CastingLights.empty() || this->Views.empty() || !this->Visibility)
   {
     return;
   }
@@ -674,22 +755,30 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
   glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 8, zeros);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 
-  vtkFXRenderUtilities::EnsureTexture(this->CaptureTarget, window, this->ShadowMapSize,
-    this->ShadowMapSize, vtkFXRenderUtilities::R8);
+  vtkFXRenderUtilities::EnsureTexture(this->CaptureTarget, window, this->AtlasSize[0],
+    this->AtlasSize[1], vtkFXRenderUtilities::R8);
   {
     // Every fragment counts: no depth test, no culling by depth; nothing
-    // is drawn (the capture discards).
+    // is drawn (the capture discards). Each view renders into its square
+    // of the atlas (the viewport), from its camera.
     vtkFXRenderUtilities::RenderTargetScope target(window, this->CaptureFrameBuffer, this->CaptureTarget);
     vtkOpenGLState::ScopedglDepthMask depthMask(window->GetState());
     window->GetState()->vtkglDepthMask(GL_FALSE);
     vtkCamera* viewer = ren->GetActiveCamera();
     viewer->Register(this);
-    ren->SetActiveCamera(this->LightCamera);
     vtkRenderState state(ren);
     state.SetPropArrayAndCount(this->Casters.data(), static_cast<int>(this->Casters.size()));
     state.SetFrameBuffer(this->CaptureFrameBuffer);
     this->PreRender(&state);
-    this->CasterPass->Render(&state);
+    for (int v = 0; v < this->GetNumberOfViews(); ++v)
+    {
+      this->CaptureView = v;
+      const LightView& view = this->Views[v];
+      window->GetState()->vtkglViewport(
+        view.Origin[0], view.Origin[1], this->ShadowMapSize, this->ShadowMapSize);
+      ren->SetActiveCamera(view.Camera);
+      this->CasterPass->Render(&state);
+    }
     this->PostRender(&state);
     ren->SetActiveCamera(viewer);
     viewer->UnRegister(this);
@@ -749,13 +838,14 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
   for (auto& t : this->Curves)
   {
     vtkFXRenderUtilities::EnsureTexture(
-      t, window, this->ShadowMapSize, this->ShadowMapSize, vtkFXRenderUtilities::RGBA32F);
+      t, window, this->AtlasSize[0], this->AtlasSize[1], vtkFXRenderUtilities::RGBA32F);
   }
   std::ostringstream defines;
   const bool slices = this->Representation == RegularSlices;
   defines << StorageExtension << "#define FX_NODES " << nodes << "\n#define FX_MAX_LIST "
-          << MaximumListPerTexel << "\n#define FX_SLICES "
-          << (slices ? 2 * nodes : 0) << "\n";
+          << MaximumListPerTexel << "\n#define FX_SLICES " << (slices ? 2 * nodes : 0)
+          << "\n#define FX_VIEWS " << this->GetNumberOfViews() << "\n#define FX_ATLAS_COLUMNS "
+          << AtlasColumns << "\n";
   std::ostringstream sliceOutput;
   for (int k = 0; k < nodes / 2; ++k)
   {
@@ -797,10 +887,7 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
   {
     this->BindBuffers(program);
     program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->StoredFragments));
-    if (slices)
-    {
-      program->SetUniform2f("fxSliceRange", this->SliceRange);
-    }
+    this->SetViewUniforms(program);
     this->ResolveQuad.Helper->Render();
   }
 }
@@ -811,7 +898,9 @@ std::string vtkFXAVSMPass::CurveDefines(bool exact) const
   std::ostringstream defines;
   defines << "#define FX_EXACT " << (exact ? 1 : 0) << "\n#define FX_BILINEAR "
           << (this->Bilinear ? 1 : 0) << "\n#define FX_NODES " << nodes << "\n#define FX_SLICES "
-          << (this->Representation == RegularSlices && !exact ? 2 * nodes : 0) << "\n";
+          << (this->Representation == RegularSlices && !exact ? 2 * nodes : 0)
+          << "\n#define FX_VIEWS " << std::max(1, this->GetNumberOfViews())
+          << "\n#define FX_LIGHTS " << std::max(1, this->GetNumberOfCastingLights()) << "\n";
   return defines.str();
 }
 
@@ -850,43 +939,89 @@ std::string vtkFXAVSMPass::CurveCode() const
   return code;
 }
 
-void vtkFXAVSMPass::SetLightDepthUniforms(vtkShaderProgram* program)
+void vtkFXAVSMPass::SetCaptureViewUniforms(vtkShaderProgram* program)
 {
-  if (program->IsUniformUsed("fxAVSMPerspective"))
+  if (program->IsUniformUsed("fxAVSMPerspective") && this->CaptureView < this->GetNumberOfViews())
   {
-    program->SetUniformi("fxAVSMPerspective", this->LightPerspective ? 1 : 0);
-    const float nearFar[2] = { static_cast<float>(this->LightNearFar[0]),
-      static_cast<float>(this->LightNearFar[1]) };
+    const LightView& view = this->Views[this->CaptureView];
+    program->SetUniformi("fxAVSMPerspective", view.Perspective ? 1 : 0);
+    const float nearFar[2] = { static_cast<float>(view.NearFar[0]),
+      static_cast<float>(view.NearFar[1]) };
     program->SetUniform2f("fxAVSMNearFar", nearFar);
   }
 }
 
-double vtkFXAVSMPass::LightDepthFromNDC(double ndcZ) const
+double vtkFXAVSMPass::LightDepthFromNDC(const LightView& view, double ndcZ)
 {
-  if (!this->LightPerspective)
+  if (!view.Perspective)
   {
     return 0.5 * ndcZ + 0.5;
   }
-  const double n = this->LightNearFar[0], f = this->LightNearFar[1];
+  const double n = view.NearFar[0], f = view.NearFar[1];
   const double distance = 2.0 * n * f / (f + n - ndcZ * (f - n));
   return (distance - n) / (f - n);
 }
 
+void vtkFXAVSMPass::SetViewUniforms(vtkShaderProgram* program)
+{
+  // The views' and lights' arrays of vtkFXAVSMCurves.glsl (and the slice
+  // ranges of the resolve); unused names are skipped by VTK.
+  const int views = this->GetNumberOfViews();
+  std::vector<float> toLight(16 * views), nearFar(2 * views), ranges(2 * views),
+    origins(2 * views);
+  std::vector<int> perspective(views);
+  for (int v = 0; v < views; ++v)
+  {
+    const LightView& view = this->Views[v];
+    // Column-major for glUniformMatrix4fv.
+    for (int row = 0; row < 4; ++row)
+    {
+      for (int column = 0; column < 4; ++column)
+      {
+        toLight[16 * v + 4 * column + row] = static_cast<float>(view.ViewToLight->GetElement(row, column));
+      }
+    }
+    for (int i = 0; i < 2; ++i)
+    {
+      nearFar[2 * v + i] = static_cast<float>(view.NearFar[i]);
+      ranges[2 * v + i] = view.SliceRange[i];
+      origins[2 * v + i] = static_cast<float>(view.Origin[i]);
+    }
+    perspective[v] = view.Perspective ? 1 : 0;
+  }
+  program->SetUniformi("fxViewSize", this->ShadowMapSize);
+  program->SetUniform2fv("fxViewSliceRange", views, ranges.data());
+  if (!program->IsUniformUsed("fxViewToLight"))
+  {
+    return; // the resolve
+  }
+  program->SetUniformMatrix4x4v("fxViewToLight", views, toLight.data());
+  program->SetUniform2fv("fxViewNearFar", views, nearFar.data());
+  program->SetUniform1iv("fxViewPerspective", views, perspective.data());
+  program->SetUniform2fv("fxViewOrigin", views, origins.data());
+  const int lights = this->GetNumberOfCastingLights();
+  std::vector<int> first(lights), count(lights);
+  std::vector<float> attenuation(lights);
+  for (int k = 0; k < lights; ++k)
+  {
+    first[k] = this->CastingLights[k].FirstView;
+    count[k] = this->CastingLights[k].NumberOfViews;
+    attenuation[k] = this->CastingLights[k].Attenuation;
+  }
+  program->SetUniform1iv("fxLightFirstView", lights, first.data());
+  program->SetUniform1iv("fxLightViewCount", lights, count.data());
+  program->SetUniform1fv("fxLightAttenuation", lights, attenuation.data());
+}
+
 void vtkFXAVSMPass::SetCurveUniforms(vtkShaderProgram* program)
 {
-  this->SetLightDepthUniforms(program);
-  program->SetUniformMatrix("fxViewToLight", this->ViewToLight);
+  this->SetViewUniforms(program);
   program->SetUniformf("fxBias", static_cast<float>(this->Bias));
   if (this->Exact)
   {
     this->BindBuffers(program);
     program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->StoredFragments));
     return;
-  }
-  program->SetUniformi("fxAVSMSize", this->ShadowMapSize);
-  if (this->Representation == RegularSlices)
-  {
-    program->SetUniform2f("fxSliceRange", this->SliceRange);
   }
   for (size_t k = 0; k < this->Curves.size(); ++k)
   {
@@ -908,7 +1043,8 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
 {
   vtkTextureObject* depth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
   vtkFXRenderUtilities::EnsureTexture(this->Visibility, window, static_cast<int>(depth->GetWidth()),
-    static_cast<int>(depth->GetHeight()), vtkFXRenderUtilities::R32F);
+    static_cast<int>(depth->GetHeight()),
+    this->VisibilityChannels() == 1 ? vtkFXRenderUtilities::R32F : vtkFXRenderUtilities::RGBA32F);
   std::string fs = vtkFXAVSMLookupFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
     (this->Exact ? StorageExtension : std::string("//VTK::System::Dec\n")) +
@@ -918,15 +1054,17 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
   vtkShaderProgram::Substitute(fs, "//VTK::FXViewPosition::Dec", vtkFXViewPosition, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMCurves::Dec", this->CurveCode(), false);
 
-  // View (the viewer's) -> world -> light view -> light clip; transposed:
-  // vtkShaderProgram hands row-major elements to GLSL, which reads columns.
+  // For each light view: the viewer's view -> world -> light view -> light
+  // clip (kept for the translucent step).
   vtkNew<vtkMatrix4x4> worldFromView;
   worldFromView->DeepCopy(ren->GetActiveCamera()->GetViewTransformMatrix());
   worldFromView->Invert();
-  vtkNew<vtkMatrix4x4> viewToLightView;
-  vtkMatrix4x4::Multiply4x4(this->LightCamera->GetViewTransformMatrix(), worldFromView, viewToLightView);
-  vtkMatrix4x4::Multiply4x4(this->LightProjection, viewToLightView, this->ViewToLight);
-  this->ViewToLight->Transpose();
+  for (LightView& view : this->Views)
+  {
+    vtkNew<vtkMatrix4x4> viewToLightView;
+    vtkMatrix4x4::Multiply4x4(view.Camera->GetViewTransformMatrix(), worldFromView, viewToLightView);
+    vtkMatrix4x4::Multiply4x4(view.Projection, viewToLightView, view.ViewToLight);
+  }
 
   vtkFXRenderUtilities::RenderTargetScope target(window, this->LookUpFrameBuffer, this->Visibility);
   vtkShaderProgram* program =
@@ -949,7 +1087,8 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
   this->NumberOfRenderedProps = 0;
   vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (!this->GBuffer || !this->GBuffer->GetChannelTexture(GB::LinearDepth) || !this->CastingLight)
+  if (!this->GBuffer || !this->GBuffer->GetChannelTexture(GB::LinearDepth) ||
+    this->CastingLights.empty())
   {
     vtkErrorMacro("vtkFXAVSMPass needs a G-buffer with linear depth and a casting light.");
     return;
@@ -966,10 +1105,25 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
     return;
   }
   this->GatherCasters(ren);
-  this->FitLightCamera(ren);
+  this->FitLightViews(ren);
   // Kept for the frame: the casters are forgotten after Render, and VTK's
   // translucent step (translucent receivers) comes later.
-  this->ComputeCasterDepthRange(this->SliceRange);
+  for (LightView& view : this->Views)
+  {
+    this->ComputeCasterDepthRange(view);
+  }
+  const int largest = vtkTextureObject::GetMaximumTextureSize(window);
+  if (this->AtlasSize[0] > largest || this->AtlasSize[1] > largest)
+  {
+    vtkErrorMacro("AVSM: " << this->GetNumberOfViews() << " light views of " << this->ShadowMapSize
+                           << " texels need an atlas of " << this->AtlasSize[0] << " x "
+                           << this->AtlasSize[1] << ", above this OpenGL's " << largest
+                           << "; no shadows this frame (lower ShadowMapSize or "
+                              "MaximumNumberOfLights).");
+    vtkFXRenderUtilities::Release(this->Visibility, window);
+    this->Views.clear();
+    return;
+  }
   this->EnsureBuffers();
   this->StoredFragments = this->Capacity;
   // With Profile on, each phase is finished before the clock reads it.
@@ -1009,9 +1163,13 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
   phase(1);
   this->LookUp(ren, window);
   phase(2);
-  // The casters and the light are the frame's (HasWork sets them again).
+  // The casters and lights are the frame's (HasWork sets them again); the
+  // lights' indices and views stay for the translucent step.
   this->Casters.clear();
-  this->CastingLight = nullptr;
+  for (CastingLight& casting : this->CastingLights)
+  {
+    casting.Light = nullptr;
+  }
   for (GLuint i = 0; i < NumberOfBuffers; ++i)
   {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
@@ -1058,6 +1216,7 @@ void vtkFXAVSMPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TranslucentReceivers: " << this->TranslucentReceivers << "\n";
   os << indent << "Bias: " << this->Bias << "\n";
   os << indent << "SplatRadius: " << this->SplatRadius << "\n";
+  os << indent << "MaximumNumberOfLights: " << this->MaximumNumberOfLights << "\n";
   os << indent << "InitialNodesPerTexel: " << this->InitialNodesPerTexel << "\n";
   os << indent << "CapturedFragments: " << this->CapturedFragments << " (capacity "
      << this->Capacity << ")\n";

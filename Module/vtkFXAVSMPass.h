@@ -3,12 +3,19 @@
  * @brief   Shadows cast by translucent props onto opaque ones: adaptive volumetric shadow maps.
  *
  * After Salvi, Vidimce, Lauritzen, Lefohn, "Adaptive Volumetric Shadow
- * Maps" (EGSR 2010; seed 003). For the first light that can cast (switched
- * on, not a headlight, directional or a spot light with a cone below 89
- * degrees), the translucent props are rendered from the light through an
- * orthographic view fitted to the visible props' bounds, or for a spot
- * light the perspective view of its cone, from just in front of it to the
- * far side of the props (ShadowMapSize texels square). Every fragment, instead of being
+ * Maps" (EGSR 2010; seed 003). Lights cast when they are on, are not
+ * headlights and have a ShadowAttenuation above 0 (VTK's vtkLight
+ * setting: the shadow darkens the light by that fraction of its
+ * opacity); the MaximumNumberOfLights brightest cast (intensity times the
+ * colour's largest component). Each casting light gets views of
+ * ShadowMapSize texels square, side by side in one atlas:
+ * - a directional light, one orthographic view along it, fitted to the
+ *   visible props' bounding sphere;
+ * - a spot light (a cone below 89 degrees), the perspective view of its
+ *   cone, from just in front of it to the far side of the props;
+ * - any other positional light, six perspective views of 90 degrees, the
+ *   faces of a cube around it.
+ * The translucent props are rendered from every view. Every fragment, instead of being
  * drawn, joins its texel's linked list (shader storage buffers and an
  * atomic counter: OpenGL 4.3) as a segment along the light: a light-space
  * entry and exit depth and an optical depth, so that products of
@@ -24,13 +31,15 @@
  * - Exact: the lists themselves are the deep shadow map; the look-up sums
  *   the optical depth of every segment in front of the receiver (the
  *   reference the AVSM is measured against).
- * Fragments are sorted (by depth, then optical depth) before insertion, so
- * the result does not depend on the order they arrived in.
+ * Segments are inserted in order (of entry depth, then optical depth, then
+ * exit depth), so the result does not depend on the order they arrived in.
  *
  * The look-up runs per G-buffer pixel (Bilinear: four texels blended, or
- * the nearest) and writes the light's transmittance at the receiver, the
- * output "visibility" (R32F, full resolution); in the composite it scales
- * that light's contribution (LightVisibility hook).
+ * the nearest, in the view that sees the receiver) and writes each casting
+ * light's visibility at the receiver, the output "visibility" (full
+ * resolution; R32F for one casting light, RGBA32F with a channel per light
+ * for more); in the composite it scales that light's contribution
+ * (LightVisibility hook).
  *
  * Work: some prop is translucent, some is opaque (a receiver) and a light
  * can cast (HasWork finds them, each frame: vtkFXPipelinePass calls it);
@@ -41,22 +50,20 @@
  *
  * Receivers: opaque props (the look-up above) and translucent props (in a
  * scene that has some opaque prop: the pass runs after the G-buffer), whose
- * VTK shaders scale the casting light's terms by the transmittance at each
+ * VTK shaders scale each casting light's terms by its visibility at each
  * fragment during the pipeline's translucent step. A translucent surface
  * does not shadow itself: casters within Bias of a fragment do not
  * count. VTK draws splats unlit; their diffuse colour is taken as the
- * casting light's and scaled by the transmittance at the splat's centre
- * plane, so a particle cloud shadows itself (a splat by the half of its
- * own sphere in front of that plane too).
+ * brightest casting light's and scaled by its visibility at the splat's
+ * centre (looked up once per splat), so a particle cloud shadows itself (a
+ * splat by the half of its own sphere in front of its centre too).
  *
- * Limitations of this first version: one casting light, directional or
- * spot (a positional light without a cone would need six maps).
- *
- * Cost: the translucent props drawn once more at ShadowMapSize^2, 16 bytes
- * per captured fragment plus 8 per texel (list head and count); the resolve,
- * one pass over the map (NumberOfNodes x 8 bytes per texel kept); the
- * look-up, one full-resolution pass of 1 (4 bilinear) curve reads, or a
- * walk of the lists (Exact).
+ * Cost, per view: the translucent props drawn once more at
+ * ShadowMapSize^2, 16 bytes per captured fragment plus 8 per texel (list
+ * head and count); the resolve, one pass over the atlas (NumberOfNodes x 8
+ * bytes per texel kept); the look-up, one full-resolution pass of 1 (4
+ * bilinear) curve reads per casting light, or a walk of the lists (Exact).
+ * A positional light without a cone costs six views.
  */
 #ifndef vtkFXAVSMPass_h
 #define vtkFXAVSMPass_h
@@ -89,7 +96,7 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * Shadow map texels per side (16..4096, default 512).
+   * Texels per side of each light view (16..4096, default 512).
    */
   vtkSetClampMacro(ShadowMapSize, int, 16, 4096);
   vtkGetMacro(ShadowMapSize, int);
@@ -150,6 +157,13 @@ public:
   vtkGetMacro(Bias, double);
 
   /**
+   * Lights that cast at most (1..4, default 1: the brightest; each costs
+   * one view, six for a positional light without a cone).
+   */
+  vtkSetClampMacro(MaximumNumberOfLights, int, 1, 4);
+  vtkGetMacro(MaximumNumberOfLights, int);
+
+  /**
    * Radius of the uniform-density sphere a point-gaussian splat
    * (vtkPointGaussianMapper) casts as, in the splat's scale units (0.1..3,
    * default sqrt(3) = 1.732: for low opacity, the optical depth integrated
@@ -171,12 +185,16 @@ public:
   ///@{
   /**
    * Of the last frame: fragments captured (counted, stored or not), the
-   * buffer's capacity in fragments, and the index of the casting light
-   * among the lights that are on (-1: none).
+   * buffer's capacity in fragments, the casting lights, the index of the
+   * k-th (brightest first) among the lights that are on (-1: none), and
+   * the views of all of them.
    */
   vtkGetMacro(CapturedFragments, vtkIdType);
   vtkGetMacro(Capacity, vtkIdType);
-  vtkGetMacro(LightIndex, int);
+  int GetNumberOfCastingLights() const { return static_cast<int>(this->CastingLights.size()); }
+  int GetCastingLightIndex(int k) const;
+  int GetLightIndex() const { return this->GetCastingLightIndex(0); }
+  int GetNumberOfViews() const { return static_cast<int>(this->Views.size()); }
   ///@}
 
   /**
@@ -208,7 +226,8 @@ public:
   ///@{
   /**
    * The curves of the last frame (for tests and debugging), n = the nodes
-   * used. AdaptiveNodes: textures 0 .. n/4 - 1 hold the nodes' depths
+   * used; the views lie side by side in them (the atlas, see
+   * GetViewOrigin). AdaptiveNodes: textures 0 .. n/4 - 1 hold the nodes' depths
    * (RGBA32F, four nodes each, light depth 0..1 (vtkFXAVSMLightDepth.glsl), 3e38 for unused
    * nodes), n/4 .. n/2 - 1 their optical depths. RegularSlices: the n/2
    * textures hold the 2n slices' accumulated optical depths, nearest first.
@@ -234,8 +253,10 @@ public:
     int x, int y, std::vector<double>& depths, std::vector<double>& opticalDepths);
   /** The texel with the longest list of the last frame (false: none). */
   VTK_WRAPEXCLUDE bool GetLongestListTexel(int& x, int& y);
-  /** The casters' light depth range (0..1), as the slices use it. */
-  VTK_WRAPEXCLUDE void GetCasterDepthRange(double range[2]) const;
+  /** The casters' light depth range (0..1) in a view, as the slices use it. */
+  VTK_WRAPEXCLUDE void GetCasterDepthRange(double range[2], int view = 0) const;
+  /** The atlas texel of a view's lower left corner (false: no such view). */
+  VTK_WRAPEXCLUDE bool GetViewOrigin(int view, int origin[2]) const;
   ///@}
 
   bool HasWork(const vtkFXSceneInfo& scene) override;
@@ -271,10 +292,33 @@ protected:
   vtkFXAVSMPass();
   ~vtkFXAVSMPass() override;
 
+  // One view of a casting light: a square of the atlas.
+  struct LightView
+  {
+    vtkSmartPointer<vtkCamera> Camera;
+    vtkSmartPointer<vtkMatrix4x4> Projection;
+    vtkSmartPointer<vtkMatrix4x4> ViewToLight; // this frame's, transposed for GLSL
+    bool Perspective = false;                 // a spot or point light's
+    double NearFar[2] = { 1.0, 3.0 };         // its depth range
+    float SliceRange[2] = { 0.0f, 1.0f };     // this frame's casters' light depths
+    int Origin[2] = { 0, 0 };                 // atlas texel of its corner
+  };
+  // A casting light and its views.
+  struct CastingLight
+  {
+    vtkLight* Light = nullptr;
+    int Index = -1; // among the lights that are on
+    int FirstView = 0;
+    int NumberOfViews = 0;
+    float Attenuation = 1.0f; // vtkLight::ShadowAttenuation
+  };
+
   int Nodes() const; // NumberOfNodes rounded to 4, 8 or 16
   void GatherCasters(vtkRenderer* ren);
-  void FitLightCamera(vtkOpenGLRenderer* ren);
-  void ComputeCasterDepthRange(float range[2]) const; // for SliceRange
+  void FitLightViews(vtkOpenGLRenderer* ren);
+  void AddView(const double position[3], const double direction[3], vtkMatrix4x4* projection,
+    bool perspective, const double nearFar[2]);
+  void ComputeCasterDepthRange(LightView& view) const; // its SliceRange
   bool EnsureBuffers();
   void BindBuffers(vtkShaderProgram* program);
   void Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
@@ -283,8 +327,10 @@ protected:
   std::string CurveDefines(bool exact) const;
   std::string CurveCode() const;
   void SetCurveUniforms(vtkShaderProgram* program);
-  void SetLightDepthUniforms(vtkShaderProgram* program);
-  double LightDepthFromNDC(double ndcZ) const; // see vtkFXAVSMLightDepth.glsl
+  void SetCaptureViewUniforms(vtkShaderProgram* program);
+  void SetViewUniforms(vtkShaderProgram* program);
+  int VisibilityChannels() const { return this->CastingLights.size() > 1 ? 4 : 1; }
+  static double LightDepthFromNDC(const LightView& view, double ndcZ); // vtkFXAVSMLightDepth.glsl
   void ReleaseCurveUnits();
 
   int ShadowMapSize = 512;
@@ -294,12 +340,12 @@ protected:
   bool Bilinear = true;
   double Bias = 1e-3;
   double SplatRadius = 1.7320508075688772;
+  int MaximumNumberOfLights = 1;
   int InitialNodesPerTexel = 4;
 
   vtkIdType CapturedFragments = 0;
   vtkIdType Capacity = 0;
   vtkIdType StoredFragments = 0; // nodes this frame's lists hold
-  int LightIndex = -1;
   bool WarnedOverflow = false;
   bool Profile = false;
   bool TranslucentReceivers = true;
@@ -308,16 +354,15 @@ protected:
   double PhaseMilliseconds[3] = { 0.0, 0.0, 0.0 };
   bool WarnedUnsupported = false;
 
-  // This frame's casters and casting light (from HasWork).
+  // This frame's casters and casting lights (from HasWork), the lights'
+  // views (from Render, kept for the translucent step) and the atlas
+  // holding them (texels).
   std::vector<vtkProp*> Casters;
-  vtkLight* CastingLight = nullptr;
+  std::vector<CastingLight> CastingLights;
+  std::vector<LightView> Views;
+  int AtlasSize[2] = { 0, 0 };
+  int CaptureView = 0; // the view being captured
 
-  vtkSmartPointer<vtkCamera> LightCamera;
-  vtkSmartPointer<vtkMatrix4x4> LightProjection;
-  vtkSmartPointer<vtkMatrix4x4> ViewToLight; // this frame's, transposed for GLSL
-  float SliceRange[2] = { 0.0f, 1.0f };      // this frame's casters' light depths
-  bool LightPerspective = false;             // a spot light's view
-  double LightNearFar[2] = { 1.0, 3.0 };     // the light view's depth range
   vtkSmartPointer<vtkTranslucentPass> CasterPass;
   unsigned int Buffers[4] = { 0, 0, 0, 0 }; // heads, nodes, counter, counts per texel
   vtkIdType LongestList = 0;                // of the last capture

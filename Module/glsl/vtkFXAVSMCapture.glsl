@@ -1,5 +1,6 @@
 // vtkFXAVSMCapture: appended to VTK's fragment shader of a translucent prop
-// rendered from the light, after its colour (textures included) is final.
+// rendered from a light view (whose square of the atlas the viewport
+// selects), after its colour (textures included) is final.
 // The fragment becomes a segment of its texel's list and is not drawn.
 // - A surface of opacity a is a segment of zero thickness with
 //   transmittance 1 - a (seed 003: "1 = completely translucent, 0 = fully
@@ -40,8 +41,8 @@
       uint fxIndex = atomicAdd(fxAVSMNodeCount, 1u);
       if (fxIndex < uint(fxAVSMCapacity))
       {
-        ivec2 fxTexel = clamp(ivec2(gl_FragCoord.xy), ivec2(0), ivec2(fxAVSMSize - 1));
-        int fxSlot = fxTexel.y * fxAVSMSize + fxTexel.x;
+        ivec2 fxTexel = clamp(ivec2(gl_FragCoord.xy), ivec2(0), fxAVSMAtlas - 1);
+        int fxSlot = fxTexel.y * fxAVSMAtlas.x + fxTexel.x;
         uint fxHead = atomicExchange(fxAVSMHeads[fxSlot], fxIndex);
         fxAVSMNodes[fxIndex] = fxAVSMNode(fxEntry, fxTau, fxHead, fxExit);
         atomicMax(fxAVSMLongestList, atomicAdd(fxAVSMCounts[fxSlot], 1u) + 1u);

@@ -1,8 +1,11 @@
-// vtkFXAVSMCurves: the light's transmittance at a view-space position,
-// from vtkFXAVSMPass's curves (or, with FX_EXACT, its lists). Shared by the
-// look-up pass (opaque receivers) and VTK's translucent shaders (translucent
-// receivers). The position goes to the light's clip space (fxViewToLight);
-// its depth there, less a bias, is looked up in the texel's curve:
+// vtkFXAVSMCurves: a casting light's visibility at a view-space
+// position, from vtkFXAVSMPass's curves (or, with FX_EXACT, its lists).
+// Shared by the look-up pass (opaque receivers) and VTK's translucent
+// shaders (translucent receivers). Each of the FX_LIGHTS casting lights
+// has one view (directional, spot) or six (a cube around a point light)
+// among the FX_VIEWS squares of the atlas; the view that sees the position
+// takes it to its clip space (fxViewToLight), and its depth there, less a
+// bias, is looked up in the texel's curve:
 // - FX_SLICES 0: the AVSM curve of the resolve (FX_NODES nodes, optical
 //   depth linear between them; before the first node 0, past the last its
 //   value);
@@ -14,22 +17,30 @@
 //   order or number of fragments.
 // With FX_BILINEAR the four texels around the point are looked up and
 // their transmittances blended bilinearly (percentage-closer filtering of
-// the curves, as the AVSM demo's AVSMBilinearSample). Outside the map the
-// light is unshadowed.
+// the curves, as the AVSM demo's AVSMBilinearSample). Outside a single
+// view's map the light is unshadowed; a cube face's taps stay on the face.
+// The shadow darkens the light by its ShadowAttenuation (VTK's).
 //VTK::FXAVSMLightDepth::Dec
-uniform mat4 fxViewToLight;
-uniform float fxBias;      // light depth (0..1, vtkFXAVSMLightDepth)
-uniform vec2 fxSliceRange; // FX_SLICES
+uniform mat4 fxViewToLight[FX_VIEWS];
+uniform vec2 fxViewNearFar[FX_VIEWS];
+uniform int fxViewPerspective[FX_VIEWS];
+uniform vec2 fxViewSliceRange[FX_VIEWS]; // FX_SLICES
+uniform vec2 fxViewOrigin[FX_VIEWS];     // its corner's atlas texel
+uniform int fxViewSize;                  // texels per side of a view
+uniform int fxLightFirstView[FX_LIGHTS];
+uniform int fxLightViewCount[FX_LIGHTS];
+uniform float fxLightAttenuation[FX_LIGHTS];
+uniform float fxBias; // light depth (0..1, vtkFXAVSMLightDepth)
 #if !FX_EXACT
 //VTK::FXAVSMLookup::Samplers
-uniform int fxAVSMSize;
 #endif
 
-float fxOpticalDepth(ivec2 texel, float depth)
+// At atlas texel `texel`, of a view whose casters span `sliceRange`.
+float fxOpticalDepth(ivec2 texel, float depth, vec2 sliceRange)
 {
 #if FX_EXACT
   float sum = 0.0;
-  uint node = fxAVSMHeads[texel.y * fxAVSMSize + texel.x];
+  uint node = fxAVSMHeads[texel.y * fxAVSMAtlas.x + texel.x];
   for (int step = 0; step < fxAVSMWalk; ++step)
   {
     if (node != fxAVSMEnd && node < uint(fxAVSMCapacity))
@@ -45,7 +56,7 @@ float fxOpticalDepth(ivec2 texel, float depth)
   // side, linear in between (0 at the near side of the first).
   float c[FX_SLICES];
   //VTK::FXAVSMLookup::SliceFetch
-  float x = (depth - fxSliceRange.x) / max(fxSliceRange.y - fxSliceRange.x, 1e-30) * float(FX_SLICES);
+  float x = (depth - sliceRange.x) / max(sliceRange.y - sliceRange.x, 1e-30) * float(FX_SLICES);
   if (!(x > 0.0))
   {
     return 0.0;
@@ -80,31 +91,66 @@ float fxOpticalDepth(ivec2 texel, float depth)
 #endif
 }
 
-float fxTransmittance(ivec2 texel, float depth)
+// At texel `local` of view `view` (outside it: unshadowed, or with
+// `onView`, the nearest texel on it).
+float fxTransmittance(int view, ivec2 local, float depth, bool onView)
 {
-  if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, ivec2(fxAVSMSize))))
+  if (onView)
+  {
+    local = clamp(local, ivec2(0), ivec2(fxViewSize - 1));
+  }
+  else if (any(lessThan(local, ivec2(0))) || any(greaterThanEqual(local, ivec2(fxViewSize))))
   {
     return 1.0;
   }
-  return exp(-fxOpticalDepth(texel, depth));
+  return exp(-fxOpticalDepth(local + ivec2(fxViewOrigin[view]), depth, fxViewSliceRange[view]));
 }
 
-// Transmittance of the light's path to view-space position `positionVC`.
-float fxLightTransmittance(vec3 positionVC)
+// Transmittance of the light's path to view-space position `positionVC`
+// in one of its views.
+float fxViewTransmittance(int view, vec3 positionVC, bool onView)
 {
-  vec4 light = fxViewToLight * vec4(positionVC, 1.0);
-  vec2 uv = (0.5 * light.xy / light.w + 0.5) * float(fxAVSMSize);
-  float depth = fxLightDepthFromClip(light) - fxBias;
-  float visibility;
+  vec4 light = fxViewToLight[view] * vec4(positionVC, 1.0);
+  vec2 uv = (0.5 * light.xy / light.w + 0.5) * float(fxViewSize);
+  float depth =
+    fxLightDepthFromClip(light, fxViewPerspective[view], fxViewNearFar[view]) - fxBias;
 #if FX_BILINEAR
   vec2 corner = uv - 0.5;
   ivec2 base = ivec2(floor(corner));
   vec2 f = corner - vec2(base);
-  visibility = mix(mix(fxTransmittance(base, depth), fxTransmittance(base + ivec2(1, 0), depth), f.x),
-    mix(fxTransmittance(base + ivec2(0, 1), depth), fxTransmittance(base + ivec2(1, 1), depth), f.x),
+  return mix(mix(fxTransmittance(view, base, depth, onView),
+               fxTransmittance(view, base + ivec2(1, 0), depth, onView), f.x),
+    mix(fxTransmittance(view, base + ivec2(0, 1), depth, onView),
+      fxTransmittance(view, base + ivec2(1, 1), depth, onView), f.x),
     f.y);
 #else
-  visibility = fxTransmittance(ivec2(floor(uv)), depth);
+  return fxTransmittance(view, ivec2(floor(uv)), depth, onView);
 #endif
-  return clamp(visibility, 0.0, 1.0);
+}
+
+// Casting light `light`'s visibility at view-space position `positionVC`:
+// the transmittance in the view that sees the position (of a cube's six,
+// the first whose frustum holds it; a single view, any position in front
+// of it), darkened by the light's ShadowAttenuation.
+float fxLightTransmittance(int light, vec3 positionVC)
+{
+  int first = fxLightFirstView[light];
+  int count = fxLightViewCount[light];
+  float transmittance = 1.0;
+  bool found = false;
+  for (int k = 0; k < 6; ++k)
+  {
+    int view = min(first + k, FX_VIEWS - 1);
+    if (k < count && !found)
+    {
+      vec4 clip = fxViewToLight[view] * vec4(positionVC, 1.0);
+      bool sees = clip.w > 0.0 && (count == 1 || all(lessThanEqual(abs(clip.xy), vec2(clip.w))));
+      if (sees)
+      {
+        transmittance = fxViewTransmittance(view, positionVC, count > 1);
+        found = true;
+      }
+    }
+  }
+  return 1.0 - fxLightAttenuation[light] * (1.0 - clamp(transmittance, 0.0, 1.0));
 }

@@ -46,7 +46,7 @@ layout(std430) buffer FXAVSMCounts
 {
   uint fxAVSMCounts[]; // nodes stored per texel
 };
-uniform int fxAVSMSize;     // shadow map texels per side
+uniform ivec2 fxAVSMAtlas;  // texels of the atlas of light views (lists are per texel)
 uniform int fxAVSMCapacity; // nodes the buffer holds
 // Steps of the list walks drawn over meshes (the exact look-up of
 // translucent receivers): the longest list of the frame, the same for all

@@ -1,8 +1,9 @@
 //VTK::System::Dec
-// vtkFXAVSMLookupFS: for every G-buffer pixel, the transmittance of the
-// light's path through the translucent casters, from the receiver back to
+// vtkFXAVSMLookupFS: for every G-buffer pixel, each casting light's
+// visibility through the translucent casters, from the receiver back to
 // the light (vtkFXAVSMCurves.glsl), at the receiver's view-space position
-// (linear depth and the frustum ray). The background is unshadowed.
+// (linear depth and the frustum ray): channel k for the k-th casting light
+// (the target may keep only the first). The background is unshadowed.
 
 in vec2 texCoord;
 
@@ -33,6 +34,11 @@ void main()
     return;
   }
   vec2 ndc = 2.0 * (vec2(pixel) + 0.5) / vec2(size) - 1.0;
-  float visibility = fxLightTransmittance(fxViewPosition(ndc, linearDepth));
-  gl_FragData[0] = vec4(visibility, 0.0, 0.0, 1.0);
+  vec3 position = fxViewPosition(ndc, linearDepth);
+  vec4 visibility = vec4(1.0);
+  for (int k = 0; k < FX_LIGHTS; ++k)
+  {
+    visibility[k] = fxLightTransmittance(k, position);
+  }
+  gl_FragData[0] = visibility;
 }

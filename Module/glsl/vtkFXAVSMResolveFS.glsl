@@ -22,7 +22,10 @@
 //VTK::FXAVSMLists::Dec
 
 in vec2 texCoord;
-uniform vec2 fxSliceRange; // FX_SLICES: the casters' light depths, near and far
+// FX_SLICES: each view's casters' light depths, near and far; the views
+// are squares of fxViewSize texels, FX_ATLAS_COLUMNS to a row.
+uniform vec2 fxViewSliceRange[FX_VIEWS];
+uniform int fxViewSize;
 
 //VTK::Output::Dec
 
@@ -173,7 +176,7 @@ void main()
     discard; // never: keeps texCoord in the program
   }
   ivec2 texel = ivec2(gl_FragCoord.xy);
-  uint node = fxAVSMHeads[texel.y * fxAVSMSize + texel.x];
+  uint node = fxAVSMHeads[texel.y * fxAVSMAtlas.x + texel.x];
   if (node == fxAVSMEnd)
   {
     // Nothing here (most of a map): an empty curve, at once.
@@ -187,11 +190,11 @@ void main()
   // loops' together (59 rounds of 1000 steps lost the tail walk after
   // them): at most 15000 segments are walked, and the rounds below and the
   // tail walk stay within 30000 steps.
-  int count = min(int(fxAVSMCounts[texel.y * fxAVSMSize + texel.x]), 15000);
+  int count = min(int(fxAVSMCounts[texel.y * fxAVSMAtlas.x + texel.x]), 15000);
 #if FX_SLICES
   // An opacity shadow map instead (Kim and Neumann, "Opacity Shadow Maps",
   // EGWR 2001), for comparison at equal memory: FX_SLICES regular slices
-  // of the casters' light depth range fxSliceRange, each holding the
+  // of the casters' light depth range in the texel's view, each holding the
   // optical depth accumulated up to its far side; a segment puts into each
   // slice the share of it the slice holds (the first and last slices reach
   // out to whatever lies before and after the range). Order independent:
@@ -201,7 +204,8 @@ void main()
   {
     bins[k] = 0.0;
   }
-  float sliceWidth = max(fxSliceRange.y - fxSliceRange.x, 1e-30) / float(FX_SLICES);
+  vec2 range = fxViewSliceRange[(texel.y / fxViewSize) * FX_ATLAS_COLUMNS + texel.x / fxViewSize];
+  float sliceWidth = max(range.y - range.x, 1e-30) / float(FX_SLICES);
   for (int step = 0; step < count; ++step)
   {
     if (node == fxAVSMEnd || node >= uint(fxAVSMCapacity))
@@ -212,8 +216,8 @@ void main()
     node = segment.next;
     for (int k = 0; k < FX_SLICES; ++k)
     {
-      float near = k == 0 ? -3e38 : fxSliceRange.x + float(k) * sliceWidth;
-      float far = k == FX_SLICES - 1 ? 3e38 : fxSliceRange.x + float(k + 1) * sliceWidth;
+      float near = k == 0 ? -3e38 : range.x + float(k) * sliceWidth;
+      float far = k == FX_SLICES - 1 ? 3e38 : range.x + float(k + 1) * sliceWidth;
       float share = fxSegmentShare(segment.depth, segment.exitDepth, segment.opticalDepth, far) -
         fxSegmentShare(segment.depth, segment.exitDepth, segment.opticalDepth, near);
       bins[k] = min(bins[k] + share, 1e4);

@@ -16,6 +16,12 @@
 // - the same under a perspective camera;
 // - a spot light (perspective map) gives the same shadow, and from
 //   between two slabs only the slab below it casts;
+// - a point light (no cone: six views, the faces of a cube) over the slab,
+//   and between two slabs: the same shadow, from every face that sees the
+//   ground;
+// - two casting lights, the second tilted and with ShadowAttenuation 0.5:
+//   each light's visibility in its channel (0.7, and 1 - 0.5 x 0.3), and
+//   the composite darkens each light by its own;
 // - a translucent receiver under a translucent caster: its lit colour
 //   loses the caster's share (from 8-bit images, within 0.04);
 // - point-gaussian splats are uniform-density spheres: under one, the
@@ -120,7 +126,8 @@ vtkRenderer* GroundScene(vtkRenderWindow* window, bool parallel, vtkActor** grou
 // The ground, the light and `casters` in a pipeline with `avsm`; renders
 // `frames` frames and returns the visibility per pixel (rows bottom-up).
 // With spotHeight > 0 the light is a spot light that high over the origin,
-// pointing at (spotAimX, 0, 0), with a cone of spotCone degrees.
+// pointing at (spotAimX, 0, 0), with a cone of spotCone degrees (90 or
+// more: a positional light shining every way, six views).
 std::vector<float> Visibility(vtkRenderWindow* window, vtkFXAVSMPass* avsm,
   const std::vector<vtkSmartPointer<vtkActor>>& casters, bool parallel, int frames = 1,
   double spotHeight = 0.0, double spotCone = 60.0, double spotAimX = 0.0)
@@ -293,6 +300,91 @@ int CheckSplatsShadowEachOther(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
+}
+
+// Two directional lights over the ground and a slab of opacity 0.3 at
+// z = 1 over x < 0: A straight down (intensity 0.5), B from 45 degrees
+// towards -x (intensity 0.4, ShadowAttenuation 0.5), both casting. The
+// visibility's channel 0 is A's (the brighter): 0.7 under the slab;
+// channel 1 B's: its shadow is the slab moved 1 unit towards -x, so the
+// left third (x < -1.8) gets 1 - 0.5 x 0.3 = 0.85 and the right third 1.
+// In the lit image the slab (0.3 of its own colour, which it does not
+// shadow) lies over 0.7 of the ground, so against the image without
+// shadows the left third changes by 0.7 (A (0.7 - 1) + B (0.85 - 1)),
+// where A and B are the ground's light from each (the right third of the
+// images without shadows, both lights and B alone), within 8-bit rounding:
+// the two compared pixels 1 level, the ground under the slab rounded before
+// the slab blends over it 0.7 x 0.5, the change from rounded pixels
+// 0.7 x (0.3 x 1 + 0.15 x 0.5): 1.6, so 2 levels.
+int CheckTwoLights(vtkRenderWindow* window)
+{
+  const auto render = [window](bool shadows, bool withA, vtkFXAVSMPass* avsm) {
+    vtkRenderer* renderer = GroundScene(window, true);
+    renderer->RemoveAllLights();
+    vtkNew<vtkLight> a, b;
+    for (vtkLight* light : { a.GetPointer(), b.GetPointer() })
+    {
+      light->SetLightTypeToSceneLight();
+      light->PositionalOff();
+      light->SetFocalPoint(0.0, 0.0, 0.0);
+    }
+    a->SetPosition(0.0, 0.0, 1.0);
+    a->SetIntensity(0.5);
+    a->SetSwitch(withA);
+    b->SetPosition(1.0, 0.0, 1.0);
+    b->SetIntensity(0.4);
+    b->SetShadowAttenuation(0.5f);
+    renderer->AddLight(a);
+    renderer->AddLight(b);
+    renderer->AddActor(Quad(-10.0, 0.0, 1.0, 0.3));
+    vtkNew<vtkFXPipelinePass> pipeline;
+    if (shadows)
+    {
+      pipeline->AddEffect("avsm", avsm);
+    }
+    renderer->SetPass(pipeline);
+    window->Render();
+    return vtkFXScenes::Capture(window);
+  };
+  vtkNew<vtkFXAVSMPass> avsm;
+  avsm->SetMaximumNumberOfLights(2);
+  const auto shadowed = render(true, true, avsm);
+  FX_CHECK(avsm->GetNumberOfCastingLights() == 2 && avsm->GetCastingLightIndex(0) == 0 &&
+      avsm->GetCastingLightIndex(1) == 1,
+    "two casting lights expected, brightest first");
+  const auto v = vtkFXTest::Download(avsm->GetOutputTexture("visibility"), 4);
+  std::vector<float> channel[2];
+  for (size_t i = 0; i + 3 < v.size(); i += 4)
+  {
+    channel[0].push_back(v[i]);
+    channel[1].push_back(v[i + 1]);
+  }
+  FX_CHECK(CheckHalves("two lights, the brighter's channel", channel[0], 0.7, 1e-3) == EXIT_SUCCESS, "");
+  FX_CHECK(CheckHalves("two lights, the tilted one's channel (attenuation 0.5)", channel[1], 0.85,
+             1e-3) == EXIT_SUCCESS, "");
+  const auto both = render(false, true, nullptr);
+  const auto onlyB = render(false, false, nullptr);
+  const auto green = [](const std::vector<unsigned char>& image, int x, int y) {
+    return double(image[3 * (static_cast<size_t>(y) * Width + x) + 1]);
+  };
+  const double lightB = green(onlyB, Width - 20, Height / 2);
+  const double lightA = green(both, Width - 20, Height / 2) - lightB;
+  const double change = 0.7 * (lightA * (0.7 - 1.0) + lightB * (0.85 - 1.0));
+  double worst = 0.0;
+  for (int y = 10; y < Height - 10; ++y)
+  {
+    for (int x = 5; x < Width / 3; ++x)
+    {
+      worst = std::max(worst, std::fabs(green(shadowed, x, y) - green(both, x, y) - change));
+    }
+  }
+  std::cout << "two lights, composite: ground lit " << lightA << " by A, " << lightB
+            << " by B; under the slab " << green(both, 20, Height / 2) << " without shadows, "
+            << green(shadowed, 20, Height / 2) << " with (" << change
+            << " expected); largest error " << worst << " levels" << std::endl;
+  FX_CHECK(lightA > 100 && lightB > 50 && worst <= 2.0,
+    "the composite does not darken each light by its own visibility");
+  return EXIT_SUCCESS;
 }
 
 // Translucent receivers: a nearly opaque white slab (opacity 0.99) at
@@ -555,6 +647,20 @@ int TestAVSM(int, char*[])
     FX_CHECK(!exactColumn.empty() && darkest < 0.3 && worst < 1e-5,
       "overlapping splats: AVSM-16 differs from exact by " << worst);
   }
+
+  // A point light: six views; over the slab, and between two slabs.
+  {
+    auto omni = MakeAVSM(8, false, true);
+    FX_CHECK(CheckHalves("point light, one slab",
+               Visibility(window, omni, { Quad(-10, 0, 1, 0.3) }, true, 1, 6.0, 180.0), 0.7,
+               1e-3) == EXIT_SUCCESS, "");
+    FX_CHECK(omni->GetNumberOfViews() == 6, "a point light has " << omni->GetNumberOfViews() << " views");
+    FX_CHECK(CheckHalves("point light between two slabs",
+               Visibility(window, MakeAVSM(8, true, true),
+                 { Quad(-10, 0, 1, 0.3), Quad(-10, 0, 2, 0.5) }, true, 1, 1.5, 180.0),
+               0.7, 1e-3) == EXIT_SUCCESS, "");
+  }
+  FX_CHECK(CheckTwoLights(window) == EXIT_SUCCESS, "two casting lights");
 
   // Nothing translucent: the pass is left out and allocates nothing.
   {
