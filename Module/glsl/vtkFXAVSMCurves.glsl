@@ -131,26 +131,32 @@ float fxViewTransmittance(int view, vec3 positionVC, bool onView)
 // Casting light `light`'s visibility at view-space position `positionVC`:
 // the transmittance in the view that sees the position (of a cube's six,
 // the first whose frustum holds it; a single view, any position in front
-// of it), darkened by the light's ShadowAttenuation.
+// of it), darkened by the light's ShadowAttenuation. The face is chosen
+// first and the curves are read once, outside any loop; with one view in
+// all, every index is a constant (llvmpipe is several times slower with
+// the look-up inside a loop over dynamically indexed views).
 float fxLightTransmittance(int light, vec3 positionVC)
 {
-  int first = fxLightFirstView[light];
-  int count = fxLightViewCount[light];
-  float transmittance = 1.0;
-  bool found = false;
-  for (int k = 0; k < 6; ++k)
+  int view = FX_VIEWS == 1 ? 0 : fxLightFirstView[light];
+  int count = FX_VIEWS == 1 ? 1 : fxLightViewCount[light];
+  if (count > 1)
   {
-    int view = min(first + k, FX_VIEWS - 1);
-    if (k < count && !found)
+    int first = view;
+    for (int k = 5; k >= 0; --k)
     {
-      vec4 clip = fxViewToLight[view] * vec4(positionVC, 1.0);
-      bool sees = clip.w > 0.0 && (count == 1 || all(lessThanEqual(abs(clip.xy), vec2(clip.w))));
-      if (sees)
+      int face = min(first + k, FX_VIEWS - 1);
+      vec4 clip = fxViewToLight[face] * vec4(positionVC, 1.0);
+      if (k < count && clip.w > 0.0 && all(lessThanEqual(abs(clip.xy), vec2(clip.w))))
       {
-        transmittance = fxViewTransmittance(view, positionVC, count > 1);
-        found = true;
+        view = face;
       }
     }
   }
-  return 1.0 - fxLightAttenuation[light] * (1.0 - clamp(transmittance, 0.0, 1.0));
+  if (!((fxViewToLight[view] * vec4(positionVC, 1.0)).w > 0.0))
+  {
+    return 1.0; // behind the light
+  }
+  float transmittance = clamp(fxViewTransmittance(view, positionVC, count > 1), 0.0, 1.0);
+  float attenuation = FX_LIGHTS == 1 ? fxLightAttenuation[0] : fxLightAttenuation[light];
+  return 1.0 - attenuation * (1.0 - transmittance);
 }
