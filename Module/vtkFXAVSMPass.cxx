@@ -89,8 +89,6 @@ double Brightness(vtkLight* light)
   return light->GetIntensity() * std::max(c[0], std::max(c[1], c[2]));
 }
 
-// Views of the atlas per row: a light in every direction fills one row.
-const int AtlasColumns = 6;
 
 // Storage buffers, their clears, program-interface queries and memory
 // barriers: all of OpenGL 4.3 (llvmpipe has 4.5).
@@ -101,30 +99,33 @@ bool StorageBuffersSupported()
 
 // VTK's point-gaussian splats (vtkPointGaussianGS.glsl: a triangle around
 // each point, facing the camera, with the offset from the centre in scale
-// units): the geometry shader gets `declarations` and, at each corner,
-// `perCorner` (with `radius`, view units per scale unit, and the corner's
-// `offset` at hand, before the corner is placed), the
+// units): the geometry shader gets `declarations`, `once` after it computes
+// `radius` (view units per scale unit), and at each corner `perCorner`
+// (with the corner's `offset` at hand, before it is used), the
 // fragment shader `fragmentDeclarations`, FX_SPLAT, and VTK's gaussian
 // falloff kept apart from the opacity (fxSplatFalloff). False, and nothing
 // changed, for other shaders.
 bool ExtendSplatShaders(std::string& geometryShader, std::string& fragmentShader,
-  const std::string& declarations, const std::string& perCorner,
+  const std::string& declarations, const std::string& once, const std::string& perCorner,
   const std::string& fragmentDeclarations)
 {
+  const char* const radiusSet = "float radius = radiusVCVSOutput[0]/triangleScale;";
   const char* const offsetOut = "out vec2 offsetVCGSOutput;";
   const char* const offsetSet = "offsetVCGSOutput = offset.xy/radius;";
   // The fragment shader says VSOutput: VTK renames its inputs to GSOutput
   // when it compiles them with a geometry shader.
   const char* const offsetIn = "in vec2 offsetVCVSOutput;";
   if (!Contains(geometryShader, offsetOut) || !Contains(geometryShader, offsetSet) ||
-    !Contains(fragmentShader, offsetIn))
+    !Contains(geometryShader, radiusSet) || !Contains(fragmentShader, offsetIn))
   {
     return false;
   }
   vtkShaderProgram::Substitute(
+    geometryShader, radiusSet, std::string(radiusSet) + "\n  " + once, false);
+  vtkShaderProgram::Substitute(
     geometryShader, offsetOut, std::string(offsetOut) + "\n" + declarations, false);
   vtkShaderProgram::Substitute(
-    geometryShader, offsetSet, std::string(offsetSet) + "\n  " + perCorner, true);
+    geometryShader, offsetSet, perCorner + "\n  " + offsetSet, true);
   vtkShaderProgram::Substitute(fragmentShader, offsetIn,
     std::string("#define FX_SPLAT 1\n") + offsetIn + "\nfloat fxSplatFalloff = 1.0;\n" +
       fragmentDeclarations,
@@ -401,8 +402,8 @@ void vtkFXAVSMPass::AddView(const double position[3], const double direction[3],
   view.Camera->SetExplicitProjectionTransformMatrix(projection);
   view.Camera->UseExplicitProjectionTransformMatrixOn();
   const int index = static_cast<int>(this->Views.size());
-  view.Origin[0] = (index % AtlasColumns) * this->ShadowMapSize;
-  view.Origin[1] = (index / AtlasColumns) * this->ShadowMapSize;
+  view.Origin[0] = (index % this->AtlasColumns) * this->ShadowMapSize;
+  view.Origin[1] = (index / this->AtlasColumns) * this->ShadowMapSize;
   this->Views.push_back(view);
 }
 
@@ -427,6 +428,13 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
     radius = std::sqrt(radius);
     radius = (std::isfinite(radius) && radius > 0.0) ? radius : 1.0;
   }
+  // The atlas about square: columns for the square root of the views.
+  int views = 0;
+  for (const CastingLight& casting : this->CastingLights)
+  {
+    views += (casting.Light->GetPositional() && !IsSpot(casting.Light)) ? 6 : 1;
+  }
+  this->AtlasColumns = std::max(1, static_cast<int>(std::ceil(std::sqrt(double(views)))));
   this->Views.clear();
   for (CastingLight& casting : this->CastingLights)
   {
@@ -495,9 +503,10 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
     }
     casting.NumberOfViews = static_cast<int>(this->Views.size()) - casting.FirstView;
   }
-  const int views = static_cast<int>(this->Views.size());
-  this->AtlasSize[0] = std::min(views, AtlasColumns) * this->ShadowMapSize;
-  this->AtlasSize[1] = ((views + AtlasColumns - 1) / AtlasColumns) * this->ShadowMapSize;
+  views = static_cast<int>(this->Views.size());
+  this->AtlasSize[0] = std::min(views, this->AtlasColumns) * this->ShadowMapSize;
+  this->AtlasSize[1] =
+    ((views + this->AtlasColumns - 1) / this->AtlasColumns) * this->ShadowMapSize;
 }
 
 void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
@@ -621,14 +630,18 @@ bool vtkFXAVSMPass::PostReplaceShaderValues(
   // After VTK's own replacements: they declare the splat's offset.
   if (Contains(fragmentShader, CaptureMarker))
   {
-    // The capture's chord needs the splat's scale in view units; its
-    // triangle shrinks to hold just the sphere (VTK's holds triangleScale,
-    // 3 by default, scale units: some 3x the fragments).
+    // The capture's chord needs the splat's scale in units of light depth
+    // along the view's axis: view units, times the cosine between the
+    // light ray and the axis for a perspective view (the triangle faces
+    // the light there). The triangle shrinks to hold just the sphere
+    // (VTK's holds triangleScale, 3 by default, scale units: some 3x the
+    // fragments).
     ExtendSplatShaders(geometryShader, fragmentShader,
       "out float fxSplatScaleGSOutput;\nuniform float fxSplatRadius;",
+      "float fxAxial = cameraParallel != 0 ? 1.0\n"
+      "    : -gl_in[0].gl_Position.z / max(length(gl_in[0].gl_Position.xyz), 1e-30);",
       "offset.xy *= min(1.0, fxSplatRadius / triangleScale);\n"
-      "  offsetVCGSOutput = offset.xy/radius;\n"
-      "  fxSplatScaleGSOutput = radius;",
+      "  fxSplatScaleGSOutput = radius * fxAxial;",
       "in float fxSplatScaleVSOutput;\nuniform float fxSplatRadius;");
   }
   if (!this->Receiving || !Contains(fragmentShader, ReceiverMarker))
@@ -636,13 +649,13 @@ bool vtkFXAVSMPass::PostReplaceShaderValues(
     return true;
   }
   // A splat takes the brightest casting light's visibility at its centre,
-  // looked up once per splat (at its corners) rather than per fragment: a
-  // cloud's splats overlap in many layers on screen.
+  // looked up once per splat rather than per fragment: a cloud's splats
+  // overlap in many layers on screen.
   const bool splat = ExtendSplatShaders(geometryShader, fragmentShader,
     "out float fxSplatTransmittanceGSOutput;\n" + this->CurveDefines(this->Exact) +
       (this->Exact ? vtkFXAVSMLists : "") + this->CurveCode(),
-    "fxSplatTransmittanceGSOutput = fxLightTransmittance(0, gl_in[0].gl_Position.xyz);",
-    "in float fxSplatTransmittanceVSOutput;");
+    "float fxSplatT = fxLightTransmittance(0, gl_in[0].gl_Position.xyz);",
+    "fxSplatTransmittanceGSOutput = fxSplatT;", "in float fxSplatTransmittanceVSOutput;");
   if (splat && this->Exact)
   {
     vtkShaderProgram::Substitute(geometryShader, "//VTK::System::Dec", StorageExtension, false);
@@ -791,10 +804,12 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   const GLuint counted = counter[0];
   this->CapturedFragments = counted;
-  // llvmpipe stops a shader's loops after 65535 iterations: longer lists
-  // are walked that far (a deep shadow of more than 65000 surfaces on one
+  // llvmpipe stops a shader's loops after some 65535 iterations in all:
+  // the exact look-up's walks (four bilinear taps per casting light) stay
+  // within 30000 steps (a deep shadow of more surfaces than that on one
   // texel is dark enough anyway).
-  this->LongestList = std::min<vtkIdType>(counter[1], 65000);
+  this->LongestList = std::min<vtkIdType>(
+    counter[1], 30000 / (4 * std::max(1, this->GetNumberOfCastingLights())));
   if (counted > this->Capacity)
   {
     if (!this->WarnedOverflow)
@@ -845,7 +860,7 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
   defines << StorageExtension << "#define FX_NODES " << nodes << "\n#define FX_MAX_LIST "
           << MaximumListPerTexel << "\n#define FX_SLICES " << (slices ? 2 * nodes : 0)
           << "\n#define FX_VIEWS " << this->GetNumberOfViews() << "\n#define FX_ATLAS_COLUMNS "
-          << AtlasColumns << "\n";
+          << this->AtlasColumns << "\n";
   std::ostringstream sliceOutput;
   for (int k = 0; k < nodes / 2; ++k)
   {
@@ -1091,6 +1106,7 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
     this->CastingLights.empty())
   {
     vtkErrorMacro("vtkFXAVSMPass needs a G-buffer with linear depth and a casting light.");
+    this->AbandonFrame(window);
     return;
   }
   if (!StorageBuffersSupported())
@@ -1101,7 +1117,7 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
                     "cast no shadows.");
       this->WarnedUnsupported = true;
     }
-    vtkFXRenderUtilities::Release(this->Visibility, window);
+    this->AbandonFrame(window);
     return;
   }
   this->GatherCasters(ren);
@@ -1120,8 +1136,7 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
                            << this->AtlasSize[1] << ", above this OpenGL's " << largest
                            << "; no shadows this frame (lower ShadowMapSize or "
                               "MaximumNumberOfLights).");
-    vtkFXRenderUtilities::Release(this->Visibility, window);
-    this->Views.clear();
+    this->AbandonFrame(window);
     return;
   }
   this->EnsureBuffers();
@@ -1174,6 +1189,16 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
   {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
   }
+}
+
+void vtkFXAVSMPass::AbandonFrame(vtkOpenGLRenderWindow* window)
+{
+  // Nothing for the composite or the translucent step to read, and no
+  // pointers into the scene kept.
+  vtkFXRenderUtilities::Release(this->Visibility, window);
+  this->Views.clear();
+  this->Casters.clear();
+  this->CastingLights.clear();
 }
 
 void vtkFXAVSMPass::ReleaseGraphicsResources(vtkWindow* w)

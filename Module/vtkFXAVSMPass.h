@@ -297,7 +297,7 @@ protected:
   {
     vtkSmartPointer<vtkCamera> Camera;
     vtkSmartPointer<vtkMatrix4x4> Projection;
-    vtkSmartPointer<vtkMatrix4x4> ViewToLight; // this frame's, transposed for GLSL
+    vtkSmartPointer<vtkMatrix4x4> ViewToLight; // this frame's viewer view -> light clip
     bool Perspective = false;                 // a spot or point light's
     double NearFar[2] = { 1.0, 3.0 };         // its depth range
     float SliceRange[2] = { 0.0f, 1.0f };     // this frame's casters' light depths
@@ -332,6 +332,7 @@ protected:
   int VisibilityChannels() const { return this->CastingLights.size() > 1 ? 4 : 1; }
   static double LightDepthFromNDC(const LightView& view, double ndcZ); // vtkFXAVSMLightDepth.glsl
   void ReleaseCurveUnits();
+  void AbandonFrame(vtkOpenGLRenderWindow* window); // no shadows this frame
 
   int ShadowMapSize = 512;
   int NumberOfNodes = 8;
@@ -361,7 +362,8 @@ protected:
   std::vector<CastingLight> CastingLights;
   std::vector<LightView> Views;
   int AtlasSize[2] = { 0, 0 };
-  int CaptureView = 0; // the view being captured
+  int CaptureView = 0;  // the view being captured
+  int AtlasColumns = 1; // views per row of the atlas
 
   vtkSmartPointer<vtkTranslucentPass> CasterPass;
   unsigned int Buffers[4] = { 0, 0, 0, 0 }; // heads, nodes, counter, counts per texel

@@ -105,9 +105,12 @@ bool vtkFXRenderUtilities::EnsureTexture(vtkSmartPointer<vtkTextureObject>& text
 vtkShaderProgram* vtkFXRenderUtilities::ReadyQuad(
   FullScreenQuad& quad, vtkOpenGLRenderWindow* window, const std::string& fragmentSource)
 {
-  // VTK's quad is a strip of four corners (-1..1, texture 0..1); doubled
-  // and moved, its first triangle (-1,-1), (3,-1), (-1,3) holds the whole
-  // viewport and its second lies beyond the corner (1, 1).
+  // VTK's quad is a strip over the corners (1,1), (-1,1), (1,-1), (-1,-1)
+  // (texture 0..1), its diagonal from (-1,1) to (1,-1); doubled and moved
+  // by +1, its second triangle (-1,3), (3,-1), (-1,-1) holds the whole
+  // viewport and its first lies beyond the corner (1,1). (Were the strip's
+  // diagonal the other one, the quad would be split as before: TestAVSM's
+  // AVSM-16 against exact comparisons would show it.)
   static const char* const oneTriangle = "//VTK::System::Dec\n"
                                          "in vec4 ndCoordIn;\n"
                                          "in vec2 texCoordIn;\n"

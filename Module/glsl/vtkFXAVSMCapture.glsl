@@ -9,7 +9,9 @@
 //   VTK renames them GSOutput) is a sphere of uniform density, of
 //   radius fxSplatRadius in the splat's scale units, centred on the splat
 //   (seed 003's particles): the fragment at offset d from the centre is the
-//   chord of half-length r sqrt(1 - d^2 / R^2) around the splat's depth,
+//   chord of half-length r sqrt(1 - d^2 / R^2) around the splat's depth
+//   (its extent along the view's axis: fxSplatScale carries the cosine to
+//   the axis for a spot or point light's view),
 //   and its optical depth is the centre chord's, -ln(1 - a_centre), times
 //   the same fraction (uniform density: proportional to length). a_centre
 //   is the splat's opacity before VTK's gaussian falloff (fxSplatFalloff;
@@ -19,11 +21,10 @@
 // is counted and dropped; the pass grows the buffer for the next frame.
   {
     float fxAlpha = gl_FragData[0].a;
-    // The fragment's light depth (vtkFXAVSMLightDepth.glsl): from its
-    // clip w for a spot light, its window depth for a directional one.
-    float fxEntry = fxAVSMPerspective != 0
-      ? (1.0 / gl_FragCoord.w - fxAVSMNearFar.x) / (fxAVSMNearFar.y - fxAVSMNearFar.x)
-      : gl_FragCoord.z;
+    // The fragment's light depth, from its clip coordinates (w = 1 /
+    // gl_FragCoord.w; z / w from the window depth).
+    float fxEntry = fxLightDepthFromClip(vec4(0.0, 0.0, (2.0 * gl_FragCoord.z - 1.0) / gl_FragCoord.w,
+      1.0 / gl_FragCoord.w), fxAVSMPerspective, fxAVSMNearFar);
     float fxExit = fxEntry;
     float fxShare = 1.0;
 #ifdef FX_SPLAT

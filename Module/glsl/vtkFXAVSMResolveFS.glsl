@@ -13,8 +13,10 @@
 // Order independence: the segments are inserted in order (of entry depth,
 // then optical depth, then exit depth; equal ones together), so the curve
 // does not depend on the order fragments arrived in; past the first
-// FX_MAX_LIST, the rest are summed into one last segment from the nearest
-// entry to the farthest exit among them (exact past it). Optical depth is summed, capped at 1e4 (transmittance 0
+// FX_MAX_LIST (fewer for lists over 450 segments: the rounds stay within
+// llvmpipe's loop budget, see below), the rest are summed into one last
+// segment from the nearest entry to the farthest exit among them (exact
+// past it). Optical depth is summed, capped at 1e4 (transmittance 0
 // in float).
 // Output: FX_NODES / 4 targets of depths, then FX_NODES / 4 of optical
 // depths; unused nodes have depth 3e38 and the last optical depth.
@@ -120,7 +122,7 @@ void fxRemoveNode()
 // and exits (the curve's value there before, plus all of the segment at
 // the exit), its share added to every node it reaches (all of it past the
 // exit). One pass reads the old curve at both ends and adds the shares:
-// node i is read before it changes, node i + 1 after.
+// nodes i and i + 1 are read before node i changes.
 void fxInsertSegment(float entry, float exitDepth, float tau)
 {
   float atEntry = 0.0;
@@ -204,7 +206,8 @@ void main()
   {
     bins[k] = 0.0;
   }
-  vec2 range = fxViewSliceRange[(texel.y / fxViewSize) * FX_ATLAS_COLUMNS + texel.x / fxViewSize];
+  vec2 range = fxViewSliceRange[min((texel.y / fxViewSize) * FX_ATLAS_COLUMNS + texel.x / fxViewSize,
+    FX_VIEWS - 1)];
   float sliceWidth = max(range.y - range.x, 1e-30) / float(FX_SLICES);
   for (int step = 0; step < count; ++step)
   {
