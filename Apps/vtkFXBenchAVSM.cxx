@@ -110,14 +110,14 @@ void WriteRayPlot(std::vector<Method>& methods, const std::string& title, const 
   Method& exact = methods[methods.size() - 2];
   exact.Window->MakeCurrent();
   int x = 0, y = 0;
-  std::vector<double> depths, tau;
-  if (!exact.AVSM->GetLongestListTexel(x, y) || !exact.AVSM->GetTexelFragments(x, y, depths, tau) ||
-    depths.empty())
+  std::vector<double> depths, tau, exits;
+  if (!exact.AVSM->GetLongestListTexel(x, y) ||
+    !exact.AVSM->GetTexelFragments(x, y, depths, tau, &exits) || depths.empty())
   {
     return;
   }
   const double lo = *std::min_element(depths.begin(), depths.end());
-  const double hi = *std::max_element(depths.begin(), depths.end());
+  const double hi = *std::max_element(exits.begin(), exits.end());
   const double margin = 0.1 * std::max(hi - lo, 1e-6);
   std::vector<PlotLine> lines;
   const unsigned char palette[][3] = { { 30, 30, 30 }, { 200, 60, 30 }, { 230, 150, 20 },
@@ -135,10 +135,14 @@ void WriteRayPlot(std::vector<Method>& methods, const std::string& title, const 
     lines.push_back(line);
   };
   addLine("exact (" + std::to_string(depths.size()) + " fragments)", [&](double z) {
+    // Each segment's share in front of z (vtkFXAVSMLists.glsl's
+    // fxSegmentShare): linear inside it, a step for a surface.
     double sum = 0.0;
     for (size_t i = 0; i < depths.size(); ++i)
     {
-      sum += depths[i] < z ? tau[i] : 0.0;
+      sum += exits[i] > depths[i]
+        ? tau[i] * std::min(1.0, std::max(0.0, (z - depths[i]) / (exits[i] - depths[i])))
+        : (depths[i] < z ? tau[i] : 0.0);
     }
     return sum;
   });
