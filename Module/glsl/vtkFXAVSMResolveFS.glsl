@@ -237,62 +237,26 @@ void main()
 #endif
   // The texel's segments in order (selection: each round walks the list
   // for the least segment after the last one taken, and how many share
-  // it, which go in as one); past FX_MAX_LIST rounds, the rest go in as
-  // one segment. No local arrays: count^2 reads of the texel's own list.
+  // it, which go in as one); past `rounds` rounds, one last walk sums the
+  // rest into one segment. No local arrays: count^2 reads of the texel's
+  // own list.
   uint head = node;
   float lastEntry = -3e38;
   float lastTau = -3e38;
   float lastExit = -3e38;
   int taken = 0;
   int rounds = min(FX_MAX_LIST, 30000 / max(count, 1) - 1);
-  for (int round = 0; round < FX_MAX_LIST; ++round)
+  for (int round = 0; round <= FX_MAX_LIST; ++round)
   {
-    if (taken >= count || round >= rounds)
+    if (taken >= count)
     {
       break;
     }
+    bool rest = round >= rounds; // the tail: sums instead of the least
     float entry = 3e38;
     float tau = 3e38;
     float exitDepth = 3e38;
     int same = 0;
-    node = head;
-    for (int step = 0; step < count; ++step)
-    {
-      if (node == fxAVSMEnd || node >= uint(fxAVSMCapacity))
-      {
-        break;
-      }
-      fxAVSMNode segment = fxAVSMNodes[node];
-      node = segment.next;
-      if (fxBefore(lastEntry, lastTau, lastExit, segment.depth, segment.opticalDepth,
-            segment.exitDepth))
-      {
-        if (fxBefore(segment.depth, segment.opticalDepth, segment.exitDepth, entry, tau, exitDepth))
-        {
-          entry = segment.depth;
-          tau = segment.opticalDepth;
-          exitDepth = segment.exitDepth;
-          same = 1;
-        }
-        else if (segment.depth == entry && segment.opticalDepth == tau &&
-          segment.exitDepth == exitDepth)
-        {
-          ++same;
-        }
-      }
-    }
-    if (same == 0)
-    {
-      break; // the list was shorter than its count (never)
-    }
-    fxInsertSegment(entry, exitDepth, min(tau * float(same), 1e4));
-    taken += same;
-    lastEntry = entry;
-    lastTau = tau;
-    lastExit = exitDepth;
-  }
-  if (taken < count)
-  {
     float restTau = 0.0;
     float restNear = 3e38;
     float restFar = -3e38;
@@ -305,18 +269,47 @@ void main()
       }
       fxAVSMNode segment = fxAVSMNodes[node];
       node = segment.next;
-      if (fxBefore(lastEntry, lastTau, lastExit, segment.depth, segment.opticalDepth,
+      if (!fxBefore(lastEntry, lastTau, lastExit, segment.depth, segment.opticalDepth,
             segment.exitDepth))
+      {
+        continue; // taken already
+      }
+      if (rest)
       {
         restTau = min(restTau + segment.opticalDepth, 1e4);
         restNear = min(restNear, segment.depth);
         restFar = max(restFar, segment.exitDepth);
       }
+      else if (fxBefore(segment.depth, segment.opticalDepth, segment.exitDepth, entry, tau, exitDepth))
+      {
+        entry = segment.depth;
+        tau = segment.opticalDepth;
+        exitDepth = segment.exitDepth;
+        same = 1;
+      }
+      else if (segment.depth == entry && segment.opticalDepth == tau &&
+        segment.exitDepth == exitDepth)
+      {
+        ++same;
+      }
     }
-    if (restTau > 0.0)
+    if (rest)
     {
-      fxInsertSegment(restNear, restFar, restTau);
+      if (restTau > 0.0)
+      {
+        fxInsertSegment(restNear, restFar, restTau);
+      }
+      break;
     }
+    if (same == 0)
+    {
+      break; // the list was shorter than its count (never)
+    }
+    fxInsertSegment(entry, exitDepth, min(tau * float(same), 1e4));
+    taken += same;
+    lastEntry = entry;
+    lastTau = tau;
+    lastExit = exitDepth;
   }
   float total = fxCurveAt(3e38);
   for (int i = 0; i < FX_NODES; ++i)
