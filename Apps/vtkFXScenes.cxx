@@ -271,6 +271,58 @@ void SceneCorner(vtkRenderer* renderer)
   renderer->AddActor(MakeActor(Sphere(1.0, 0.5, 0.0, 0.5), 0.3, 0.5, 0.9));
 }
 
+// Point scalar `name` = height(point) on `poly`, in world units.
+template <typename HeightFunction>
+void AddHeight(vtkPolyData* poly, const char* name, HeightFunction height)
+{
+  vtkNew<vtkFloatArray> values;
+  values->SetName(name);
+  values->SetNumberOfTuples(poly->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    poly->GetPoint(i, p);
+    values->SetValue(i, static_cast<float>(height(p)));
+  }
+  poly->GetPointData()->AddArray(values);
+}
+
+void SceneBumps(vtkRenderer* renderer)
+{
+  // Scalar bumps (vtkFXGBufferPass::SetBump) on flat and curved geometry,
+  // near occluders: what directional occlusion shows and plain AO cannot.
+  // A wall of rivets (domes 0.04 high on a 0.4 grid) meeting the ground,
+  vtkNew<vtkPlaneSource> wall;
+  wall->SetOrigin(-2, 0, -1);
+  wall->SetPoint1(2, 0, -1);
+  wall->SetPoint2(-2, 2.5, -1);
+  wall->SetResolution(320, 200);
+  wall->Update();
+  vtkSmartPointer<vtkPolyData> wallData = wall->GetOutput();
+  AddHeight(wallData, "height", [](const double p[3]) {
+    const double cell = 0.4, radius = 0.13;
+    const double dx = p[0] - cell * std::floor(p[0] / cell) - 0.5 * cell;
+    const double dy = p[1] - cell * std::floor(p[1] / cell) - 0.5 * cell;
+    const double r2 = (dx * dx + dy * dy) / (radius * radius);
+    return r2 < 1.0 ? 0.04 * std::sqrt(1.0 - r2) : 0.0;
+  });
+  auto wallActor = MakeActor(wallData, 0.85, 0.85, 0.85);
+  vtkFXGBufferPass::SetBump(wallActor, "height", 1.0);
+  renderer->AddActor(wallActor);
+  // a sphere with horizontal ridges (a scalar field's bumps on a curved
+  // surface),
+  vtkSmartPointer<vtkPolyData> ball = Sphere(0.7, 0.6, -0.2, 0.6, 160);
+  AddHeight(ball, "ridges", [](const double p[3]) { return 0.012 * std::sin(40.0 * p[1]); });
+  auto ballActor = MakeActor(ball, 0.3, 0.5, 0.9);
+  vtkFXGBufferPass::SetBump(ballActor, "ridges", 1.0);
+  renderer->AddActor(ballActor);
+  // and a box without a bump in the corner.
+  vtkNew<vtkCubeSource> box;
+  box->SetBounds(-1.3, -0.6, 0.008, 0.7, -0.992, -0.3);
+  box->Update();
+  renderer->AddActor(MakeActor(box->GetOutput(), 0.9, 0.6, 0.3));
+}
+
 void SceneScalars(vtkRenderer* renderer)
 {
   vtkNew<vtkSphereSource> source;
@@ -678,6 +730,8 @@ bool PopulateBuiltIn(vtkRenderer* renderer, const std::string& name, std::string
     SceneSpheres(renderer);
   else if (name == "scene:corner")
     SceneCorner(renderer);
+  else if (name == "scene:bumps")
+    SceneBumps(renderer);
   else if (name == "scene:scalars")
     SceneScalars(renderer);
   else if (name == "scene:textured")
@@ -732,7 +786,7 @@ std::vector<std::string> vtkFXScenes::BuiltInSceneNames()
   return { "scene:spheres", "scene:corner", "scene:scalars", "scene:textured", "scene:glyphs",
     "scene:composite", "scene:splats", "scene:lights", "scene:mixed", "scene:volume", "scene:edges",
     "scene:molecule", "scene:glow", "scene:pointlights", "scene:isoshadow", "scene:cloud",
-    "scene:particles" };
+    "scene:particles", "scene:bumps" };
 }
 
 bool vtkFXScenes::Populate(vtkRenderer* renderer, const std::string& input,

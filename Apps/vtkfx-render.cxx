@@ -11,6 +11,7 @@
 #include "vtkFXAVSMPass.h"
 #include "vtkFXBilateralBlurPass.h"
 #include "vtkFXBloomPass.h"
+#include "vtkFXDirectionalOcclusionPass.h"
 #include "vtkFXSSAOPass.h"
 #include "vtkFXToonPass.h"
 #include "vtkFXCompositePass.h"
@@ -53,23 +54,27 @@ struct Arguments
   int AOQuality = vtkFXPipelinePass::Medium;
   int AOFalloff = vtkFXSSAOPass::Binary;
   bool AOOptions = false; // any --ao-* option given
+  bool AOQualityGiven = false;
 };
 
 // Effects the pipeline knows: "ssao" (screen-space ambient occlusion),
-// "blur" (its depth/normal-aware blur and upsampling), "toon" (banded
+// "blur" (its depth/normal-aware blur and upsampling), "do" (directional
+// occlusion resolved with bumped normals, blur included), "toon" (banded
 // diffuse light and feature lines), "lines" (the feature lines alone) and
 // "bloom" (glow of emissive props) and "avsm" (shadows of translucent props).
-const std::vector<std::string> KnownEffects = { "ssao", "blur", "toon", "lines", "bloom", "avsm" };
+const std::vector<std::string> KnownEffects = { "ssao", "blur", "do", "toon", "lines", "bloom",
+  "avsm" };
 
 void Usage(std::ostream& os)
 {
   os << "usage: vtkfx-render INPUT [--size WxH] [--effects none|LIST] [--plain-vtk]\n"
         "                    [--frames N] [--out FILE.png] [--stats FILE.json]\n"
         "                    [--debug-channel normal|depth|albedo|specular|ambient|emission|\n"
-        "                                     occlusion]\n"
+        "                                     shading-normal|occlusion]\n"
         "                    [--no-ground] [--ao-radius R | --ao-radius-fraction F]\n"
         "                    [--ao-quality low|medium|high] [--ao-falloff binary|cuberoot]\n"
         "LIST: comma-separated effects: ssao, blur (ssao,blur: ambient occlusion),\n"
+        "      do (directional occlusion: shows bumps in the ambient term; not with ssao),\n"
         "      toon (banded light and feature lines) or lines (feature lines alone),\n"
         "      bloom (glow of emissive props), avsm (shadows cast by translucent props)\n"
         "INPUT: a .obj, .ply, .stl, .vtp, .vtk or .pdb file, or one of:";
@@ -207,6 +212,7 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
         return false;
       }
       args.AOOptions = true;
+      args.AOQualityGiven = true;
     }
     else if (a == "--ao-falloff")
     {
@@ -271,6 +277,17 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
   const auto has = [&args](const char* e) {
     return std::find(args.Effects.begin(), args.Effects.end(), e) != args.Effects.end();
   };
+  if (has("do") && has("ssao"))
+  {
+    error = "'do' (directional occlusion) replaces 'ssao': give one of them";
+    return false;
+  }
+  if (has("do") && args.AOQualityGiven)
+  {
+    error = "--ao-quality picks an ambient-occlusion preset; 'do' has none (--ao-radius and "
+            "--ao-falloff apply to it)";
+    return false;
+  }
   if (has("blur") && !has("ssao"))
   {
     error = "effect 'blur' blurs an occlusion effect: use --effects ssao,blur";
@@ -286,14 +303,14 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
     error = "give --ao-radius (world units) or --ao-radius-fraction, not both";
     return false;
   }
-  if (args.AOOptions && !has("ssao"))
+  if (args.AOOptions && !has("ssao") && !has("do"))
   {
-    error = "--ao-* options set the ambient occlusion: add --effects ssao,blur";
+    error = "--ao-* options set the ambient occlusion: add --effects ssao,blur (or do)";
     return false;
   }
-  if (args.DebugChannel == "occlusion" && !has("ssao"))
+  if (args.DebugChannel == "occlusion" && !has("ssao") && !has("do"))
   {
-    error = "--debug-channel occlusion shows an occlusion effect: add --effects ssao";
+    error = "--debug-channel occlusion shows an occlusion effect: add --effects ssao or do";
     return false;
   }
   if (args.PlainVTK && !args.Effects.empty())
@@ -372,6 +389,18 @@ int main(int argc, char* argv[])
       pipeline->GetSSAOPass()->SetRadiusFraction(args.AORadiusFraction);
     }
     pipeline->GetOcclusionBlurPass()->SetEnabled(has("blur"));
+    if (has("do"))
+    {
+      pipeline->SetDirectionalOcclusion(true);
+      if (args.AORadius > 0.0)
+      {
+        pipeline->GetDirectionalOcclusionPass()->SetRadius(args.AORadius);
+      }
+      if (args.AORadiusFraction > 0.0)
+      {
+        pipeline->GetDirectionalOcclusionPass()->SetRadiusFraction(args.AORadiusFraction);
+      }
+    }
     if (has("toon") || has("lines"))
     {
       vtkNew<vtkFXToonPass> toon;

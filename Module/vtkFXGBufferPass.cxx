@@ -8,8 +8,13 @@
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
+#include "vtkDataObject.h"
 #include "vtkInformation.h"
+#include "vtkInformationDoubleKey.h"
 #include "vtkInformationDoubleVectorKey.h"
+#include "vtkInformationStringKey.h"
+#include "vtkNew.h"
+#include "vtkOpenGLPolyDataMapper.h"
 #include "vtkShader.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -33,17 +38,20 @@ vtkStandardNewMacro(vtkFXGBufferPass);
 namespace
 {
 const char* const ChannelNames[vtkFXGBufferPass::NumberOfChannels] = { "albedo", "normal", "depth",
-  "specular", "ambient", "emission" };
+  "specular", "ambient", "emission", "shading-normal" };
 
 const int ChannelFormats[vtkFXGBufferPass::NumberOfChannels] = { vtkFXRenderUtilities::RGBA8,
   vtkFXRenderUtilities::RG16F, vtkFXRenderUtilities::R32F, vtkFXRenderUtilities::RGBA8,
-  vtkFXRenderUtilities::RGBA8, vtkFXRenderUtilities::RGBA8 };
+  vtkFXRenderUtilities::RGBA8, vtkFXRenderUtilities::RGBA8, vtkFXRenderUtilities::RG16F };
 
 // Value of each channel where no surface is: the normal channel holds the
 // "unlit" sentinel of vtkFXNormalCoding.glsl, so that pixels no hooked
 // mapper wrote are never lit with a made-up normal.
 const float ClearValues[vtkFXGBufferPass::NumberOfChannels][4] = { { 0, 0, 0, 0 }, { 4, 4, 0, 1 },
-  { 0, 0, 0, 0 }, { 0, 0, 0, 0 }, { 0, 0, 0, 0 }, { 0, 0, 0, 0 } };
+  { 0, 0, 0, 0 }, { 0, 0, 0, 0 }, { 0, 0, 0, 0 }, { 0, 0, 0, 0 }, { 4, 4, 0, 1 } };
+
+// The vertex attribute a bumped prop's scalar arrives in, and its varying.
+const char* const BumpAttribute = "fxBumpMC";
 
 // Tags planted in the mapper's fragment shader before its own substitutions.
 const char* const TexBeginTag = "//VTK::FXGBuffer::TexBegin";
@@ -73,6 +81,38 @@ std::string ExtractTextureCode(const std::string& fs)
 bool IsBlank(const std::string& s)
 {
   return s.find_first_not_of(" \t\r\n") == std::string::npos;
+}
+
+// fxShadingNormal: the interpolated normal, tilted by the bump when the
+// shader receives one. Mikkelsen, "Bump Mapping Unparametrized Surfaces on
+// the GPU" (2010), eq. 2-4: with the screen derivatives of the position
+// and of the height h, the surface gradient of h is
+//   (dh/dx (dp/dy x n) + dh/dy (n x dp/dx)) / det, det = dp/dx . (dp/dy x n),
+// and the bumped normal is n - gradient (scaled by |det| to avoid the
+// division). Degenerate derivatives (a triangle seen edge-on, NaN scalars)
+// leave the normal as it was.
+std::string ShadingNormalGLSL(bool bump)
+{
+  std::string code = "  vec3 fxShadingNormal = normalVCVSOutput;\n";
+  if (bump)
+  {
+    code += "  {\n"
+            "    vec3 dpdx = dFdx(vertexVC.xyz);\n"
+            "    vec3 dpdy = dFdy(vertexVC.xyz);\n"
+            "    float h = fxBumpScale * fxBumpVSOutput;\n"
+            "    vec3 r1 = cross(dpdy, fxShadingNormal);\n"
+            "    vec3 r2 = cross(fxShadingNormal, dpdx);\n"
+            "    float det = dot(dpdx, r1);\n"
+            "    vec3 gradient = sign(det) * (dFdx(h) * r1 + dFdy(h) * r2);\n"
+            "    vec3 bumped = abs(det) * fxShadingNormal - gradient;\n"
+            "    float len = length(bumped);\n"
+            "    if (len > 0.0 && !isinf(len) && !isnan(len))\n"
+            "    {\n"
+            "      fxShadingNormal = bumped / len;\n"
+            "    }\n"
+            "  }\n";
+  }
+  return code;
 }
 }
 
@@ -115,6 +155,77 @@ int vtkFXGBufferPass::GetChannelFormat(int channel) const
 }
 
 vtkInformationKeyRestrictedMacro(vtkFXGBufferPass, EMISSIVE_COLOR, DoubleVector, 3);
+vtkInformationKeyMacro(vtkFXGBufferPass, BUMP_ARRAY, String);
+vtkInformationKeyMacro(vtkFXGBufferPass, BUMP_SCALE, Double);
+
+void vtkFXGBufferPass::SetBump(vtkActor* actor, const char* arrayName, double scale)
+{
+  if (!actor)
+  {
+    return;
+  }
+  const bool remove = !arrayName || !*arrayName;
+  vtkInformation* keys = actor->GetPropertyKeys();
+  if (!keys && remove)
+  {
+    return;
+  }
+  if (!keys)
+  {
+    vtkNew<vtkInformation> created;
+    actor->SetPropertyKeys(created);
+    keys = created;
+  }
+  if (remove)
+  {
+    keys->Remove(BUMP_ARRAY());
+    keys->Remove(BUMP_SCALE());
+  }
+  else
+  {
+    if (!std::isfinite(scale))
+    {
+      vtkGenericWarningMacro("vtkFXGBufferPass::SetBump: scale " << scale << " is not finite; no bump.");
+      scale = 0.0;
+    }
+    keys->Set(BUMP_ARRAY(), arrayName);
+    keys->Set(BUMP_SCALE(), scale);
+  }
+  // The mapper sends the array to the shader as a vertex attribute (only
+  // programs that declare it read it).
+  if (auto* mapper = vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()))
+  {
+    if (remove)
+    {
+      mapper->RemoveVertexAttributeMapping(BumpAttribute);
+    }
+    else
+    {
+      mapper->MapDataArrayToVertexAttribute(
+        BumpAttribute, arrayName, vtkDataObject::FIELD_ASSOCIATION_POINTS, 0);
+    }
+  }
+  else if (!remove)
+  {
+    vtkGenericWarningMacro("vtkFXGBufferPass::SetBump: the actor's mapper is not a "
+                           "vtkOpenGLPolyDataMapper; set one before SetBump. No bump.");
+  }
+  actor->Modified();
+}
+
+bool vtkFXGBufferPass::HasBump(vtkProp* prop)
+{
+  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
+  if (!keys || !keys->Has(BUMP_ARRAY()) || !keys->Has(BUMP_SCALE()) ||
+    !vtkOpenGLPolyDataMapper::SafeDownCast(
+      vtkActor::SafeDownCast(prop) ? vtkActor::SafeDownCast(prop)->GetMapper() : nullptr))
+  {
+    return false;
+  }
+  const double scale = keys->Get(BUMP_SCALE());
+  return std::isfinite(scale) && scale != 0.0 && keys->Get(BUMP_ARRAY()) &&
+    *keys->Get(BUMP_ARRAY());
+}
 
 bool vtkFXGBufferPass::GetEmissiveColor(vtkProp* prop, double color[3])
 {
@@ -317,13 +428,26 @@ void vtkFXGBufferPass::Render(const vtkRenderState* s)
   state->PopFramebufferBindings();
 }
 
-bool vtkFXGBufferPass::PreReplaceShaderValues(std::string&, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+bool vtkFXGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
+  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
   // Volumes and other non-polydata shaders have no texture tag: leave them.
   if (!Contains(fragmentShader, "//VTK::TCoord::Impl"))
   {
     return true;
+  }
+  if ((this->AllocatedChannels & ChannelBit(ShadingNormal)) && HasBump(prop) &&
+    geometryShader.empty() && Contains(vertexShader, "//VTK::Normal::Impl") &&
+    Contains(fragmentShader, "//VTK::Normal::Dec"))
+  {
+    // The bump's scalar, from the mapped vertex attribute to the fragment.
+    vtkShaderProgram::Substitute(vertexShader, "//VTK::Normal::Dec",
+      std::string("//VTK::Normal::Dec\nin float ") + BumpAttribute + ";\nout float fxBumpVSOutput;",
+      false);
+    vtkShaderProgram::Substitute(vertexShader, "//VTK::Normal::Impl",
+      std::string("//VTK::Normal::Impl\n  fxBumpVSOutput = ") + BumpAttribute + ";", false);
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Normal::Dec",
+      "//VTK::Normal::Dec\nin float fxBumpVSOutput;\nuniform float fxBumpScale;", false);
   }
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::TCoord::Impl",
     std::string(TexBeginTag) + "\n  //VTK::TCoord::Impl\n  " + TexEndTag + "\n  " + ImplTag, false);
@@ -364,6 +488,10 @@ std::string vtkFXGBufferPass::ChannelWritesGLSL(bool lit, const char* linearDept
         break;
       case Emission:
         code << (lit ? "vec4(fxEmissive, 1.0);\n" : "fxColor;\n");
+        break;
+      case ShadingNormal:
+        code << (lit ? "vec4(fxEncodeNormal(fxShadingNormal), 0.0, 1.0);\n"
+                     : "vec4(fxUnlitNormal, 0.0, 1.0);\n");
         break;
     }
   }
@@ -414,6 +542,12 @@ bool vtkFXGBufferPass::PostReplaceShaderValues(std::string&, std::string&,
             "  vec3 fxAmbient = ambientColor * fxTexture.rgb;\n"
             "  vec3 fxSpecular = specularColor * fxTexture.rgb;\n"
             "  float fxSpecularPower = clamp(specularPower, 0.0, 128.0);\n";
+    if (this->AllocatedChannels & ChannelBit(ShadingNormal))
+    {
+      impl << ShadingNormalGLSL(
+        Contains(fragmentShader, "in float fxBumpVSOutput;") &&
+        Contains(fragmentShader, "vec4 vertexVC ="));
+    }
   }
   // The mapper discards fully transparent fragments after this point; do it
   // here too, before our writes replace gl_FragData[0].
@@ -432,6 +566,12 @@ bool vtkFXGBufferPass::SetShaderParameters(
   if (program->IsUniformUsed("fxProjectionZ"))
   {
     program->SetUniform4f("fxProjectionZ", this->ProjectionZ);
+  }
+  if (program->IsUniformUsed("fxBumpScale"))
+  {
+    vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
+    const double scale = keys && keys->Has(BUMP_SCALE()) ? keys->Get(BUMP_SCALE()) : 0.0;
+    program->SetUniformf("fxBumpScale", std::isfinite(scale) ? static_cast<float>(scale) : 0.0f);
   }
   if (program->IsUniformUsed("fxEmissive"))
   {

@@ -23,6 +23,13 @@
  *                        fragments; for lit ones the prop's EMISSIVE_COLOR
  *                        (0 without). RGBA16F with HDREmission on, so that
  *                        emission above 1 (a glow's source) is kept.
+ * - ShadingNormal RG16F  view-space shading normal, encoded as Normal: the
+ *                        normal perturbed by the prop's bump (SetBump;
+ *                        Mikkelsen's surface gradient), else the Normal.
+ *                        Only vtkFXDirectionalOcclusionPass reads it, and
+ *                        only while a visible prop has a bump: the lights
+ *                        keep shading with Normal, as VTK's forward
+ *                        renderer does.
  * plus a 32-bit float hardware depth texture that is always allocated.
  *
  * Cost: one geometry pass with up to 6 render targets; memory is
@@ -48,7 +55,10 @@
 #include <string>
 #include <unordered_map>
 
+class vtkActor;
+class vtkInformationDoubleKey;
 class vtkInformationDoubleVectorKey;
+class vtkInformationStringKey;
 class vtkOpenGLFramebufferObject;
 class vtkProp;
 class vtkOpenGLRenderWindow;
@@ -75,6 +85,7 @@ public:
     Specular,
     Ambient,
     Emission,
+    ShadingNormal,
     NumberOfChannels
   };
 
@@ -85,7 +96,8 @@ public:
 
   /**
    * Name of a channel ("normal", "depth", "albedo", "specular", "ambient",
-   * "emission"), and the channel of a name (-1 if unknown).
+   * "emission", "shading-normal"), and the channel of a name (-1 if
+   * unknown).
    */
   static const char* GetChannelName(int channel);
   static int GetChannelFromName(const char* name);
@@ -147,6 +159,33 @@ public:
    * The prop's EMISSIVE_COLOR, or false when it has none (or it is black).
    */
   static bool GetEmissiveColor(vtkProp* prop, double color[3]);
+
+  ///@{
+  /**
+   * Bump from a point-data scalar array (elevation, density, ...): the
+   * shading normal of the prop's surface tilts as if the surface were
+   * displaced along its normal by BUMP_SCALE x the scalar (world units per
+   * scalar unit), by the surface gradient of Mikkelsen ("Bump Mapping
+   * Unparametrized Surfaces on the GPU", 2010) from screen-space
+   * derivatives: no tangents or texture coordinates needed. The scalar is
+   * interpolated linearly across each triangle, so the bump is constant
+   * per triangle: a mesh shows the detail its vertices sample.
+   * SetBump sets both keys on the actor and maps the array onto the
+   * vertex attribute the G-buffer reads (its mapper must be a
+   * vtkOpenGLPolyDataMapper; an array of more than one component uses its
+   * first). Written to the ShadingNormal channel; props drawn with a
+   * geometry shader (wide lines, point sprites) keep their normal.
+   * nullptr or an empty name removes the bump.
+   */
+  static vtkInformationStringKey* BUMP_ARRAY();
+  static vtkInformationDoubleKey* BUMP_SCALE();
+  static void SetBump(vtkActor* actor, const char* arrayName, double scale);
+  ///@}
+
+  /**
+   * Whether a prop has a bump (BUMP_ARRAY set, non-zero finite BUMP_SCALE).
+   */
+  static bool HasBump(vtkProp* prop);
 
   /**
    * Whether the G-buffer can capture a prop: its mappers must call VTK's

@@ -2,6 +2,7 @@
 
 #include "vtkFXBilateralBlurPass.h"
 #include "vtkFXCompositePass.h"
+#include "vtkFXDirectionalOcclusionPass.h"
 #include "vtkFXSSAOPass.h"
 #include "vtkFXEffectPass.h"
 #include "vtkFXForwardOpaquePass.h"
@@ -64,6 +65,7 @@ void AddMaterialTerms(vtkActor* actor, vtkFXSceneInfo& scene, bool& emissive)
       scene.AnySpecular = true;
     }
   }
+  scene.AnyBump = scene.AnyBump || vtkFXGBufferPass::HasBump(actor);
   double color[3];
   if (vtkFXGBufferPass::GetEmissiveColor(actor, color))
   {
@@ -173,6 +175,12 @@ vtkFXPipelinePass::vtkFXPipelinePass()
   // measured no better against the ray-traced reference (vtkfx-bench ao).
   this->OcclusionBlurPass->UpsampleOff();
   this->ApplyAmbientOcclusionPreset();
+  this->DirectionalOcclusionPass = vtkSmartPointer<vtkFXDirectionalOcclusionPass>::New();
+  this->DirectionalOcclusionBlurPass = vtkSmartPointer<vtkFXBilateralBlurPass>::New();
+  this->DirectionalOcclusionBlurPass->SetInputConnection("source", "do.occlusion");
+  this->DirectionalOcclusionPass->SetInputConnection("denoised", "do-blur.blurred");
+  this->DirectionalOcclusionBlurPass->SetNumberOfComponents(3);
+  this->DirectionalOcclusionBlurPass->UpsampleOff();
 
   this->GBufferPass->SetDelegatePass(this->OpaquePass);
   this->CompositePass->SetGBuffer(this->GBufferPass);
@@ -600,6 +608,7 @@ void vtkFXPipelinePass::SetAmbientOcclusion(bool enabled)
   this->AmbientOcclusion = enabled;
   if (enabled)
   {
+    this->SetDirectionalOcclusion(false);
     this->AddEffect("ssao", this->SSAOPass);
     this->AddEffect("ssao-blur", this->OcclusionBlurPass);
   }
@@ -609,6 +618,37 @@ void vtkFXPipelinePass::SetAmbientOcclusion(bool enabled)
     this->RemoveEffect("ssao-blur");
   }
   this->Modified();
+}
+
+void vtkFXPipelinePass::SetDirectionalOcclusion(bool enabled)
+{
+  if (enabled == this->DirectionalOcclusion)
+  {
+    return;
+  }
+  this->DirectionalOcclusion = enabled;
+  if (enabled)
+  {
+    this->SetAmbientOcclusion(false);
+    this->AddEffect("do", this->DirectionalOcclusionPass);
+    this->AddEffect("do-blur", this->DirectionalOcclusionBlurPass);
+  }
+  else
+  {
+    this->RemoveEffect("do");
+    this->RemoveEffect("do-blur");
+  }
+  this->Modified();
+}
+
+vtkFXDirectionalOcclusionPass* vtkFXPipelinePass::GetDirectionalOcclusionPass()
+{
+  return this->DirectionalOcclusionPass;
+}
+
+vtkFXBilateralBlurPass* vtkFXPipelinePass::GetDirectionalOcclusionBlurPass()
+{
+  return this->DirectionalOcclusionBlurPass;
 }
 
 void vtkFXPipelinePass::SetAmbientOcclusionQuality(int quality)
@@ -636,6 +676,7 @@ void vtkFXPipelinePass::SetAmbientOcclusionFalloff(int falloff)
     return;
   }
   this->SSAOPass->SetFalloff(falloff);
+  this->DirectionalOcclusionPass->SetFalloff(falloff);
   this->ApplyAmbientOcclusionPreset();
   this->Modified();
 }
@@ -862,6 +903,7 @@ void vtkFXPipelinePass::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DebugChannel: " << this->DebugChannel << "\n";
   os << indent << "AmbientOcclusion: " << this->AmbientOcclusion << "\n";
+  os << indent << "DirectionalOcclusion: " << this->DirectionalOcclusion << "\n";
   os << indent << "AmbientOcclusionQuality: " << this->AmbientOcclusionQuality << "\n";
   os << indent << "Effects: " << this->Effects.size() << "\n";
   for (const EffectSlot& slot : this->Effects)

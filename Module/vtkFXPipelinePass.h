@@ -55,6 +55,7 @@
 
 class vtkCameraPass;
 class vtkFXBilateralBlurPass;
+class vtkFXDirectionalOcclusionPass;
 class vtkFXSSAOPass;
 class vtkFXCompositePass;
 class vtkFXEffectPass;
@@ -126,7 +127,7 @@ public:
 
   ///@{
   /**
-   * Ambient occlusion: adds a vtkFXSSAOPass ("ssao") and a
+   * Ambient occlusion (turns directional occlusion off): adds a vtkFXSSAOPass ("ssao") and a
    * vtkFXBilateralBlurPass ("ssao-blur") to the effects, connected as
    * ssao-blur.source <- ssao.occlusion and ssao.denoised <-
    * ssao-blur.blurred (the SSAO's composite code reads the blurred result
@@ -138,6 +139,23 @@ public:
   vtkBooleanMacro(AmbientOcclusion, bool);
   vtkFXSSAOPass* GetSSAOPass();
   vtkFXBilateralBlurPass* GetOcclusionBlurPass();
+  ///@}
+
+  ///@{
+  /**
+   * Directional occlusion (normal-mapped screen-space occlusion, seed
+   * 000): adds a vtkFXDirectionalOcclusionPass ("do") and a
+   * vtkFXBilateralBlurPass ("do-blur", Gaussian of radius 4 at half
+   * resolution: the seed's 17-texel blur), connected as ssao/ssao-blur
+   * are. It replaces ambient occlusion: the pipeline runs one of the two,
+   * so turning either on turns the other off. Off by default. The falloff
+   * (SetAmbientOcclusionFalloff) applies to both.
+   */
+  virtual void SetDirectionalOcclusion(bool enabled);
+  vtkGetMacro(DirectionalOcclusion, bool);
+  vtkBooleanMacro(DirectionalOcclusion, bool);
+  vtkFXDirectionalOcclusionPass* GetDirectionalOcclusionPass();
+  vtkFXBilateralBlurPass* GetDirectionalOcclusionBlurPass();
   ///@}
 
   enum AmbientOcclusionQualityLevel
@@ -237,6 +255,9 @@ protected:
 
   int DebugChannel = -1;
   bool AmbientOcclusion = false;
+  bool DirectionalOcclusion = false;
+  vtkSmartPointer<vtkFXDirectionalOcclusionPass> DirectionalOcclusionPass;
+  vtkSmartPointer<vtkFXBilateralBlurPass> DirectionalOcclusionBlurPass;
   int AmbientOcclusionQuality = Medium;
   void ApplyAmbientOcclusionPreset();
   std::vector<EffectSlot> Effects;

@@ -2,6 +2,7 @@
 
 #include "vtkFXGBufferPass.h"
 #include "vtkFXNormalCoding.h"
+#include "vtkFXOcclusionBasis.h"
 #include "vtkFXViewPosition.h"
 #include "vtkFXRenderUtilities.h"
 #include "vtkFXSSAOFS.h"
@@ -44,6 +45,28 @@ double RadicalInverse(unsigned int i, unsigned int base)
   }
   return result;
 }
+
+// Ordered-dither (Bayer) rank of each entry of a size x size tile, size a
+// power of two, row by row: neighbours differ most. Built by the recursion
+// M(2s) = [4M, 4M + 2; 4M + 3, 4M + 1].
+std::vector<int> BayerOrder(int size)
+{
+  std::vector<int> order(1, 0);
+  for (int s = 1; s < size; s *= 2)
+  {
+    std::vector<int> next(4 * s * s);
+    static const int quadrant[2][2] = { { 0, 2 }, { 3, 1 } };
+    for (int y = 0; y < 2 * s; ++y)
+    {
+      for (int x = 0; x < 2 * s; ++x)
+      {
+        next[y * 2 * s + x] = 4 * order[(y % s) * s + (x % s)] + quadrant[y / s][x / s];
+      }
+    }
+    order.swap(next);
+  }
+  return order;
+}
 }
 
 vtkFXSSAOPass::vtkFXSSAOPass()
@@ -66,9 +89,9 @@ vtkFXEffectPass::Output vtkFXSSAOPass::GetOutput(const char* name)
   {
     output.Texture = this->Occlusion;
     output.Step = this->HalfResolution ? 2 : 1;
-    output.Components = 1;
-    output.Format = vtkFXRenderUtilities::RG32F;
-    output.DepthComponent = 1;
+    output.Components = this->Channels;
+    output.Format = this->GetOcclusionFormat();
+    output.DepthComponent = this->Channels == 1 ? 1 : -1;
   }
   return output;
 }
@@ -131,6 +154,28 @@ void vtkFXSSAOPass::UnbindCompositeResources()
   }
 }
 
+int vtkFXSSAOPass::GetEffectiveNumberOfSamples() const
+{
+  if (this->Channels != 3)
+  {
+    return this->NumberOfSamples;
+  }
+  // A multiple of 3 (see SetHemisphereKernel), at most 63.
+  return std::min(63, 3 * ((this->NumberOfSamples + 2) / 3));
+}
+
+int vtkFXSSAOPass::GetEffectiveMethod() const
+{
+  return this->Channels == 3 ? Hemisphere : this->Method;
+}
+
+int vtkFXSSAOPass::GetOcclusionFormat() const
+{
+  // One value and its guide depth (32-bit: a 16-bit float overflows at
+  // 65504 world units); three values in [0, 1] (16 bits are plenty).
+  return this->Channels == 3 ? vtkFXRenderUtilities::RGBA16F : vtkFXRenderUtilities::RG32F;
+}
+
 double vtkFXSSAOPass::ComputeRadius(vtkRenderer* ren) const
 {
   if (this->Radius > 0.0)
@@ -154,13 +199,18 @@ void vtkFXSSAOPass::SetHemisphereKernel(vtkShaderProgram* program) const
   // Vizerie's (2009) distribution: cosine-weighted directions (z = sqrt(r2))
   // and lengths u^3 (CubeRoot falloff), or 1 (Binary: every sample at R). Azimuths are stratified over [0, 2 pi); r2 and u follow
   // radical-inverse sequences (bases 2 and 3).
-  const int n = this->NumberOfSamples;
+  // With three channels, sample i + n/3 is sample i turned by 120 degrees
+  // (the stratified azimuths already are): the kernel is 3-fold symmetric
+  // around the normal, so its weights against the three basis directions
+  // balance exactly under any rotation.
+  const int n = this->GetEffectiveNumberOfSamples();
+  const int distinct = this->Channels == 3 ? n / 3 : n;
   std::vector<float> kernel(4 * n);
   for (int i = 0; i < n; ++i)
   {
     const double r1 = (i + 0.5) / n;
-    const double r2 = RadicalInverse(i + 1, 2);
-    const double u = RadicalInverse(i + 1, 3);
+    const double r2 = RadicalInverse(i % distinct + 1, 2);
+    const double u = RadicalInverse(i % distinct + 1, 3);
     const double phi = 2.0 * vtkMath::Pi() * r1;
     kernel[4 * i + 0] = static_cast<float>(std::cos(phi) * std::sqrt(1.0 - r2));
     kernel[4 * i + 1] = static_cast<float>(std::sin(phi) * std::sqrt(1.0 - r2));
@@ -172,31 +222,33 @@ void vtkFXSSAOPass::SetHemisphereKernel(vtkShaderProgram* program) const
 
 void vtkFXSSAOPass::SetKernelUniforms(vtkShaderProgram* program) const
 {
-  const int n = this->NumberOfSamples;
-  if (this->Method == Hemisphere)
+  const int n = this->GetEffectiveNumberOfSamples();
+  const bool hemisphere = this->GetEffectiveMethod() == Hemisphere;
+  if (hemisphere)
   {
     this->SetHemisphereKernel(program);
   }
 
-  // 4x4 tile of rotations within one azimuth stratum (2 pi / n), in the
-  // order of a 4x4 ordered-dither matrix so that neighbours differ most.
-  static const int order[16] = { 0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5 };
-  float tile[16][4];
-  for (int i = 0; i < 16; ++i)
+  // Tile of rotations within one azimuth stratum (2 pi / n), in the order
+  // of an ordered-dither matrix so that neighbours differ most.
+  const int entries = this->TileSize * this->TileSize;
+  const std::vector<int> order = BayerOrder(this->TileSize);
+  std::vector<float> tile(4 * entries);
+  for (int i = 0; i < entries; ++i)
   {
     // The entry's place within the stratum, in [0, 1). The hemisphere's
     // rotation covers a stratum of the whole turn; the horizon method's
     // slices cover half a turn (each looks both ways) and take a step
     // offset from the low bits of the rank (see fxHorizonOcclusion).
-    const double jitter = (order[i] + 0.5) / 16.0;
-    const double angle = this->Method == Hemisphere ? 2.0 * vtkMath::Pi() / n * jitter
-                                                    : vtkMath::Pi() * jitter / HorizonSlices;
-    tile[i][0] = static_cast<float>(std::cos(angle));
-    tile[i][1] = static_cast<float>(std::sin(angle));
-    tile[i][2] = static_cast<float>(jitter * 4.0 - std::floor(jitter * 4.0));
-    tile[i][3] = 0.0f;
+    const double jitter = (order[i] + 0.5) / entries;
+    const double angle = hemisphere ? 2.0 * vtkMath::Pi() / n * jitter
+                                    : vtkMath::Pi() * jitter / HorizonSlices;
+    tile[4 * i + 0] = static_cast<float>(std::cos(angle));
+    tile[4 * i + 1] = static_cast<float>(std::sin(angle));
+    tile[4 * i + 2] = static_cast<float>(jitter * 4.0 - std::floor(jitter * 4.0));
+    tile[4 * i + 3] = 0.0f;
   }
-  program->SetUniform4fv("fxTile", 16, tile);
+  program->SetUniform4fv("fxTile", entries, reinterpret_cast<const float(*)[4]>(tile.data()));
 }
 
 void vtkFXSSAOPass::Render(const vtkRenderState* s)
@@ -215,20 +267,24 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   const int fullHeight = static_cast<int>(depth->GetHeight());
   const int step = this->HalfResolution ? 2 : 1;
   vtkFXRenderUtilities::EnsureTexture(this->Occlusion, window, (fullWidth + step - 1) / step,
-    (fullHeight + step - 1) / step, vtkFXRenderUtilities::RG32F);
+    (fullHeight + step - 1) / step, this->GetOcclusionFormat());
   this->Occlusion->SetMinificationFilter(vtkTextureObject::Linear);
   this->Occlusion->SetMagnificationFilter(vtkTextureObject::Linear);
 
   std::ostringstream defines;
   const int slices = HorizonSlices;
-  defines << "//VTK::System::Dec\n#define FX_SAMPLES " << this->NumberOfSamples
-          << "\n#define FX_METHOD " << this->Method << "\n#define FX_FALLOFF " << this->Falloff
+  defines << "//VTK::System::Dec\n#define FX_SAMPLES " << this->GetEffectiveNumberOfSamples()
+          << "\n#define FX_METHOD " << this->GetEffectiveMethod()
+          << "\n#define FX_CHANNELS " << this->Channels << "\n#define FX_TILE " << this->TileSize
+          << "\n#define FX_FALLOFF " << this->Falloff
           << "\n#define FX_SLICES " << slices
           << "\n#define FX_STEPS " << std::max(1, this->NumberOfSamples / (2 * slices)) << "\n";
   std::string fs = vtkFXSSAOFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str(), false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXViewPosition::Dec", vtkFXViewPosition, false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXOcclusionBasis::Dec",
+    this->Channels == 3 ? vtkFXOcclusionBasis : "", false);
 
   vtkFXRenderUtilities::RenderTargetScope target(window, this->FrameBuffer, this->Occlusion);
   vtkShaderProgram* program =

@@ -158,6 +158,11 @@ protected:
   ~vtkFXSSAOPass() override;
 
   double ComputeRadius(vtkRenderer* ren) const;
+  // What the subclass vtkFXDirectionalOcclusionPass changes: three channels
+  // (hemisphere only, samples a multiple of 3), an 8x8 tile.
+  int GetEffectiveNumberOfSamples() const;
+  int GetEffectiveMethod() const;
+  int GetOcclusionFormat() const;
   void SetKernelUniforms(vtkShaderProgram* program) const;
   void SetHemisphereKernel(vtkShaderProgram* program) const;
 
@@ -169,6 +174,8 @@ protected:
   double Bias = 0.02;
   bool HalfResolution = true;
   double EffectiveRadius = 0.0;
+  int Channels = 1; // values the estimator writes per texel: 1 or 3
+  int TileSize = 4; // side of the tile of per-pixel rotations: 4 or 8
 
   vtkSmartPointer<vtkTextureObject> Occlusion;
   vtkTextureObject* BoundInComposite = nullptr;

@@ -1,7 +1,8 @@
 //VTK::System::Dec
 // vtkFXSSAOFS: screen-space ambient occlusion from the vtkFX G-buffer.
 // FX_METHOD 0: hemisphere sampling (below); 1: horizon-based (GTAO, further
-// down).
+// down). FX_CHANNELS 3 (vtkFXDirectionalOcclusionPass, hemisphere only):
+// the occlusion of each third of the hemisphere (see fxHemisphereOcclusion).
 //
 // Normal-oriented hemisphere sampling (Crytek's SSAO with the normal-aligned
 // kernel of later practice): FX_SAMPLES points around the receiver p,
@@ -41,10 +42,11 @@ uniform mat4 fxProjection;    // view -> clip coordinates
 #if FX_METHOD == 0
 uniform vec4 fxKernel[FX_SAMPLES];
 #endif
-// Per entry of the 4x4 tile: the kernel's rotation (hemisphere) or the
+// Per entry of the FX_TILE x FX_TILE tile (4: Crytek's; 8: the repeating
+// pattern of Vizerie's demo): the kernel's rotation (hemisphere) or the
 // first slice's direction (horizon) as (cos, sin), and the horizon steps'
 // offset.
-uniform vec4 fxTile[16];
+uniform vec4 fxTile[FX_TILE * FX_TILE];
 uniform float fxRadius;       // world units
 uniform float fxBias;         // world units
 const float fxPi = 3.14159265358979;
@@ -55,6 +57,8 @@ const float fxPi = 3.14159265358979;
 
 //VTK::FXViewPosition::Dec
 
+//VTK::FXOcclusionBasis::Dec
+
 // Ray through the centre of G-buffer texel `texel`: origin and direction,
 // so that the surface there is at origin + depth * direction.
 void fxTexelRay(ivec2 texel, out vec3 origin, out vec3 direction)
@@ -63,18 +67,39 @@ void fxTexelRay(ivec2 texel, out vec3 origin, out vec3 direction)
 }
 
 #if FX_METHOD == 0
-// Hemisphere sampling (see the top of this file).
-float fxHemisphereOcclusion(vec3 p, vec3 n, float depth, vec2 rotation)
+#if FX_CHANNELS == 3
+#define fxOcclusionValue vec3
+#else
+#define fxOcclusionValue float
+#endif
+// Hemisphere sampling (see the top of this file). With FX_CHANNELS 3 each
+// sample's occlusion goes to the three channels by its direction's weights
+// against the basis of vtkFXOcclusionBasis.glsl (seed 000: "the occlusion
+// over each third of the hemisphere"), and a channel's value is
+// 1 - (3 / FX_SAMPLES) x its weighted occlusion: the cosine-weighted
+// visibility under the lobe 3 w_k(direction), whose mean over the three
+// channels is exactly the one-channel estimate from the same samples,
+// because the weights of every direction sum to 1. The kernel is 3-fold
+// symmetric around the normal (vtkFXDirectionalOcclusionPass), so an open
+// surface reads exactly 1 in each channel under any rotation.
+fxOcclusionValue fxHemisphereOcclusion(vec3 p, vec3 n, float depth, vec2 rotation)
 {
+#if FX_CHANNELS == 3
+  // The frame the basis is defined in, continuous over the visible normals.
+  vec3 t0, b0;
+  fxOcclusionFrame(n, t0, b0);
+  vec3 occlusion = vec3(0.0);
+#else
   vec3 helper = abs(n.z) < 0.999 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
   vec3 t0 = normalize(cross(helper, n));
   vec3 b0 = cross(n, t0);
+  float occlusion = 0.0;
+#endif
   vec3 t = rotation.x * t0 + rotation.y * b0;
   vec3 b = cross(n, t);
 
   // Start just above the surface so that it does not occlude itself.
   vec3 origin = p + fxBias * n;
-  float occlusion = 0.0;
   for (int i = 0; i < FX_SAMPLES; ++i)
   {
     vec4 k = fxKernel[i];
@@ -112,10 +137,21 @@ float fxHemisphereOcclusion(vec3 p, vec3 n, float depth, vec2 rotation)
       // Range check: a surface far in front of the receiver is not between
       // the receiver and the sample.
       float gap = depth - sceneDepth;
-      occlusion += gap < fxRadius ? 1.0 : max(0.0, 2.0 - gap / fxRadius);
+      float blocked = gap < fxRadius ? 1.0 : max(0.0, 2.0 - gap / fxRadius);
+#if FX_CHANNELS == 3
+      // The sample's direction in the fixed frame (t0, b0, n).
+      vec3 d = vec3(rotation.x * k.x - rotation.y * k.y, rotation.y * k.x + rotation.x * k.y, k.z);
+      occlusion += blocked * fxBasisWeights(d);
+#else
+      occlusion += blocked;
+#endif
     }
   }
+#if FX_CHANNELS == 3
+  return clamp(1.0 - occlusion * (3.0 / float(FX_SAMPLES)), 0.0, 1.0);
+#else
   return clamp(1.0 - occlusion / float(FX_SAMPLES), 0.0, 1.0);
+#endif
 }
 #else
 // acos to within about 0.007 rad (one linear term times sqrt(1 - |x|), as
@@ -266,14 +302,23 @@ void main()
   vec2 code = texelFetch(fxNormal, texel, 0).rg;
   if (!(depth > 0.0) || fxIsUnlit(code))
   {
-    gl_FragData[0] = vec4(1.0, depth, 0.0, 1.0); // no surface, or one VTK does not light
+    // No surface, or one VTK does not light: open.
+#if FX_CHANNELS == 3
+    gl_FragData[0] = vec4(1.0);
+#else
+    gl_FragData[0] = vec4(1.0, depth, 0.0, 1.0);
+#endif
     return;
   }
   vec2 ndc = (vec2(texel) + 0.5) / vec2(fxGBufferSize) * 2.0 - 1.0;
   vec3 p = fxViewPosition(ndc, depth);
   vec3 n = fxDecodeNormal(code);
 
-  int tileEntry = (pixel.x & 3) + 4 * (pixel.y & 3);
+  int tileEntry = (pixel.x & (FX_TILE - 1)) + FX_TILE * (pixel.y & (FX_TILE - 1));
+#if FX_CHANNELS == 3
+  // The blur builds its own guide for three values.
+  gl_FragData[0] = vec4(fxHemisphereOcclusion(p, n, depth, fxTile[tileEntry].xy), 1.0);
+#else
 #if FX_METHOD == 0
   float ao = fxHemisphereOcclusion(p, n, depth, fxTile[tileEntry].xy);
 #else
@@ -281,4 +326,5 @@ void main()
 #endif
   // The depth rides along as the blur's guide.
   gl_FragData[0] = vec4(ao, depth, 0.0, 1.0);
+#endif
 }

@@ -1,0 +1,84 @@
+/**
+ * @class   vtkFXDirectionalOcclusionPass
+ * @brief   Screen-space occlusion per third of the hemisphere, resolved with the shading normal.
+ *
+ * Vizerie's "normal mapped screen space diffuse occlusion" (2009, seed 000):
+ * instead of one occlusion value per pixel it estimates three, one for
+ * each third of the hemisphere around the geometric normal (the three
+ * directions of Half-Life 2's radiosity normal-mapping basis,
+ * vtkFXOcclusionBasis.glsl), blurs each, and in the composite weights them
+ * by the shading normal's squared clamped cosines with the basis. A bump
+ * (vtkFXGBufferPass::SetBump) then shows in the ambient term: a facet
+ * turned towards an occluder reads darker than one turned away, detail a
+ * single occlusion value per pixel cannot hold.
+ *
+ * Reads the G-buffer's normal (the basis), linear depth and, while a
+ * visible prop has a bump, its shading-normal channel (requested only
+ * then). Writes the output "occlusion" (RGBA16F: RGB = the three
+ * channels' visibility, 1 = open) at full or half resolution. In the
+ * composite it scales the ambient visibility by the resolved value, read
+ * from its optional input "denoised" (vtkFXBilateralBlurPass, which blurs
+ * 3 values with depth and normal guides) when that ran.
+ *
+ * The estimator is vtkFXSSAOPass's hemisphere sampling (the seed's
+ * cosine-weighted rays; lengths u^3 R under the CubeRoot falloff, R under
+ * Binary) with each sample's occlusion split over the channels by its
+ * direction's weights against the basis. The kernel is 3-fold symmetric
+ * around the normal and each channel is scaled by 3 / samples, so the mean
+ * of the three channels is exactly vtkFXSSAOPass's one-channel estimate
+ * from the same samples; and with no bump the shading normal is the
+ * geometric one, whose weights are 1/3 each: the result is that mean, plain
+ * ambient occlusion. NumberOfSamples is rounded up to a multiple of 3 (at
+ * most 63); Method is ignored (always Hemisphere). The per-pixel rotation
+ * repeats over the seed's 8x8 pattern (vtkFXSSAOPass: 4x4).
+ *
+ * Cost: vtkFXSSAOPass's hemisphere pass (the same fetches; three weights
+ * per occluded sample), a blur of three values (a guide pass and two
+ * passes of RGBA16F taps), one texture read and the shading-normal read
+ * in the composite; the shading-normal channel (4 bytes per pixel) only
+ * while a visible prop has a bump.
+ */
+#ifndef vtkFXDirectionalOcclusionPass_h
+#define vtkFXDirectionalOcclusionPass_h
+
+#include "vtkFXModule.h"
+#include "vtkFXSSAOPass.h"
+
+class VTKFX_EXPORT vtkFXDirectionalOcclusionPass : public vtkFXSSAOPass
+{
+public:
+  static vtkFXDirectionalOcclusionPass* New();
+  vtkTypeMacro(vtkFXDirectionalOcclusionPass, vtkFXSSAOPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Whether the shading-normal channel is read: some opaque prop of the
+   * scene has a bump (from HasWork's scene), or ReadShadingNormals was set
+   * for a hand-built chain. Default off.
+   */
+  vtkSetMacro(ReadShadingNormals, bool);
+  vtkGetMacro(ReadShadingNormals, bool);
+  vtkBooleanMacro(ReadShadingNormals, bool);
+
+  bool HasWork(const vtkFXSceneInfo& scene) override;
+  unsigned int GetRequiredChannels() override;
+  std::string GetCompositeCode(int hook) override;
+  void BindCompositeResources(vtkShaderProgram* program, const std::string& prefix) override;
+  void UnbindCompositeResources() override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+protected:
+  vtkFXDirectionalOcclusionPass();
+  ~vtkFXDirectionalOcclusionPass() override;
+
+  vtkTextureObject* ShadingNormalTexture() const;
+
+  bool ReadShadingNormals = false;
+  vtkTextureObject* ShadingNormalBound = nullptr;
+
+private:
+  vtkFXDirectionalOcclusionPass(const vtkFXDirectionalOcclusionPass&) = delete;
+  void operator=(const vtkFXDirectionalOcclusionPass&) = delete;
+};
+
+#endif
