@@ -54,6 +54,11 @@ std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
         (shading ? "uniform sampler2D @shading;\n" : "") + vtkFXOcclusionBasis;
     case Ambient:
     {
+      if (this->ShowChannels)
+      {
+        return "    ambientVisibility *= clamp(texture(@occlusion, texCoord * @scale + @offset).rgb, "
+               "0.0, 1.0);";
+      }
       // The seed's resolve: the channels weighted by the shading normal's
       // squared clamped cosines with the basis of the geometric normal n.
       // Pixels whose shading normal is missing (unlit) use n: the mean.
@@ -107,5 +112,6 @@ void vtkFXDirectionalOcclusionPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ReadShadingNormals: " << this->ReadShadingNormals << "\n";
+  os << indent << "ShowChannels: " << this->ShowChannels << "\n";
   os << indent << "Samples used: " << this->GetEffectiveNumberOfSamples() << "\n";
 }

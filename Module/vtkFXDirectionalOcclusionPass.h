@@ -60,6 +60,16 @@ public:
   vtkGetMacro(ReadShadingNormals, bool);
   vtkBooleanMacro(ReadShadingNormals, bool);
 
+  /**
+   * For inspection: the composite's ambient visibility becomes the three
+   * channels as red, green and blue instead of their resolve (with
+   * vtkFXCompositePass::DebugOcclusion, an image of the channels). Default
+   * off.
+   */
+  vtkSetMacro(ShowChannels, bool);
+  vtkGetMacro(ShowChannels, bool);
+  vtkBooleanMacro(ShowChannels, bool);
+
   bool HasWork(const vtkFXSceneInfo& scene) override;
   unsigned int GetRequiredChannels() override;
   std::string GetCompositeCode(int hook) override;
@@ -74,6 +84,7 @@ protected:
   vtkTextureObject* ShadingNormalTexture() const;
 
   bool ReadShadingNormals = false;
+  bool ShowChannels = false;
   vtkTextureObject* ShadingNormalBound = nullptr;
 
 private:

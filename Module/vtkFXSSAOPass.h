@@ -140,6 +140,12 @@ public:
   vtkBooleanMacro(HalfResolution, bool);
 
   /**
+   * The samples the estimator takes: NumberOfSamples, rounded up to a
+   * multiple of 3 (at most 63) by vtkFXDirectionalOcclusionPass.
+   */
+  int GetEffectiveNumberOfSamples() const;
+
+  /**
    * The radius used in the last Render(), in world units.
    */
   vtkGetMacro(EffectiveRadius, double);
@@ -159,8 +165,7 @@ protected:
 
   double ComputeRadius(vtkRenderer* ren) const;
   // What the subclass vtkFXDirectionalOcclusionPass changes: three channels
-  // (hemisphere only, samples a multiple of 3), an 8x8 tile.
-  int GetEffectiveNumberOfSamples() const;
+  // (hemisphere only), an 8x8 tile.
   int GetEffectiveMethod() const;
   int GetOcclusionFormat() const;
   void SetKernelUniforms(vtkShaderProgram* program) const;

@@ -12,6 +12,7 @@
 #include "vtkFXAVSMPass.h"
 #include "vtkFXBilateralBlurPass.h"
 #include "vtkFXBloomPass.h"
+#include "vtkFXDirectionalOcclusionPass.h"
 #include "vtkFXSSAOPass.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
@@ -43,6 +44,14 @@ int TestBaselineImage(int argc, char* argv[])
     }
     pipeline->GetOcclusionBlurPass()->SetEnabled(view.rfind("ssao-raw", 0) != 0);
     pipeline->GetCompositePass()->SetDebugOcclusion(view.rfind("ssao-lit", 0) != 0);
+  }
+  else if (view.rfind("do-", 0) == 0)
+  {
+    // do-channels|resolved|lit: directional occlusion's three channels
+    // (as RGB), their resolve with the shading normals, the lit image.
+    pipeline->DirectionalOcclusionOn();
+    pipeline->GetDirectionalOcclusionPass()->SetShowChannels(view == "do-channels");
+    pipeline->GetCompositePass()->SetDebugOcclusion(view != "do-lit");
   }
   else if (view == "toon" || view == "lines")
   {

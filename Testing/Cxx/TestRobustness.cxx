@@ -111,7 +111,10 @@ int TestRobustness(int, char*[])
   int covered = 0;
   for (int c = 0; c < vtkFXGBufferPass::NumberOfChannels; ++c)
   {
-    const int components = c == vtkFXGBufferPass::Normal ? 2 : c == vtkFXGBufferPass::LinearDepth ? 1 : 4;
+    const int components =
+      (c == vtkFXGBufferPass::Normal || c == vtkFXGBufferPass::ShadingNormal) ? 2
+      : c == vtkFXGBufferPass::LinearDepth                                    ? 1
+                                                                              : 4;
     const auto values = vtkFXTest::Download(gbuffer->GetChannelTexture(c), components);
     FX_CHECK(!values.empty(), "channel " << vtkFXGBufferPass::GetChannelName(c) << " read back");
     for (size_t i = 0; i < values.size(); ++i)

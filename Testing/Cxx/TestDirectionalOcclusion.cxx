@@ -1,0 +1,491 @@
+// TestDirectionalOcclusion: vtkFXDirectionalOcclusionPass and the G-buffer's
+// shading normals (vtkFXGBufferPass::SetBump), on the inner crease of a
+// floor (y = 0, z > 0) and a wall (z = 0), visibility within R = 0.5:
+// 1. each channel, blurred, against its exact value: the visibility under
+//    the lobe 3 w_k(direction) x cosine, integrated over the hemisphere by
+//    quadrature for a floor point at distance h from the wall (the basis in
+//    world coordinates from the same frame as the shader); the mean of the
+//    channels against the crease's closed form, as TestSSAO checks plain
+//    AO; the channel facing the wall darker than the one facing away;
+// 2. with no bump the composite's ambient visibility is the channels' mean
+//    (the resolve with weights 1/3), within 8-bit rounding;
+// 3. a floor bumped by a ramp of slope s (height s z): its shading normal
+//    is the analytic (0, 1, -s) / |.|, the geometric one stays +y, and the
+//    composite shows sum_k c_k(n_s) channel_k exactly; turned towards the
+//    wall it reads darker than the mean, away from it lighter;
+// 4. the shading-normal channel is allocated only while directional
+//    occlusion runs and a visible prop has a bump; a prop without a bump
+//    beside one with it keeps its normal bit for bit;
+// 5. the bumped crease under scale 1e-6 / 1e6, translated by 1e6, parallel
+//    projection and near/far 1e-6: channels finite in [0, 1], shading
+//    normals finite and of unit length.
+#include "vtkFXDirectionalOcclusionPass.h"
+#include "vtkFXCompositePass.h"
+#include "vtkFXOcclusionTestUtilities.h"
+
+#include "vtkFloatArray.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <array>
+
+namespace
+{
+using namespace vtkFXOcclusionTest;
+const double Radius = 0.5;
+
+// vtkFXOcclusionBasis.glsl: the basis in tangent coordinates, and the
+// frame of a view-space normal.
+const double BasisTangent[3][3] = { { 0.816496581, 0.0, 0.577350269 },
+  { -0.408248290, 0.707106781, 0.577350269 }, { -0.408248290, -0.707106781, 0.577350269 } };
+
+void Frame(const double n[3], double t[3], double b[3])
+{
+  const double k = 1.0 / std::max(1.0 + n[2], 1e-4);
+  const double xy = -n[0] * n[1] * k;
+  t[0] = 1.0 - n[0] * n[0] * k;
+  t[1] = xy;
+  t[2] = -n[0];
+  b[0] = xy;
+  b[1] = 1.0 - n[1] * n[1] * k;
+  b[2] = -n[1];
+}
+
+// The basis of a world-space normal, in world coordinates (the shader
+// builds it in view space).
+void WorldBasis(vtkRenderer* ren, const double normal[3], double basis[3][3])
+{
+  vtkMatrix4x4* view = ren->GetActiveCamera()->GetViewTransformMatrix();
+  double n[3] = { 0, 0, 0 };
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      n[r] += view->GetElement(r, c) * normal[c];
+    }
+  }
+  double t[3], b[3];
+  Frame(n, t, b);
+  for (int k = 0; k < 3; ++k)
+  {
+    double v[3];
+    for (int r = 0; r < 3; ++r)
+    {
+      v[r] = BasisTangent[k][0] * t[r] + BasisTangent[k][1] * b[r] + BasisTangent[k][2] * n[r];
+    }
+    for (int c = 0; c < 3; ++c) // rotation inverse: the transpose
+    {
+      basis[k][c] = view->GetElement(0, c) * v[0] + view->GetElement(1, c) * v[1] +
+        view->GetElement(2, c) * v[2];
+    }
+  }
+}
+
+void Weights(const double d[3], const double basis[3][3], double w[3])
+{
+  double sum = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double c = std::max(0.0, vtkMath::Dot(d, basis[k]));
+    w[k] = c * c;
+    sum += w[k];
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    w[k] = sum > 1e-12 ? w[k] / sum : 1.0 / 3.0;
+  }
+}
+
+// Exact channels at a floor point h in front of the wall: 3 x the mean of
+// w_k x visibility over cosine-distributed directions (a 400 x 400
+// midpoint grid; a ray is blocked when it reaches the wall before R).
+std::array<double, 3> ExactChannels(double h, const double basis[3][3])
+{
+  const int n = 400;
+  std::array<double, 3> sum = { 0, 0, 0 };
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      const double u1 = (i + 0.5) / n, u2 = (j + 0.5) / n;
+      const double s = std::sqrt(1.0 - u2), phi = 2.0 * vtkMath::Pi() * u1;
+      const double d[3] = { s * std::cos(phi), std::sqrt(u2), s * std::sin(phi) };
+      const bool blocked = d[2] < 0.0 && h < -d[2] * Radius;
+      if (blocked)
+      {
+        continue;
+      }
+      double w[3];
+      Weights(d, basis, w);
+      for (int k = 0; k < 3; ++k)
+      {
+        sum[k] += w[k];
+      }
+    }
+  }
+  for (double& v : sum)
+  {
+    v *= 3.0 / (static_cast<double>(n) * n);
+  }
+  return sum;
+}
+
+// The composite's output, red channel, one byte per pixel (rows bottom-up).
+std::vector<unsigned char> Grab(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  auto* bytes = vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+  std::vector<unsigned char> red(static_cast<size_t>(Width) * Height);
+  for (size_t i = 0; i < red.size(); ++i)
+  {
+    red[i] = bytes->GetValue(3 * i);
+  }
+  return red;
+}
+
+// The floor (with a ramp height s z when s != 0, as a bump) and the wall;
+// the camera of TestSSAO's crease.
+vtkActor* BuildCrease(Setup& s, double slope)
+{
+  const double fo[3] = { -10, 0, 0 }, f1[3] = { 10, 0, 0 }, f2[3] = { -10, 0, 10 };
+  const double wo[3] = { -10, 0, 0 }, w1[3] = { 10, 0, 0 }, w2[3] = { -10, 10, 0 };
+  auto floor = Plane(fo, f1, f2);
+  if (slope != 0.0)
+  {
+    auto* mapper = vtkPolyDataMapper::SafeDownCast(floor->GetMapper());
+    mapper->Update();
+    vtkNew<vtkPolyData> data;
+    data->DeepCopy(mapper->GetInput());
+    vtkNew<vtkFloatArray> height;
+    height->SetName("height");
+    for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+    {
+      height->InsertNextValue(static_cast<float>(slope * data->GetPoint(i)[2]));
+    }
+    data->GetPointData()->AddArray(height);
+    mapper->SetInputData(data);
+    vtkFXGBufferPass::SetBump(floor, "height", 1.0);
+  }
+  s.Renderer->AddActor(floor);
+  s.Renderer->AddActor(Plane(wo, w1, w2));
+  vtkCamera* camera = s.Renderer->GetActiveCamera();
+  camera->SetFocalPoint(0, 0.5, 0.5);
+  camera->SetPosition(0.5, 3.0, 4.0);
+  camera->SetViewUp(0, 1, 0);
+  s.Renderer->ResetCameraClippingRange();
+  return floor;
+}
+
+Setup MakeDOSetup(vtkRenderWindow* window, int samples)
+{
+  Setup s = MakeSetup(window);
+  s.Pipeline->DirectionalOcclusionOn(); // (turns the AO off)
+  vtkFXDirectionalOcclusionPass* dop = s.Pipeline->GetDirectionalOcclusionPass();
+  dop->SetRadius(Radius);
+  dop->SetNumberOfSamples(samples);
+  dop->SetHalfResolution(false);
+  s.Pipeline->GetCompositePass()->DebugOcclusionOn();
+  return s;
+}
+
+// Every value of a float texture finite and within [0, 1].
+int CheckAllInRange(vtkTextureObject* texture, int components, const char* what)
+{
+  const auto values = vtkFXTest::Download(texture, components);
+  FX_CHECK(!values.empty(), what << ": read back");
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    FX_CHECK(std::isfinite(values[i]) && values[i] >= 0.0f && values[i] <= 1.0f,
+      what << ": " << values[i] << " at texel " << i / components);
+  }
+  return EXIT_SUCCESS;
+}
+
+bool OnFloorNearWall(const std::array<double, 4>& p)
+{
+  return p[3] > 0.0 && std::fabs(p[1]) < 1e-4 && std::fabs(p[0]) < 1.2 && p[2] < Radius;
+}
+}
+
+int TestDirectionalOcclusion(int, char*[])
+{
+  auto window = vtkFXTest::MakeWindow(Width, Height);
+  const double up[3] = { 0, 1, 0 };
+
+  // 1 and 2: the crease without a bump, 63 samples (21 directions, each
+  // turned by 0, 120 and 240 degrees), blurred.
+  std::array<double, 3> meanChannels = { 0, 0, 0 };
+  {
+    Setup s = MakeDOSetup(window, 63);
+    BuildCrease(s, 0.0);
+    window->Render();
+    vtkFXDirectionalOcclusionPass* dop = s.Pipeline->GetDirectionalOcclusionPass();
+    FX_CHECK(dop->GetEffectiveNumberOfSamples() == 63, "63 samples used");
+    FX_CHECK(!(s.Pipeline->GetGBufferChannels() & GB::ChannelBit(GB::ShadingNormal)),
+      "no bump: no shading-normal channel");
+    if (CheckAllInRange(dop->GetOutputTexture(), 4, "raw channels") != EXIT_SUCCESS)
+    {
+      return EXIT_FAILURE;
+    }
+    vtkTextureObject* blurred = s.Pipeline->GetDirectionalOcclusionBlurPass()->GetOutputTexture();
+    std::vector<float> channel[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      channel[k] = OcclusionAtPixels(blurred, k);
+    }
+    const auto world = WorldPositions(s.Renderer, s.Pipeline->GetGBufferPass());
+    const auto shown = Grab(window);
+    double basis[3][3];
+    WorldBasis(s.Renderer, up, basis);
+    // The channel whose direction leans most towards the wall (-z), and
+    // the one leaning most away.
+    int toward = 0, away = 0;
+    for (int k = 1; k < 3; ++k)
+    {
+      toward = basis[k][2] < basis[toward][2] ? k : toward;
+      away = basis[k][2] > basis[away][2] ? k : away;
+    }
+    // Exact channels tabulated in (h/R)^(1/3), bins as TestSSAO's.
+    const int table = 64;
+    std::vector<std::array<double, 3>> exact(table + 1);
+    for (int i = 0; i <= table; ++i)
+    {
+      const double x = static_cast<double>(i) / table;
+      exact[i] = ExactChannels(x * x * x * Radius, basis);
+    }
+    double binDO[10][4] = {}, binExact[10][4] = {};
+    int binCount[10] = {};
+    double worstResolve = 0.0;
+    for (size_t i = 0; i < world.size(); ++i)
+    {
+      const auto& p = world[i];
+      if (!OnFloorNearWall(p))
+      {
+        continue;
+      }
+      const double x = std::cbrt(p[2] / Radius) * table;
+      const int j = std::min(table - 1, static_cast<int>(x));
+      const int bin = std::min(9, static_cast<int>(x / table * 10));
+      double mean = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        binDO[bin][k] += channel[k][i];
+        binExact[bin][k] += exact[j][k] + (x - j) * (exact[j + 1][k] - exact[j][k]);
+        mean += channel[k][i] / 3.0;
+      }
+      binDO[bin][3] += mean;
+      binExact[bin][3] += vtkFXTest::CreaseOcclusionBinary(p[2], Radius);
+      ++binCount[bin];
+      worstResolve = std::max(worstResolve, std::fabs(shown[i] - 255.0 * mean));
+      for (int k = 0; k < 3; ++k)
+      {
+        meanChannels[k] += channel[k][i];
+      }
+    }
+    double worstChannelBin = 0.0, worstMeanBin = 0.0;
+    int bins = 0;
+    for (int b = 4; b < 10; ++b) // h >= 0.064 R: every pixel resolves the wall
+    {
+      if (binCount[b] < 20)
+      {
+        continue;
+      }
+      ++bins;
+      std::cout << "  (h/R)^(1/3) in [" << b / 10.0 << ", " << (b + 1) / 10.0 << "): channels";
+      for (int k = 0; k < 4; ++k)
+      {
+        const double got = binDO[b][k] / binCount[b], want = binExact[b][k] / binCount[b];
+        std::cout << (k == 3 ? ", mean " : " ") << got << " (exact " << want << ")";
+        (k < 3 ? worstChannelBin : worstMeanBin) =
+          std::max(k < 3 ? worstChannelBin : worstMeanBin, std::fabs(got - want));
+      }
+      std::cout << " over " << binCount[b] << " pixels" << std::endl;
+      if (b < 8) // h < 0.51 R: the wall is within reach of the leaning lobe
+      {
+        FX_CHECK(binDO[b][toward] < binDO[b][away] - 0.1 * binCount[b],
+          "the channel facing the wall is darker than the one facing away (bin " << b << ")");
+      }
+    }
+    std::cout << "crease: worst bin " << worstChannelBin << " (channels), " << worstMeanBin
+              << " (their mean against the closed form); composite against the mean: worst "
+              << worstResolve << " levels" << std::endl;
+    FX_CHECK(bins >= 4, "bands near the crease");
+    // The mean is vtkFXSSAOPass's hemisphere estimate, held by TestSSAO to
+    // 0.03 per bin at 64 samples; a channel takes a third of the samples'
+    // weight, so its noise is sqrt(3) times that: 0.052.
+    FX_CHECK(worstMeanBin <= 0.03, "the channels' mean follows the crease's closed form");
+    FX_CHECK(worstChannelBin <= 0.052, "each channel follows its exact lobe visibility");
+    // 8-bit rounding (0.5) plus the half floats of the channels (2^-11 x 255).
+    FX_CHECK(worstResolve <= 0.5 + 0.13, "without a bump the composite shows the channels' mean");
+  }
+
+  // 3. A floor bumped by ramps of slope +-0.5: shading normals and their
+  // resolve.
+  for (double slope : { 0.5, -0.5 })
+  {
+    Setup s = MakeDOSetup(window, 63);
+    BuildCrease(s, slope);
+    window->Render();
+    FX_CHECK(s.Pipeline->GetGBufferChannels() & GB::ChannelBit(GB::ShadingNormal),
+      "a bump: the shading-normal channel is allocated");
+    vtkFXGBufferPass* gbuffer = s.Pipeline->GetGBufferPass();
+    const auto shading = vtkFXTest::Download(gbuffer->GetChannelTexture(GB::ShadingNormal), 2);
+    const auto geometric = vtkFXTest::Download(gbuffer->GetChannelTexture(GB::Normal), 2);
+    vtkTextureObject* blurred = s.Pipeline->GetDirectionalOcclusionBlurPass()->GetOutputTexture();
+    std::vector<float> channel[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      channel[k] = OcclusionAtPixels(blurred, k);
+    }
+    const auto world = WorldPositions(s.Renderer, gbuffer);
+    const auto shown = Grab(window);
+    vtkMatrix4x4* view = s.Renderer->GetActiveCamera()->GetViewTransformMatrix();
+    double expected[3] = { 0.0, 1.0, -slope }, expectedView[3] = { 0, 0, 0 }, upView[3] = { 0, 0, 0 };
+    vtkMath::Normalize(expected);
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        expectedView[r] += view->GetElement(r, c) * expected[c];
+        upView[r] += view->GetElement(r, c) * up[c];
+      }
+    }
+    double basis[3][3];
+    WorldBasis(s.Renderer, up, basis);
+    double c[3];
+    Weights(expected, basis, c);
+    double worstAngle = 0.0, worstGeometric = 0.0, worstResolve = 0.0, resolvedSum = 0.0,
+           meanSum = 0.0;
+    int n = 0;
+    for (size_t i = 0; i < world.size(); ++i)
+    {
+      // (inner pixels: derivatives of the quads at the plane's edge mix in
+      // the wall)
+      const auto& p = world[i];
+      if (!OnFloorNearWall(p) || p[2] < 0.05)
+      {
+        continue;
+      }
+      double ns[3], ng[3];
+      vtkFXTest::DecodeNormal(shading[2 * i], shading[2 * i + 1], ns);
+      vtkFXTest::DecodeNormal(geometric[2 * i], geometric[2 * i + 1], ng);
+      worstAngle = std::max(worstAngle, vtkFXTest::Angle(ns, expectedView));
+      worstGeometric = std::max(worstGeometric, vtkFXTest::Angle(ng, upView));
+      const double resolved = c[0] * channel[0][i] + c[1] * channel[1][i] + c[2] * channel[2][i];
+      worstResolve = std::max(worstResolve, std::fabs(shown[i] - 255.0 * resolved));
+      resolvedSum += resolved;
+      meanSum += (channel[0][i] + channel[1][i] + channel[2][i]) / 3.0;
+      ++n;
+    }
+    std::cout << "ramp " << slope << ": " << n << " floor pixels, shading normal off by "
+              << worstAngle << " rad at most (geometric " << worstGeometric
+              << "), weights " << c[0] << " " << c[1] << " " << c[2] << ", resolved mean "
+              << resolvedSum / n << " against the channels' mean " << meanSum / n
+              << ", composite off by " << worstResolve << " levels" << std::endl;
+    FX_CHECK(n > 500, "floor pixels near the wall");
+    // Octahedral normals in two half floats: 1e-3 rad (vtkFXNormalCoding).
+    FX_CHECK(worstAngle <= 2e-3, "the shading normal is the ramp's normal");
+    FX_CHECK(worstGeometric <= 2e-3, "the geometric normal is the floor's");
+    FX_CHECK(worstResolve <= 0.5 + 0.13, "the composite shows the weighted channels");
+    if (slope > 0.0)
+    {
+      FX_CHECK(resolvedSum / n < meanSum / n - 0.02, "turned to the wall: darker than the mean");
+    }
+    else
+    {
+      FX_CHECK(resolvedSum / n > meanSum / n + 0.02, "turned away: lighter than the mean");
+    }
+  }
+
+  // 4. What is allocated; a prop without a bump beside one with it.
+  {
+    Setup s = MakeDOSetup(window, 15);
+    vtkActor* floor = BuildCrease(s, 0.5);
+    window->Render();
+    vtkFXGBufferPass* gbuffer = s.Pipeline->GetGBufferPass();
+    const auto shading = vtkFXTest::Download(gbuffer->GetChannelTexture(GB::ShadingNormal), 2);
+    const auto geometric = vtkFXTest::Download(gbuffer->GetChannelTexture(GB::Normal), 2);
+    const auto world = WorldPositions(s.Renderer, gbuffer);
+    int wallPixels = 0, floorPixels = 0;
+    for (size_t i = 0; i < world.size(); ++i)
+    {
+      const auto& p = world[i];
+      if (p[3] > 0.0 && std::fabs(p[2]) < 1e-4 && p[1] > 0.05)
+      {
+        FX_CHECK(shading[2 * i] == geometric[2 * i] && shading[2 * i + 1] == geometric[2 * i + 1],
+          "the wall (no bump) keeps its normal, pixel " << i);
+        ++wallPixels;
+      }
+      else if (p[3] > 0.0 && std::fabs(p[1]) < 1e-4 && p[2] > 0.05)
+      {
+        floorPixels += shading[2 * i] != geometric[2 * i] || shading[2 * i + 1] != geometric[2 * i + 1];
+      }
+    }
+    FX_CHECK(wallPixels > 1000 && floorPixels > 1000, "both props seen, the floor bumped");
+    // Ambient occlusion instead (which reads no shading normal): none.
+    s.Pipeline->AmbientOcclusionOn();
+    FX_CHECK(!s.Pipeline->GetDirectionalOcclusion(), "ambient occlusion replaced the directional");
+    window->Render();
+    FX_CHECK(!(s.Pipeline->GetGBufferChannels() & GB::ChannelBit(GB::ShadingNormal)),
+      "SSAO reads no shading normals: the channel is released");
+    // Directional occlusion again, the bump removed: none either.
+    s.Pipeline->DirectionalOcclusionOn();
+    vtkFXGBufferPass::SetBump(floor, nullptr, 0.0);
+    window->Render();
+    FX_CHECK(!(s.Pipeline->GetGBufferChannels() & GB::ChannelBit(GB::ShadingNormal)),
+      "no bump left: the channel is released");
+  }
+
+  // 5. The bumped crease under extreme scales, offsets and projections.
+  struct Case
+  {
+    const char* Name;
+    double Scale, Offset;
+    bool Parallel;
+    double NearRatio;
+  };
+  const Case cases[] = { { "scale 1e-6", 1e-6, 0.0, false, 0.0 }, { "scale 1e6", 1e6, 0.0, false, 0.0 },
+    { "translated 1e6", 1.0, 1e6, false, 0.0 }, { "parallel", 1.0, 0.0, true, 0.0 },
+    { "near/far 1e-6", 1.0, 0.0, false, 1e-6 } };
+  for (const Case& c : cases)
+  {
+    Setup s = MakeDOSetup(window, 15);
+    s.Pipeline->GetDirectionalOcclusionPass()->SetRadius(0.0); // a fraction of the bounds
+    s.Pipeline->GetDirectionalOcclusionPass()->SetHalfResolution(true);
+    BuildCrease(s, 0.5);
+    vtkFXTest::MoveScene(s.Renderer, c.Scale, c.Offset, c.Parallel, c.NearRatio);
+    window->Render();
+    vtkFXGBufferPass* gbuffer = s.Pipeline->GetGBufferPass();
+    if (CheckAllInRange(s.Pipeline->GetDirectionalOcclusionPass()->GetOutputTexture(), 4, c.Name) !=
+        EXIT_SUCCESS ||
+      CheckAllInRange(s.Pipeline->GetDirectionalOcclusionBlurPass()->GetOutputTexture(), 4, c.Name) !=
+        EXIT_SUCCESS)
+    {
+      return EXIT_FAILURE;
+    }
+    const auto shading = vtkFXTest::Download(gbuffer->GetChannelTexture(GB::ShadingNormal), 2);
+    int surface = 0;
+    for (size_t i = 0; i < shading.size(); i += 2)
+    {
+      if (shading[i] > 2.0f)
+      {
+        continue; // no surface
+      }
+      double ns[3];
+      vtkFXTest::DecodeNormal(shading[i], shading[i + 1], ns);
+      FX_CHECK(std::isfinite(ns[0]) && std::isfinite(ns[1]) && std::isfinite(ns[2]) &&
+          std::fabs(vtkMath::Norm(ns) - 1.0) < 1e-3,
+        c.Name << ": shading normal at pixel " << i / 2);
+      ++surface;
+    }
+    std::cout << c.Name << ": " << surface << " surface pixels, channels in range" << std::endl;
+    FX_CHECK(surface > 1000, c.Name << ": the crease is seen");
+  }
+  return EXIT_SUCCESS;
+}
