@@ -45,6 +45,8 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
+#include "vtkPolyDataTangents.h"
+#include "vtkTriangleFilter.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -373,6 +375,69 @@ bool SceneTextured(vtkRenderer* renderer, std::string& error)
   texture->InterpolateOn();
   auto actor = MakeActor(poly, 1, 1, 1);
   actor->SetTexture(texture);
+  renderer->AddActor(actor);
+  return true;
+}
+
+// A tangent-space normal map (RGB = n / 2 + 1/2, blue up) of a height
+// field of rounded scales on a 24 x 24 grid over the texture square,
+// `size` texels wide: dh/du and dh/dv by central differences.
+vtkSmartPointer<vtkImageData> ScalesNormalMap(int size)
+{
+  const auto height = [](double u, double v) {
+    const double cells = 24.0;
+    const double x = u * cells - std::floor(u * cells) - 0.5;
+    const double y = v * cells - std::floor(v * cells) - 0.5;
+    const double r2 = 4.0 * (x * x + y * y);
+    return r2 < 1.0 ? std::sqrt(1.0 - r2) : 0.0;
+  };
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(size, size, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* texels = static_cast<unsigned char*>(image->GetScalarPointer());
+  const double h = 1.0 / size, strength = 0.02 / h; // slope per texel scale
+  for (int j = 0; j < size; ++j)
+  {
+    for (int i = 0; i < size; ++i)
+    {
+      const double u = (i + 0.5) * h, v = (j + 0.5) * h;
+      double n[3] = { -(height(u + h, v) - height(u - h, v)) * 0.5 * strength,
+        -(height(u, v + h) - height(u, v - h)) * 0.5 * strength, 1.0 };
+      vtkMath::Normalize(n);
+      for (int c = 0; c < 3; ++c)
+      {
+        texels[3 * (j * size + i) + c] =
+          static_cast<unsigned char>(std::lround(127.5 * (n[c] + 1.0)));
+      }
+    }
+  }
+  return image;
+}
+
+bool SceneNormalMap(vtkRenderer* renderer, std::string& error)
+{
+  // Spot with a normal texture generated from a height map of scales,
+  // tangents from vtkPolyDataTangents: VTK 9.1 applies the map in its own
+  // lighting, and directional occlusion resolves with it.
+  const std::string dir = vtkFXScenes::DataDirectory();
+  auto poly = ReadPolyData(dir + "/spot.obj", error);
+  if (!poly || !poly->GetPointData()->GetTCoords())
+  {
+    error = "scene:normalmap needs spot.obj (with texture coordinates) in " + dir;
+    return false;
+  }
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(poly->GetPointData()->GetNormals() ? poly.GetPointer()
+                                                             : WithNormals(poly).GetPointer());
+  vtkNew<vtkPolyDataTangents> tangents;
+  tangents->SetInputConnection(triangles->GetOutputPort());
+  tangents->Update();
+  vtkNew<vtkTexture> normalMap;
+  normalMap->SetInputData(ScalesNormalMap(1024));
+  normalMap->InterpolateOn();
+  normalMap->MipmapOn();
+  auto actor = MakeActor(tangents->GetOutput(), 0.9, 0.85, 0.8);
+  actor->GetProperty()->SetNormalTexture(normalMap);
   renderer->AddActor(actor);
   return true;
 }
@@ -732,6 +797,8 @@ bool PopulateBuiltIn(vtkRenderer* renderer, const std::string& name, std::string
     SceneCorner(renderer);
   else if (name == "scene:bumps")
     SceneBumps(renderer);
+  else if (name == "scene:normalmap")
+    return SceneNormalMap(renderer, error);
   else if (name == "scene:scalars")
     SceneScalars(renderer);
   else if (name == "scene:textured")
@@ -786,7 +853,7 @@ std::vector<std::string> vtkFXScenes::BuiltInSceneNames()
   return { "scene:spheres", "scene:corner", "scene:scalars", "scene:textured", "scene:glyphs",
     "scene:composite", "scene:splats", "scene:lights", "scene:mixed", "scene:volume", "scene:edges",
     "scene:molecule", "scene:glow", "scene:pointlights", "scene:isoshadow", "scene:cloud",
-    "scene:particles", "scene:bumps" };
+    "scene:particles", "scene:bumps", "scene:normalmap" };
 }
 
 bool vtkFXScenes::Populate(vtkRenderer* renderer, const std::string& input,

@@ -70,7 +70,7 @@ void Usage(std::ostream& os)
   os << "usage: vtkfx-render INPUT [--size WxH] [--effects none|LIST] [--plain-vtk]\n"
         "                    [--frames N] [--out FILE.png] [--stats FILE.json]\n"
         "                    [--debug-channel normal|depth|albedo|specular|ambient|emission|\n"
-        "                                     shading-normal|occlusion]\n"
+        "                                     geometric-normal|occlusion]\n"
         "                    [--no-ground] [--ao-radius R | --ao-radius-fraction F]\n"
         "                    [--ao-quality low|medium|high] [--ao-falloff binary|cuberoot]\n"
         "LIST: comma-separated effects: ssao, blur (ssao,blur: ambient occlusion),\n"

@@ -82,7 +82,7 @@ void vtkFXBilateralBlurPass::RunStage(int mode, vtkOpenGLRenderWindow* window,
     return;
   }
   vtkTextureObject* depth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
-  vtkTextureObject* normal = this->GBuffer->GetChannelTexture(GB::Normal);
+  vtkTextureObject* normal = this->GBuffer->GetGeometricNormalTexture();
   input->Activate();
   depth->Activate();
   normal->Activate();

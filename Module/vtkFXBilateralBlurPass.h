@@ -108,6 +108,7 @@ public:
   vtkBooleanMacro(Upsample, bool);
 
   unsigned int GetRequiredChannels() override;
+  bool GetReadsGeometricNormal() override { return true; }
   Output GetOutput(const char* name) override;
 
   void Render(const vtkRenderState* s) override;

@@ -255,7 +255,7 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
           << "#define FX_NEEDS_POSITION " << (needsPosition ? 1 : 0) << "\n"
           << "#define FX_CHANNEL_NORMAL " << GB::Normal << "\n"
           << "#define FX_CHANNEL_DEPTH " << GB::LinearDepth << "\n"
-          << "#define FX_CHANNEL_SHADING_NORMAL " << GB::ShadingNormal << "\n"
+          << "#define FX_CHANNEL_GEOMETRIC_NORMAL " << GB::GeometricNormal << "\n"
           << "#define FX_DEBUG_OCCLUSION " << (this->DebugOcclusion ? 1 : 0) << "\n"
           << "#define FX_DEBUG_CHANNEL "
           << (gb->GetChannelTexture(this->DebugChannel) ? this->DebugChannel : -1) << "\n";

@@ -24,34 +24,20 @@ vtkFXDirectionalOcclusionPass::vtkFXDirectionalOcclusionPass()
 
 vtkFXDirectionalOcclusionPass::~vtkFXDirectionalOcclusionPass() = default;
 
-bool vtkFXDirectionalOcclusionPass::HasWork(const vtkFXSceneInfo& scene)
+vtkTextureObject* vtkFXDirectionalOcclusionPass::GeometricNormalChannel() const
 {
-  this->SetReadShadingNormals(scene.AnyBump);
-  return this->Superclass::HasWork(scene);
-}
-
-unsigned int vtkFXDirectionalOcclusionPass::GetRequiredChannels()
-{
-  return this->Superclass::GetRequiredChannels() |
-    (this->ReadShadingNormals ? GB::ChannelBit(GB::ShadingNormal) : 0u);
-}
-
-vtkTextureObject* vtkFXDirectionalOcclusionPass::ShadingNormalTexture() const
-{
-  return this->ReadShadingNormals && this->GBuffer
-    ? this->GBuffer->GetChannelTexture(GB::ShadingNormal)
-    : nullptr;
+  return this->GBuffer ? this->GBuffer->GetChannelTexture(GB::GeometricNormal) : nullptr;
 }
 
 std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
 {
-  const bool shading = this->ShadingNormalTexture() != nullptr;
+  const bool geometric = this->GeometricNormalChannel() != nullptr;
   switch (hook)
   {
     case Declarations:
       // The occlusion texture's layout is vtkFXSSAOPass's (see there).
       return std::string("uniform sampler2D @occlusion;\nuniform vec2 @scale;\nuniform vec2 @offset;\n") +
-        (shading ? "uniform sampler2D @shading;\n" : "") + vtkFXOcclusionBasis;
+        (geometric ? "uniform sampler2D @geometric;\n" : "") + vtkFXOcclusionBasis;
     case Ambient:
     {
       if (this->ShowChannels)
@@ -59,18 +45,19 @@ std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
         return "    ambientVisibility *= clamp(texture(@occlusion, texCoord * @scale + @offset).rgb, "
                "0.0, 1.0);";
       }
-      // The seed's resolve: the channels weighted by the shading normal's
-      // squared clamped cosines with the basis of the geometric normal n.
-      // Pixels whose shading normal is missing (unlit) use n: the mean.
+      // The seed's resolve: the channels weighted by the shading normal n's
+      // squared clamped cosines with the basis of the geometric normal g.
+      // Without a GeometricNormal channel no prop perturbs its normal: g = n
+      // and the weights are 1/3 (the channels' mean).
       std::string code = "    {\n"
                          "      vec3 channels = texture(@occlusion, texCoord * @scale + @offset).rgb;\n"
-                         "      vec3 s = n;\n";
-      if (shading)
+                         "      vec3 g = n;\n";
+      if (geometric)
       {
-        code += "      vec2 encoded = texture(@shading, texCoord).rg;\n"
-                "      if (!fxIsUnlit(encoded)) { s = fxDecodeNormal(encoded); }\n";
+        code += "      vec2 encoded = texture(@geometric, texCoord).rg;\n"
+                "      if (!fxIsUnlit(encoded)) { g = fxDecodeNormal(encoded); }\n";
       }
-      code += "      float resolved = dot(fxResolveWeights(n, s), channels);\n"
+      code += "      float resolved = dot(fxResolveWeights(g, n), channels);\n"
               "      ambientVisibility *= clamp(isnan(resolved) ? 1.0 : resolved, 0.0, 1.0);\n"
               "    }";
       return code;
@@ -84,21 +71,21 @@ void vtkFXDirectionalOcclusionPass::BindCompositeResources(
   vtkShaderProgram* program, const std::string& prefix)
 {
   this->Superclass::BindCompositeResources(program, prefix);
-  if (vtkTextureObject* shading = this->ShadingNormalTexture())
+  if (vtkTextureObject* geometric = this->GeometricNormalChannel())
   {
-    shading->Activate();
-    this->ShadingNormalBound = shading;
-    program->SetUniformi((prefix + "shading").c_str(), shading->GetTextureUnit());
+    geometric->Activate();
+    this->GeometricNormalBound = geometric;
+    program->SetUniformi((prefix + "geometric").c_str(), geometric->GetTextureUnit());
   }
 }
 
 void vtkFXDirectionalOcclusionPass::UnbindCompositeResources()
 {
   this->Superclass::UnbindCompositeResources();
-  if (this->ShadingNormalBound)
+  if (this->GeometricNormalBound)
   {
-    this->ShadingNormalBound->Deactivate();
-    this->ShadingNormalBound = nullptr;
+    this->GeometricNormalBound->Deactivate();
+    this->GeometricNormalBound = nullptr;
   }
 }
 
@@ -111,7 +98,6 @@ void vtkFXDirectionalOcclusionPass::ReleaseGraphicsResources(vtkWindow* w)
 void vtkFXDirectionalOcclusionPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ReadShadingNormals: " << this->ReadShadingNormals << "\n";
   os << indent << "ShowChannels: " << this->ShowChannels << "\n";
   os << indent << "Samples used: " << this->GetEffectiveNumberOfSamples() << "\n";
 }

@@ -12,9 +12,11 @@
  * turned towards an occluder reads darker than one turned away, detail a
  * single occlusion value per pixel cannot hold.
  *
- * Reads the G-buffer's normal (the basis), linear depth and, while a
- * visible prop has a bump, its shading-normal channel (requested only
- * then). Writes the output "occlusion" (RGBA16F: RGB = the three
+ * Reads the G-buffer's linear depth, its geometric normals (the basis:
+ * vtkFXGBufferPass::GetGeometricNormalTexture; the pipeline allocates the
+ * GeometricNormal channel while a visible prop has a bump or a normal
+ * texture) and, in the composite, the shading normal (`n`). Writes the
+ * output "occlusion" (RGBA16F: RGB = the three
  * channels' visibility, 1 = open) at full or half resolution. In the
  * composite it scales the ambient visibility by the resolved value, read
  * from its optional input "denoised" (vtkFXBilateralBlurPass, which blurs
@@ -34,9 +36,9 @@
  *
  * Cost: vtkFXSSAOPass's hemisphere pass (the same fetches; three weights
  * per occluded sample), a blur of three values (a guide pass and two
- * passes of RGBA16F taps), one texture read and the shading-normal read
- * in the composite; the shading-normal channel (4 bytes per pixel) only
- * while a visible prop has a bump.
+ * passes of RGBA16F taps), one texture read in the composite, and while a
+ * visible prop perturbs its normal the geometric-normal channel (4 bytes
+ * per pixel, written by the G-buffer, read by the composite).
  */
 #ifndef vtkFXDirectionalOcclusionPass_h
 #define vtkFXDirectionalOcclusionPass_h
@@ -52,15 +54,6 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * Whether the shading-normal channel is read: some opaque prop of the
-   * scene has a bump (from HasWork's scene), or ReadShadingNormals was set
-   * for a hand-built chain. Default off.
-   */
-  vtkSetMacro(ReadShadingNormals, bool);
-  vtkGetMacro(ReadShadingNormals, bool);
-  vtkBooleanMacro(ReadShadingNormals, bool);
-
-  /**
    * For inspection: the composite's ambient visibility becomes the three
    * channels as red, green and blue instead of their resolve (with
    * vtkFXCompositePass::DebugOcclusion, an image of the channels). Default
@@ -70,8 +63,6 @@ public:
   vtkGetMacro(ShowChannels, bool);
   vtkBooleanMacro(ShowChannels, bool);
 
-  bool HasWork(const vtkFXSceneInfo& scene) override;
-  unsigned int GetRequiredChannels() override;
   std::string GetCompositeCode(int hook) override;
   void BindCompositeResources(vtkShaderProgram* program, const std::string& prefix) override;
   void UnbindCompositeResources() override;
@@ -81,11 +72,10 @@ protected:
   vtkFXDirectionalOcclusionPass();
   ~vtkFXDirectionalOcclusionPass() override;
 
-  vtkTextureObject* ShadingNormalTexture() const;
+  vtkTextureObject* GeometricNormalChannel() const;
 
-  bool ReadShadingNormals = false;
   bool ShowChannels = false;
-  vtkTextureObject* ShadingNormalBound = nullptr;
+  vtkTextureObject* GeometricNormalBound = nullptr;
 
 private:
   vtkFXDirectionalOcclusionPass(const vtkFXDirectionalOcclusionPass&) = delete;

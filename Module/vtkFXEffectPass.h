@@ -110,6 +110,16 @@ public:
   virtual unsigned int GetRequiredChannels() = 0;
 
   /**
+   * Whether the effect samples the surfaces' own orientation (occlusion
+   * hemispheres, blur guides) rather than the normal they are shaded with.
+   * While such an effect runs and a visible prop perturbs its normal (a
+   * bump or a normal texture), vtkFXPipelinePass allocates the G-buffer's
+   * GeometricNormal channel, which the effect reads through
+   * vtkFXGBufferPass::GetGeometricNormalTexture(). Default false.
+   */
+  virtual bool GetReadsGeometricNormal() { return false; }
+
+  /**
    * Whether the effect has work in this frame. Default: any prop the
    * G-buffer captures.
    */

@@ -15,6 +15,8 @@
 #include "vtkInformationStringKey.h"
 #include "vtkNew.h"
 #include "vtkOpenGLPolyDataMapper.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkShader.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -38,7 +40,7 @@ vtkStandardNewMacro(vtkFXGBufferPass);
 namespace
 {
 const char* const ChannelNames[vtkFXGBufferPass::NumberOfChannels] = { "albedo", "normal", "depth",
-  "specular", "ambient", "emission", "shading-normal" };
+  "specular", "ambient", "emission", "geometric-normal" };
 
 const int ChannelFormats[vtkFXGBufferPass::NumberOfChannels] = { vtkFXRenderUtilities::RGBA8,
   vtkFXRenderUtilities::RG16F, vtkFXRenderUtilities::R32F, vtkFXRenderUtilities::RGBA8,
@@ -83,17 +85,19 @@ bool IsBlank(const std::string& s)
   return s.find_first_not_of(" \t\r\n") == std::string::npos;
 }
 
-// fxShadingNormal: the interpolated normal, tilted by the bump when the
-// shader receives one. Mikkelsen, "Bump Mapping Unparametrized Surfaces on
+// fxShadingNormal: the normal VTK lights with, tilted by the bump when the
+// shader receives one; fxGeometricNormal: the mesh normal before either
+// (captured before VTK's normal-texture code where it has some). Mikkelsen, "Bump Mapping Unparametrized Surfaces on
 // the GPU" (2010), eq. 2-4: with the screen derivatives of the position
 // and of the height h, the surface gradient of h is
 //   (dh/dx (dp/dy x n) + dh/dy (n x dp/dx)) / det, det = dp/dx . (dp/dy x n),
 // and the bumped normal is n - gradient (scaled by |det| to avoid the
 // division). Degenerate derivatives (a triangle seen edge-on, NaN scalars)
 // leave the normal as it was.
-std::string ShadingNormalGLSL(bool bump)
+std::string ShadingNormalGLSL(bool bump, bool normalTexture)
 {
-  std::string code = "  vec3 fxShadingNormal = normalVCVSOutput;\n";
+  std::string code = normalTexture ? "" : "  vec3 fxGeometricNormal = normalVCVSOutput;\n";
+  code += "  vec3 fxShadingNormal = normalVCVSOutput;\n";
   if (bump)
   {
     code += "  {\n"
@@ -251,6 +255,26 @@ vtkTextureObject* vtkFXGBufferPass::GetChannelTexture(int channel)
     return nullptr;
   }
   return this->Textures[channel];
+}
+
+vtkTextureObject* vtkFXGBufferPass::GetGeometricNormalTexture()
+{
+  vtkTextureObject* geometric = this->GetChannelTexture(GeometricNormal);
+  return geometric ? geometric : this->GetChannelTexture(Normal);
+}
+
+bool vtkFXGBufferPass::PerturbsNormal(vtkProp* prop)
+{
+  if (HasBump(prop))
+  {
+    return true;
+  }
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  vtkPolyData* mesh = actor && actor->GetMapper()
+    ? vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0))
+    : nullptr;
+  return mesh && actor->GetProperty()->GetTexture("normalTex") &&
+    mesh->GetPointData()->GetTangents() && mesh->GetPointData()->GetTCoords();
 }
 
 vtkTextureObject* vtkFXGBufferPass::GetDepthTexture()
@@ -436,8 +460,7 @@ bool vtkFXGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
   {
     return true;
   }
-  if ((this->AllocatedChannels & ChannelBit(ShadingNormal)) && HasBump(prop) &&
-    geometryShader.empty() && Contains(vertexShader, "//VTK::Normal::Impl") &&
+  if (HasBump(prop) && geometryShader.empty() && Contains(vertexShader, "//VTK::Normal::Impl") &&
     Contains(fragmentShader, "//VTK::Normal::Dec"))
   {
     // The bump's scalar, from the mapped vertex attribute to the fragment.
@@ -471,7 +494,7 @@ std::string vtkFXGBufferPass::ChannelWritesGLSL(bool lit, const char* linearDept
     switch (c)
     {
       case Normal:
-        code << (lit ? "vec4(fxEncodeNormal(normalVCVSOutput), 0.0, 1.0);\n"
+        code << (lit ? "vec4(fxEncodeNormal(fxShadingNormal), 0.0, 1.0);\n"
                      : "vec4(fxUnlitNormal, 0.0, 1.0);\n");
         break;
       case LinearDepth:
@@ -489,8 +512,8 @@ std::string vtkFXGBufferPass::ChannelWritesGLSL(bool lit, const char* linearDept
       case Emission:
         code << (lit ? "vec4(fxEmissive, 1.0);\n" : "fxColor;\n");
         break;
-      case ShadingNormal:
-        code << (lit ? "vec4(fxEncodeNormal(fxShadingNormal), 0.0, 1.0);\n"
+      case GeometricNormal:
+        code << (lit ? "vec4(fxEncodeNormal(fxGeometricNormal), 0.0, 1.0);\n"
                      : "vec4(fxUnlitNormal, 0.0, 1.0);\n");
         break;
     }
@@ -542,12 +565,18 @@ bool vtkFXGBufferPass::PostReplaceShaderValues(std::string&, std::string&,
             "  vec3 fxAmbient = ambientColor * fxTexture.rgb;\n"
             "  vec3 fxSpecular = specularColor * fxTexture.rgb;\n"
             "  float fxSpecularPower = clamp(specularPower, 0.0, 128.0);\n";
-    if (this->AllocatedChannels & ChannelBit(ShadingNormal))
+    // VTK's normal-texture code replaces normalVCVSOutput: keep the mesh
+    // normal from just before it.
+    const char* const normalTextureCode = "mat3 tbn = mat3(";
+    const bool normalTexture = Contains(fragmentShader, normalTextureCode);
+    if (normalTexture)
     {
-      impl << ShadingNormalGLSL(
-        Contains(fragmentShader, "in float fxBumpVSOutput;") &&
-        Contains(fragmentShader, "vec4 vertexVC ="));
+      vtkShaderProgram::Substitute(fragmentShader, normalTextureCode,
+        std::string("vec3 fxGeometricNormal = normalVCVSOutput;\n  ") + normalTextureCode, false);
     }
+    impl << ShadingNormalGLSL(Contains(fragmentShader, "in float fxBumpVSOutput;") &&
+        Contains(fragmentShader, "vec4 vertexVC ="),
+      normalTexture);
   }
   // The mapper discards fully transparent fragments after this point; do it
   // here too, before our writes replace gl_FragData[0].

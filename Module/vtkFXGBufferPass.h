@@ -12,10 +12,14 @@
  * - Albedo       RGBA8   VTK's diffuse colour after scalar colouring and
  *                        texturing; alpha = opacity. Unlit fragments store
  *                        their final colour here.
- * - Normal       RG16F   view-space normal, octahedral encoding (Cigolle et
- *                        al. 2014, "A Survey of Efficient Representations for
- *                        Independent Unit Vectors"); unlit fragments and
- *                        uncovered pixels carry a sentinel outside [-1,1].
+ * - Normal       RG16F   view-space shading normal, octahedral encoding
+ *                        (Cigolle et al. 2014, "A Survey of Efficient
+ *                        Representations for Independent Unit Vectors"): the
+ *                        normal VTK lights with (a property's normal texture
+ *                        applies, as VTK 9.1 applies it when the mesh has
+ *                        tangents), tilted by the prop's bump (SetBump);
+ *                        unlit fragments and uncovered pixels carry a
+ *                        sentinel outside [-1,1].
  * - LinearDepth  R32F    -z in view coordinates (world units), 0 = no surface.
  * - Specular     RGBA8   specular colour x intensity; alpha = power / 128.
  * - Ambient      RGBA8   VTK's ambient term (ambient intensity x colour).
@@ -23,13 +27,15 @@
  *                        fragments; for lit ones the prop's EMISSIVE_COLOR
  *                        (0 without). RGBA16F with HDREmission on, so that
  *                        emission above 1 (a glow's source) is kept.
- * - ShadingNormal RG16F  view-space shading normal, encoded as Normal: the
- *                        normal perturbed by the prop's bump (SetBump;
- *                        Mikkelsen's surface gradient), else the Normal.
- *                        Only vtkFXDirectionalOcclusionPass reads it, and
- *                        only while a visible prop has a bump: the lights
- *                        keep shading with Normal, as VTK's forward
- *                        renderer does.
+ * - GeometricNormal RG16F the interpolated mesh normal before any normal
+ *                        texture or bump, encoded as Normal: the surface's
+ *                        own orientation, for effects that sample the
+ *                        geometry around a pixel (occlusion hemispheres,
+ *                        blur guides: vtkFXEffectPass::GetReadsGeometricNormal).
+ *                        vtkFXPipelinePass allocates it only while such an
+ *                        effect runs and a visible prop perturbs its normal
+ *                        (PerturbsNormal); otherwise it equals Normal and
+ *                        GetGeometricNormalTexture() returns Normal's.
  * plus a 32-bit float hardware depth texture that is always allocated.
  *
  * Cost: one geometry pass with up to 6 render targets; memory is
@@ -85,7 +91,7 @@ public:
     Specular,
     Ambient,
     Emission,
-    ShadingNormal,
+    GeometricNormal,
     NumberOfChannels
   };
 
@@ -96,7 +102,7 @@ public:
 
   /**
    * Name of a channel ("normal", "depth", "albedo", "specular", "ambient",
-   * "emission", "shading-normal"), and the channel of a name (-1 if
+   * "emission", "geometric-normal"), and the channel of a name (-1 if
    * unknown).
    */
   static const char* GetChannelName(int channel);
@@ -118,6 +124,12 @@ public:
    * Texture of a channel after Render(), or nullptr if it is not allocated.
    */
   vtkTextureObject* GetChannelTexture(int channel);
+
+  /**
+   * The geometric normals: the GeometricNormal channel when allocated,
+   * else the Normal channel (no prop perturbs its normal, so both agree).
+   */
+  vtkTextureObject* GetGeometricNormalTexture();
 
   /**
    * The hardware depth texture (DEPTH_COMPONENT32F, 1.0 = no surface).
@@ -163,7 +175,7 @@ public:
   ///@{
   /**
    * Bump from a point-data scalar array (elevation, density, ...): the
-   * shading normal of the prop's surface tilts as if the surface were
+   * shading normal (Normal channel) of the prop's surface tilts as if the surface were
    * displaced along its normal by BUMP_SCALE x the scalar (world units per
    * scalar unit), by the surface gradient of Mikkelsen ("Bump Mapping
    * Unparametrized Surfaces on the GPU", 2010) from screen-space
@@ -173,8 +185,10 @@ public:
    * SetBump sets both keys on the actor and maps the array onto the
    * vertex attribute the G-buffer reads (its mapper must be a
    * vtkOpenGLPolyDataMapper; an array of more than one component uses its
-   * first). Written to the ShadingNormal channel; props drawn with a
-   * geometry shader (wide lines, point sprites) keep their normal.
+   * first). The lights and every effect shade with the bumped normal;
+   * occlusion samples around the unbumped one (GeometricNormal). Props
+   * drawn with a geometry shader (wide lines, point sprites) keep their
+   * normal.
    * nullptr or an empty name removes the bump.
    */
   static vtkInformationStringKey* BUMP_ARRAY();
@@ -186,6 +200,14 @@ public:
    * Whether a prop has a bump (BUMP_ARRAY set, non-zero finite BUMP_SCALE).
    */
   static bool HasBump(vtkProp* prop);
+
+  /**
+   * Whether a prop's shading normal differs from its mesh normal: a bump,
+   * or a normal texture (vtkProperty::SetNormalTexture) on a mesh with
+   * tangents and texture coordinates, which VTK 9.1 then applies in its
+   * own lighting (vtkPolyDataTangents computes tangents).
+   */
+  static bool PerturbsNormal(vtkProp* prop);
 
   /**
    * Whether the G-buffer can capture a prop: its mappers must call VTK's

@@ -65,7 +65,7 @@ void AddMaterialTerms(vtkActor* actor, vtkFXSceneInfo& scene, bool& emissive)
       scene.AnySpecular = true;
     }
   }
-  scene.AnyBump = scene.AnyBump || vtkFXGBufferPass::HasBump(actor);
+  scene.AnyPerturbedNormal = scene.AnyPerturbedNormal || vtkFXGBufferPass::PerturbsNormal(actor);
   double color[3];
   if (vtkFXGBufferPass::GetEmissiveColor(actor, color))
   {
@@ -551,10 +551,16 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
     composite->SetUseSpecular(scene.AnySpecular);
     composite->SetUseEmission(scene.AnyEmissiveColor);
     unsigned int channels = composite->GetRequiredChannels(scene.LightingComplexity);
+    bool geometric = false; // an effect samples the surfaces' own orientation
     for (size_t i : order)
     {
       channels |= this->Effects[i].Effect->GetRequiredChannels();
+      geometric = geometric || this->Effects[i].Effect->GetReadsGeometricNormal();
       composite->AddContributor(this->Effects[i].Effect);
+    }
+    if (geometric && scene.AnyPerturbedNormal)
+    {
+      channels |= vtkFXGBufferPass::ChannelBit(vtkFXGBufferPass::GeometricNormal);
     }
     this->GBufferPass->SetRequiredChannels(channels);
     this->GBufferPass->SetHDREmission(scene.AnyEmissionAboveOne);

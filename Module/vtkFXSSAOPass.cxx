@@ -256,7 +256,7 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   this->NumberOfRenderedProps = 0;
   vtkRenderer* ren = s->GetRenderer();
   vtkTextureObject* depth = this->GBuffer ? this->GBuffer->GetChannelTexture(GB::LinearDepth) : nullptr;
-  vtkTextureObject* normal = this->GBuffer ? this->GBuffer->GetChannelTexture(GB::Normal) : nullptr;
+  vtkTextureObject* normal = this->GBuffer ? this->GBuffer->GetGeometricNormalTexture() : nullptr;
   if (!depth || !normal)
   {
     vtkErrorMacro("vtkFXSSAOPass needs a G-buffer with normal and linear depth channels.");

@@ -151,6 +151,7 @@ public:
   vtkGetMacro(EffectiveRadius, double);
 
   unsigned int GetRequiredChannels() override;
+  bool GetReadsGeometricNormal() override { return true; }
   Output GetOutput(const char* name) override;
   std::string GetCompositeCode(int hook) override;
   void BindCompositeResources(vtkShaderProgram* program, const std::string& prefix) override;

@@ -89,7 +89,7 @@ vec3 fxSanitize(vec3 c)
 vec3 fxDebugColor()
 {
   vec4 v = texture(fxDebugTexture, texCoord);
-#if FX_DEBUG_CHANNEL == FX_CHANNEL_NORMAL || FX_DEBUG_CHANNEL == FX_CHANNEL_SHADING_NORMAL
+#if FX_DEBUG_CHANNEL == FX_CHANNEL_NORMAL || FX_DEBUG_CHANNEL == FX_CHANNEL_GEOMETRIC_NORMAL
   return fxIsUnlit(v.xy) ? vec3(0.0) : 0.5 + 0.5 * fxDecodeNormal(v.xy);
 #elif FX_DEBUG_CHANNEL == FX_CHANNEL_DEPTH
   return vec3(clamp((v.r - fxDepthRange.x) / max(fxDepthRange.y - fxDepthRange.x, 1e-30), 0.0, 1.0));

@@ -10,15 +10,16 @@
 // 2. with no bump the composite's ambient visibility is the channels' mean
 //    (the resolve with weights 1/3), within 8-bit rounding;
 // 3. a floor bumped by a ramp of slope s (height s z): its shading normal
-//    is the analytic (0, 1, -s) / |.|, the geometric one stays +y, and the
-//    composite shows sum_k c_k(n_s) channel_k exactly; turned towards the
-//    wall it reads darker than the mean, away from it lighter;
-// 4. the shading-normal channel is allocated only while directional
-//    occlusion runs and a visible prop has a bump; a prop without a bump
-//    beside one with it keeps its normal bit for bit;
+//    (the Normal channel) is the analytic (0, 1, -s) / |.|, its geometric
+//    normal stays +y, and the composite shows sum_k c_k(n_s) channel_k
+//    exactly; turned towards the wall it reads darker than the mean, away
+//    from it lighter;
+// 4. the geometric-normal channel is allocated only while an occlusion
+//    effect runs and a visible prop has a bump; a prop without a bump
+//    beside one with it has the same normal in both channels, bit for bit;
 // 5. the bumped crease under scale 1e-6 / 1e6, translated by 1e6, parallel
-//    projection and near/far 1e-6: channels finite in [0, 1], shading
-//    normals finite and of unit length.
+//    projection and near/far 1e-6: channels finite in [0, 1], both normals
+//    finite and of unit length.
 #include "vtkFXDirectionalOcclusionPass.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXOcclusionTestUtilities.h"
@@ -227,8 +228,8 @@ int TestDirectionalOcclusion(int, char*[])
     window->Render();
     vtkFXDirectionalOcclusionPass* dop = s.Pipeline->GetDirectionalOcclusionPass();
     FX_CHECK(dop->GetEffectiveNumberOfSamples() == 63, "63 samples used");
-    FX_CHECK(!(s.Pipeline->GetGBufferChannels() & GB::ChannelBit(GB::ShadingNormal)),
-      "no bump: no shading-normal channel");
+    FX_CHECK(!(s.Pipeline->GetGBufferChannels() & GB::ChannelBit(GB::GeometricNormal)),
+      "no bump: no geometric-normal channel");
     if (CheckAllInRange(dop->GetOutputTexture(), 4, "raw channels") != EXIT_SUCCESS)
     {
       return EXIT_FAILURE;
@@ -332,11 +333,11 @@ int TestDirectionalOcclusion(int, char*[])
     Setup s = MakeDOSetup(window, 63);
     BuildCrease(s, slope);
     window->Render();
-    FX_CHECK(s.Pipeline->GetGBufferChannels() & GB::ChannelBit(GB::ShadingNormal),
-      "a bump: the shading-normal channel is allocated");
+    FX_CHECK(s.Pipeline->GetGBufferChannels() & GB::ChannelBit(GB::GeometricNormal),
+      "a bump: the geometric-normal channel is allocated");
     vtkFXGBufferPass* gbuffer = s.Pipeline->GetGBufferPass();
-    const auto shading = vtkFXTest::Download(gbuffer->GetChannelTexture(GB::ShadingNormal), 2);
-    const auto geometric = vtkFXTest::Download(gbuffer->GetChannelTexture(GB::Normal), 2);
+    const auto shading = vtkFXTest::Download(gbuffer->GetChannelTexture(GB::Normal), 2);
+    const auto geometric = vtkFXTest::Download(gbuffer->GetChannelTexture(GB::GeometricNormal), 2);
     vtkTextureObject* blurred = s.Pipeline->GetDirectionalOcclusionBlurPass()->GetOutputTexture();
     std::vector<float> channel[3];
     for (int k = 0; k < 3; ++k)
@@ -409,8 +410,8 @@ int TestDirectionalOcclusion(int, char*[])
     vtkActor* floor = BuildCrease(s, 0.5);
     window->Render();
     vtkFXGBufferPass* gbuffer = s.Pipeline->GetGBufferPass();
-    const auto shading = vtkFXTest::Download(gbuffer->GetChannelTexture(GB::ShadingNormal), 2);
-    const auto geometric = vtkFXTest::Download(gbuffer->GetChannelTexture(GB::Normal), 2);
+    const auto shading = vtkFXTest::Download(gbuffer->GetChannelTexture(GB::Normal), 2);
+    const auto geometric = vtkFXTest::Download(gbuffer->GetChannelTexture(GB::GeometricNormal), 2);
     const auto world = WorldPositions(s.Renderer, gbuffer);
     int wallPixels = 0, floorPixels = 0;
     for (size_t i = 0; i < world.size(); ++i)
@@ -428,17 +429,22 @@ int TestDirectionalOcclusion(int, char*[])
       }
     }
     FX_CHECK(wallPixels > 1000 && floorPixels > 1000, "both props seen, the floor bumped");
-    // Ambient occlusion instead (which reads no shading normal): none.
+    // Ambient occlusion instead samples around the geometric normal too.
     s.Pipeline->AmbientOcclusionOn();
     FX_CHECK(!s.Pipeline->GetDirectionalOcclusion(), "ambient occlusion replaced the directional");
     window->Render();
-    FX_CHECK(!(s.Pipeline->GetGBufferChannels() & GB::ChannelBit(GB::ShadingNormal)),
-      "SSAO reads no shading normals: the channel is released");
+    FX_CHECK(s.Pipeline->GetGBufferChannels() & GB::ChannelBit(GB::GeometricNormal),
+      "SSAO with a bumped prop reads the geometric normals");
+    // Neither occlusion effect: released.
+    s.Pipeline->AmbientOcclusionOff();
+    window->Render();
+    FX_CHECK(!(s.Pipeline->GetGBufferChannels() & GB::ChannelBit(GB::GeometricNormal)),
+      "no occlusion effect: the channel is released");
     // Directional occlusion again, the bump removed: none either.
     s.Pipeline->DirectionalOcclusionOn();
     vtkFXGBufferPass::SetBump(floor, nullptr, 0.0);
     window->Render();
-    FX_CHECK(!(s.Pipeline->GetGBufferChannels() & GB::ChannelBit(GB::ShadingNormal)),
+    FX_CHECK(!(s.Pipeline->GetGBufferChannels() & GB::ChannelBit(GB::GeometricNormal)),
       "no bump left: the channel is released");
   }
 
@@ -469,20 +475,23 @@ int TestDirectionalOcclusion(int, char*[])
     {
       return EXIT_FAILURE;
     }
-    const auto shading = vtkFXTest::Download(gbuffer->GetChannelTexture(GB::ShadingNormal), 2);
     int surface = 0;
-    for (size_t i = 0; i < shading.size(); i += 2)
+    for (int channel : { GB::Normal, GB::GeometricNormal })
     {
-      if (shading[i] > 2.0f)
+      const auto normals = vtkFXTest::Download(gbuffer->GetChannelTexture(channel), 2);
+      for (size_t i = 0; i < normals.size(); i += 2)
       {
-        continue; // no surface
+        if (normals[i] > 2.0f)
+        {
+          continue; // no surface
+        }
+        double ns[3];
+        vtkFXTest::DecodeNormal(normals[i], normals[i + 1], ns);
+        FX_CHECK(std::isfinite(ns[0]) && std::isfinite(ns[1]) && std::isfinite(ns[2]) &&
+            std::fabs(vtkMath::Norm(ns) - 1.0) < 1e-3,
+          c.Name << ": " << GB::GetChannelName(channel) << " at pixel " << i / 2);
+        surface += channel == GB::Normal;
       }
-      double ns[3];
-      vtkFXTest::DecodeNormal(shading[i], shading[i + 1], ns);
-      FX_CHECK(std::isfinite(ns[0]) && std::isfinite(ns[1]) && std::isfinite(ns[2]) &&
-          std::fabs(vtkMath::Norm(ns) - 1.0) < 1e-3,
-        c.Name << ": shading normal at pixel " << i / 2);
-      ++surface;
     }
     std::cout << c.Name << ": " << surface << " surface pixels, channels in range" << std::endl;
     FX_CHECK(surface > 1000, c.Name << ": the crease is seen");

@@ -112,7 +112,7 @@ int TestRobustness(int, char*[])
   for (int c = 0; c < vtkFXGBufferPass::NumberOfChannels; ++c)
   {
     const int components =
-      (c == vtkFXGBufferPass::Normal || c == vtkFXGBufferPass::ShadingNormal) ? 2
+      (c == vtkFXGBufferPass::Normal || c == vtkFXGBufferPass::GeometricNormal) ? 2
       : c == vtkFXGBufferPass::LinearDepth                                    ? 1
                                                                               : 4;
     const auto values = vtkFXTest::Download(gbuffer->GetChannelTexture(c), components);

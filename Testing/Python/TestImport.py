@@ -14,7 +14,7 @@ assert isinstance(pipeline.GetCompositePass(), vtkRenderPass)
 assert vtkfx.vtkFXGBufferPass.GetChannelName(vtkfx.vtkFXGBufferPass.LinearDepth) == "depth"
 assert vtkfx.vtkFXGBufferPass.GetChannelFromName("albedo") == vtkfx.vtkFXGBufferPass.Albedo
 pipeline.SetDebugChannel(9)  # clamped by vtkSetClampMacro
-assert pipeline.GetDebugChannel() == vtkfx.vtkFXGBufferPass.ShadingNormal, pipeline.GetDebugChannel()
+assert pipeline.GetDebugChannel() == vtkfx.vtkFXGBufferPass.GeometricNormal, pipeline.GetDebugChannel()
 gbuffer.SetRequiredChannels(0)
 assert gbuffer.GetRequiredChannels() == 0
 
