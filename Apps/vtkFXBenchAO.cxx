@@ -23,7 +23,22 @@
 // detail score against milliseconds (DIR/ao-detail-SCENE.png), every point
 // labelled with its setting, and an image strip (DIR/ao-strip-SCENE.png:
 // reference, vtkFX default, best vtkSSAOPass, no occlusion).
+//
+// vtkfx-bench do: the same report (DIR/do.csv, do-*.png) for
+// vtkFXDirectionalOcclusionPass against the reference traced with each
+// pixel's shading normal (vtkFXReferenceAO: cosine lobe around it, over
+// the geometric hemisphere; the normals are the vtkFX G-buffer's, read
+// back from the directional-occlusion method's frame, so bumps and normal
+// textures enter both sides alike). Methods: directional occlusion at 9,
+// 15 (its default) and 30 samples; plain vtkFX SSAO with its default
+// (Medium) and with hemisphere samples at the directional default's
+// count, which is the cost it is compared with; vtkSSAOPass 16 and 64
+// with blur.
 #include "vtkFXBench.h"
+#include "vtkFXCompositePass.h"
+#include "vtkFXDirectionalOcclusionPass.h"
+#include "vtkFXGBufferPass.h"
+#include "vtkFXRenderUtilities.h"
 #include "vtkFXBilateralBlurPass.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXReferenceAO.h"
@@ -33,6 +48,9 @@
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
 #include "vtkAxis.h"
+#include "vtkCamera.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkChartLegend.h"
 #include "vtkChartXY.h"
 #include "vtkContextScene.h"
@@ -75,6 +93,7 @@ enum class Kind
   VTKForward, // VTK without occlusion: the unoccluded image and VTK's time base
   FXPlain,    // vtkFX without occlusion: vtkFX's time base
   FX,
+  FXDirectional, // vtkFXDirectionalOcclusionPass
   VTK
 };
 
@@ -96,6 +115,57 @@ struct Method
   std::vector<float> Occlusion; // per pixel, -1 where the reference has no surface
   double Ms = 0.0, RMSE = 0.0, PSNR = 0.0, Detail = 0.0;
 };
+
+// The methods of `vtkfx-bench do`: see the top of this file.
+std::vector<Method> MakeDirectionalMethods(int falloff)
+{
+  std::vector<Method> methods;
+  methods.push_back({ Kind::VTKForward, "no-ao", "vtk forward" });
+  methods.push_back({ Kind::FXPlain, "vtkfx-plain", "no occlusion" });
+  vtkNew<vtkFXPipelinePass> defaults;
+  defaults->SetAmbientOcclusionFalloff(falloff);
+  vtkFXDirectionalOcclusionPass* dop = defaults->GetDirectionalOcclusionPass();
+  vtkFXBilateralBlurPass* doBlur = defaults->GetDirectionalOcclusionBlurPass();
+  const int doSamples = dop->GetEffectiveNumberOfSamples();
+  auto add = [&methods](Kind kind, const char* name, int method, int samples, bool half,
+               int blurRadius, int kernel) {
+    Method m{ kind, name };
+    m.Method = method;
+    m.Samples = samples;
+    m.HalfResolution = half;
+    m.Blur = blurRadius > 0;
+    m.BlurRadius = std::max(1, blurRadius);
+    m.BlurKernel = kernel;
+    m.Setting = std::to_string(samples) + (half ? " half" : " full") +
+      (blurRadius > 0 ? (kernel == vtkFXBilateralBlurPass::Box ? " box" : " blur") +
+            std::to_string(blurRadius)
+                      : " noblur");
+    methods.push_back(m);
+  };
+  const int gauss = vtkFXBilateralBlurPass::Gaussian;
+  // The default first (the strip shows it), then its neighbours.
+  add(Kind::FXDirectional, "vtkfx-do", vtkFXSSAOPass::Hemisphere, doSamples,
+    dop->GetHalfResolution(), doBlur->GetRadius(), doBlur->GetKernel());
+  add(Kind::FXDirectional, "vtkfx-do", vtkFXSSAOPass::Hemisphere, 9, true, 4, gauss);
+  add(Kind::FXDirectional, "vtkfx-do", vtkFXSSAOPass::Hemisphere, 30, true, 4, gauss);
+  // Plain SSAO: the pipeline's default, and hemisphere samples at DO's
+  // count (the cost DO is held to).
+  vtkFXSSAOPass* ssao = defaults->GetSSAOPass();
+  vtkFXBilateralBlurPass* blur = defaults->GetOcclusionBlurPass();
+  add(Kind::FX, ssao->GetMethod() == vtkFXSSAOPass::Horizon ? "vtkfx-gtao" : "vtkfx-ssao",
+    ssao->GetMethod(), ssao->GetNumberOfSamples(), ssao->GetHalfResolution(), blur->GetRadius(),
+    blur->GetKernel());
+  add(Kind::FX, "vtkfx-ssao", vtkFXSSAOPass::Hemisphere, doSamples, true, 4, gauss);
+  for (int kernel : { 16, 64 })
+  {
+    Method m{ Kind::VTK, "vtk-ssao" };
+    m.Samples = kernel;
+    m.Blur = true;
+    m.Setting = std::to_string(kernel) + " blur";
+    methods.push_back(m);
+  }
+  return methods;
+}
 
 std::vector<Method> MakeMethods(int falloff)
 {
@@ -202,6 +272,22 @@ void Install(Method& m, double radius, int falloff)
   {
     case Kind::VTKForward:
       break;
+    case Kind::FXDirectional:
+    {
+      vtkNew<vtkFXPipelinePass> pipeline;
+      pipeline->DirectionalOcclusionOn();
+      vtkFXDirectionalOcclusionPass* dop = pipeline->GetDirectionalOcclusionPass();
+      dop->SetRadius(radius);
+      dop->SetNumberOfSamples(m.Samples);
+      dop->SetHalfResolution(m.HalfResolution);
+      dop->SetFalloff(falloff);
+      vtkFXBilateralBlurPass* blur = pipeline->GetDirectionalOcclusionBlurPass();
+      blur->SetEnabled(m.Blur);
+      blur->SetRadius(m.BlurRadius);
+      blur->SetKernel(m.BlurKernel);
+      m.Renderer->SetPass(pipeline);
+      break;
+    }
     case Kind::FXPlain:
     case Kind::FX:
     {
@@ -312,14 +398,54 @@ void WritePlot(const std::vector<Method>& methods, const std::string& title,
   std::vector<PlotPoint> points;
   for (const auto& m : methods)
   {
-    if (m.Type == Kind::FX || m.Type == Kind::VTK)
+    if (m.Type == Kind::FX || m.Type == Kind::FXDirectional || m.Type == Kind::VTK)
     {
-      points.push_back({ m.Type == Kind::VTK ? 1 : 0,
-        (m.Type == Kind::VTK ? "vtk " : m.Method ? "gtao " : "hemi ") + m.Setting,
-        std::max(0.0, m.Ms), value(m) });
+      const char* prefix = m.Type == Kind::VTK ? "vtk "
+        : m.Type == Kind::FXDirectional        ? "do "
+        : m.Method                             ? "gtao "
+                                               : "hemi ";
+      points.push_back({ m.Type == Kind::VTK ? 1 : 0, prefix + m.Setting, std::max(0.0, m.Ms),
+        value(m) });
     }
   }
   WritePointsPlot(families, points, title, "AO time (ms per frame)", yTitle, path);
+}
+
+// The G-buffer's shading normals of a vtkFX method's last frame, in world
+// coordinates, 3 per pixel (zero where it holds none): what the
+// directional reference traces with.
+std::vector<float> WorldShadingNormals(const Method& m)
+{
+  std::vector<float> world;
+  auto* pipeline = vtkFXPipelinePass::SafeDownCast(m.Renderer->GetPass());
+  vtkTextureObject* texture =
+    pipeline ? pipeline->GetGBufferPass()->GetChannelTexture(vtkFXGBufferPass::Normal) : nullptr;
+  const std::vector<float> codes = Download(m.Window, texture, 2);
+  world.assign(codes.size() / 2 * 3, 0.0f);
+  vtkMatrix4x4* view = m.Renderer->GetActiveCamera()->GetViewTransformMatrix();
+  for (size_t i = 0; 2 * i + 1 < codes.size(); ++i)
+  {
+    // vtkFXNormalCoding.glsl's octahedral decoding (x > 2: no normal).
+    double e[2] = { codes[2 * i], codes[2 * i + 1] };
+    if (!(std::fabs(e[0]) <= 1.0 && std::fabs(e[1]) <= 1.0))
+    {
+      continue;
+    }
+    double v[3] = { e[0], e[1], 1.0 - std::fabs(e[0]) - std::fabs(e[1]) };
+    if (v[2] < 0.0)
+    {
+      const double x = v[0], y = v[1];
+      v[0] = (1.0 - std::fabs(y)) * (x >= 0.0 ? 1.0 : -1.0);
+      v[1] = (1.0 - std::fabs(x)) * (y >= 0.0 ? 1.0 : -1.0);
+    }
+    vtkMath::Normalize(v);
+    for (int c = 0; c < 3; ++c) // view to world: the rotation's transpose
+    {
+      world[3 * i + c] = static_cast<float>(view->GetElement(0, c) * v[0] +
+        view->GetElement(1, c) * v[1] + view->GetElement(2, c) * v[2]);
+    }
+  }
+  return world;
 }
 
 double PSNROf(const Method& m)
@@ -338,8 +464,10 @@ namespace vtkFXBench
 int BenchAO(const Options& o)
 {
   const int rays = 256;
-  std::ofstream csv((o.Out + "/ao.csv").c_str());
-  std::ofstream notes((o.Out + "/ao-reference.txt").c_str());
+  const bool directional = o.Effect == "do";
+  const std::string report = directional ? "do" : "ao";
+  std::ofstream csv((o.Out + "/" + report + ".csv").c_str());
+  std::ofstream notes((o.Out + "/" + report + "-reference.txt").c_str());
   if (!csv || !notes)
   {
     std::cerr << "vtkfx-bench: cannot write into " << o.Out << "\n";
@@ -347,7 +475,9 @@ int BenchAO(const Options& o)
   }
   csv << "scene,method,setting,ms,rmse,psnr,detail\n";
   const char* falloffName = o.Falloff == 0 ? "binary" : "cuberoot";
-  std::vector<Method> methods = MakeMethods(o.Falloff);
+  std::vector<Method> methods =
+    directional ? MakeDirectionalMethods(o.Falloff) : MakeMethods(o.Falloff);
+  const Kind fxKind = directional ? Kind::FXDirectional : Kind::FX;
   for (auto& m : methods)
   {
     m.Window = MakeWindow(o);
@@ -387,10 +517,19 @@ int BenchAO(const Options& o)
       std::cerr << "\nvtkfx-bench: " << error << "\n";
       return 1;
     }
-    const auto truth =
-      reference.Trace(methods[0].Renderer, o.Width, o.Height, radius, rays, o.Falloff);
+    std::vector<float> shadingNormals;
+    for (const auto& m : methods)
+    {
+      if (directional && m.Type == Kind::FXDirectional && shadingNormals.empty())
+      {
+        shadingNormals = WorldShadingNormals(m);
+      }
+    }
+    const auto truth = reference.Trace(methods[0].Renderer, o.Width, o.Height, radius, rays,
+      o.Falloff, 2, directional ? &shadingNormals : nullptr);
     std::cerr << " " << truth.Seconds << " s\n";
-    notes << input << ": " << falloffName << " falloff, " << rays
+    notes << input << ": " << (directional ? "directional (shading normals), " : "")
+          << falloffName << " falloff, " << rays
           << " stratified cosine-weighted rays per pixel, radius "
           << radius << ", " << truth.CoveredPixels << " pixels; standard error bound of the reference "
           << "(RMS over pixels) " << truth.StandardErrorRMS << "; " << truth.Seconds << " s\n";
@@ -402,6 +541,7 @@ int BenchAO(const Options& o)
     const double vtkBase = Median(methods[0].FrameMs), fxBase = Median(methods[1].FrameMs);
     const Method* bestVTK = nullptr;
     const Method* fxDefault = nullptr;
+    const Method* plainDefault = nullptr; // do: vtkFX's default ambient occlusion
     for (auto& m : methods)
     {
       if (m.Type == Kind::VTKForward || m.Type == Kind::FXPlain)
@@ -420,7 +560,9 @@ int BenchAO(const Options& o)
       Compare(m.Occlusion, truth.Occlusion, m.RMSE, m.PSNR);
       m.Detail = vtkFXScenes::DetailScore(m.Occlusion, truth.Occlusion, o.Width, o.Height);
       const double frame = Median(m.FrameMs);
-      m.Ms = m.Type == Kind::VTK ? frame - vtkBase : m.Type == Kind::FX ? frame - fxBase : 0.0;
+      m.Ms = m.Type == Kind::VTK                                   ? frame - vtkBase
+        : (m.Type == Kind::FX || m.Type == Kind::FXDirectional) ? frame - fxBase
+                                                                  : 0.0;
       if (m.Type == Kind::FXPlain)
       {
         continue; // same image as no-ao
@@ -436,27 +578,40 @@ int BenchAO(const Options& o)
       {
         bestVTK = &m;
       }
-      if (m.Type == Kind::FX && !fxDefault)
+      if (m.Type == fxKind && !fxDefault)
       {
         fxDefault = &m; // the first vtkFX method is the default setting
+      }
+      if (directional && m.Type == Kind::FX && !plainDefault)
+      {
+        plainDefault = &m;
       }
     }
     std::cout << std::flush;
     const std::string tag = FileTag(input);
-    WritePlot(methods, tag + ": AO error against time (" + falloffName + " falloff)",
-      "PSNR against ray-traced AO (dB)", PSNROf, o.Out + "/ao-" + tag + ".png");
-    WritePlot(methods, tag + ": AO detail against time (" + falloffName + " falloff)",
-      "detail score (fine-band correlation)", DetailOf, o.Out + "/ao-detail-" + tag + ".png");
+    const std::string what = directional ? "directional occlusion" : "AO";
+    WritePlot(methods, tag + ": " + what + " error against time (" + falloffName + " falloff)",
+      "PSNR against ray-traced " + what + " (dB)", PSNROf,
+      o.Out + "/" + report + "-" + tag + ".png");
+    WritePlot(methods, tag + ": " + what + " detail against time (" + falloffName + " falloff)",
+      "detail score (fine-band correlation)", DetailOf,
+      o.Out + "/" + report + "-detail-" + tag + ".png");
     if (bestVTK && fxDefault)
     {
-      WriteStrip({ &truth.Occlusion, &fxDefault->Occlusion, &bestVTK->Occlusion,
-                   &methods[0].Occlusion },
-        o.Width, o.Height, o.Out + "/ao-strip-" + tag + ".png");
+      // Reference | vtkFX default | (do: vtkFX's plain AO) | best vtkSSAOPass | none.
+      std::vector<const std::vector<float>*> panels = { &truth.Occlusion, &fxDefault->Occlusion };
+      if (plainDefault)
+      {
+        panels.push_back(&plainDefault->Occlusion);
+      }
+      panels.push_back(&bestVTK->Occlusion);
+      panels.push_back(&methods[0].Occlusion);
+      WriteStrip(panels, o.Width, o.Height, o.Out + "/" + report + "-strip-" + tag + ".png");
     }
   }
-  std::cout << "wrote " << o.Out << "/ao.csv, ao-*.png, ao-strip-*.png, ao-reference.txt ("
-            << o.Width << "x" << o.Height << ", median of " << o.Frames
-            << " interleaved frames)\n";
+  std::cout << "wrote " << o.Out << "/" << report << ".csv, " << report << "-*.png, " << report
+            << "-strip-*.png, " << report << "-reference.txt (" << o.Width << "x" << o.Height
+            << ", median of " << o.Frames << " interleaved frames)\n";
   return 0;
 }
 }

@@ -324,7 +324,7 @@ bool Intersect(RTCScene scene, const double o[3], const double d[3], double tnea
 
 vtkFXReferenceAO::Result vtkFXReferenceAO::Trace(
   vtkRenderer* renderer, int width, int height, double radius, int raysPerPixel, int falloff,
-  int threads) const
+  int threads, const std::vector<float>* shadingNormals) const
 {
   if (falloff != Binary && falloff != CubeRoot)
   {
@@ -369,24 +369,38 @@ vtkFXReferenceAO::Result vtkFXReferenceAO::Trace(
           n[0] = -n[0], n[1] = -n[1], n[2] = -n[2]; // face the viewer
         }
         double p[3] = { o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2] };
-        // Tangent frame of the geometric normal.
+        const unsigned int pixel = static_cast<unsigned int>(y * width + x);
+        // The lobe's axis: the shading normal when given (turned to the
+        // geometric normal's side), else the geometric normal.
+        double axis[3] = { n[0], n[1], n[2] };
+        if (shadingNormals && shadingNormals->size() >= 3 * (static_cast<size_t>(pixel) + 1))
+        {
+          double s[3] = { (*shadingNormals)[3 * pixel], (*shadingNormals)[3 * pixel + 1],
+            (*shadingNormals)[3 * pixel + 2] };
+          if (vtkMath::Normalize(s) > 0.0 && std::isfinite(s[0] + s[1] + s[2]))
+          {
+            const double side = vtkMath::Dot(s, n) < 0.0 ? -1.0 : 1.0;
+            axis[0] = side * s[0], axis[1] = side * s[1], axis[2] = side * s[2];
+          }
+        }
+        // Tangent frame of the axis.
         double helper[3] = { 0, 0, 1 };
-        if (std::fabs(n[2]) > 0.9)
+        if (std::fabs(axis[2]) > 0.9)
         {
           helper[0] = 1, helper[2] = 0;
         }
         double tx[3], ty[3];
-        vtkMath::Cross(helper, n, tx);
+        vtkMath::Cross(helper, axis, tx);
         vtkMath::Normalize(tx);
-        vtkMath::Cross(n, tx, ty);
+        vtkMath::Cross(axis, tx, ty);
         // Leave the surface by a hair to avoid hitting it again: the hit
         // point carries float error growing with its coordinates and with
         // the distance travelled.
         const double offset = 1e-4 * radius + 1e-6 * (t + std::max(std::fabs(p[0]),
           std::max(std::fabs(p[1]), std::fabs(p[2]))));
         const double start[3] = { p[0] + offset * n[0], p[1] + offset * n[1], p[2] + offset * n[2] };
-        const unsigned int pixel = static_cast<unsigned int>(y * width + x);
         double sum = 0.0, sum2 = 0.0;
+        int counted = 0;
         for (int s = 0; s < rays; ++s)
         {
           // Stratified cosine-weighted direction (Malley's method).
@@ -398,8 +412,13 @@ vtkFXReferenceAO::Result vtkFXReferenceAO::Trace(
           double w[3];
           for (int c = 0; c < 3; ++c)
           {
-            w[c] = lx * tx[c] + ly * ty[c] + lz * n[c];
+            w[c] = lx * tx[c] + ly * ty[c] + lz * axis[c];
           }
+          if (vtkMath::Dot(w, n) <= 0.0)
+          {
+            continue; // into the surface: outside the geometric hemisphere
+          }
+          ++counted;
           double hitT, hitN[3];
           double f = 0.0;
           if (Intersect(scene, start, w, 0.0, radius, hitT, hitN))
@@ -410,9 +429,11 @@ vtkFXReferenceAO::Result vtkFXReferenceAO::Trace(
           sum += f;
           sum2 += f * f;
         }
-        const double mean = sum / rays;
+        // (the axis lies in the geometric hemisphere, so most rays count)
+        const int used = std::max(1, counted);
+        const double mean = sum / used;
         result.Occlusion[pixel] = static_cast<float>(1.0 - mean);
-        variance[pixel] = std::max(0.0, sum2 / rays - mean * mean) / rays;
+        variance[pixel] = std::max(0.0, sum2 / used - mean * mean) / used;
         result.StandardError[pixel] = static_cast<float>(std::sqrt(variance[pixel]));
       }
     }

@@ -11,6 +11,11 @@
 //   CubeRoot: f(t) = 1 - (t / R)^(1/3) (what sample lengths u^3 estimate),
 // as vtkFXSSAOPass::Falloff chooses, and the pixel's value is 1 - mean f. Pixels whose primary ray misses hold
 // -1 (no surface).
+// Directional occlusion (vtkFXDirectionalOcclusionPass) is traced with a
+// shading normal per pixel: the rays are cosine-distributed around it and
+// those below the geometric surface (w . n_g <= 0) are left out, so the
+// value is the visibility weighted by max(0, n_s . w) over the geometric
+// hemisphere, normalised by that weight's integral there.
 //
 // Geometry: triangles of every visible vtkActor whose mapper is a
 // vtkPolyDataMapper (its input, through the actor's matrix) or a
@@ -65,7 +70,11 @@ public:
    * Binary).
    */
   Result Trace(vtkRenderer* renderer, int width, int height, double radius, int raysPerPixel,
-    int falloff = Binary, int threads = 2) const;
+    int falloff = Binary, int threads = 2,
+    const std::vector<float>* shadingNormals = nullptr) const;
+  // shadingNormals: 3 world-space values per pixel (rows bottom-up), or
+  // nullptr for ambient occlusion; a zero vector there means "the
+  // geometric normal".
 
   /**
    * World-space ray through the centre of pixel (x, y) of a width x height

@@ -1,9 +1,9 @@
 // vtkfx-bench: error against run time, in one process, for vtkFX's passes
 // next to VTK's own rendering.
 //
-//   vtkfx-bench pipeline|ao|avsm|bloom|lights [INPUT ...] [--size WxH] [--frames N] --out DIR
+//   vtkfx-bench pipeline|ao|do|avsm|bloom|lights [INPUT ...] [--size WxH] [--frames N] --out DIR
 //
-// "ao": see vtkFXBenchAO.cxx; "avsm": vtkFXBenchAVSM.cxx; "bloom":
+// "ao" and "do" (directional occlusion): see vtkFXBenchAO.cxx; "avsm": vtkFXBenchAVSM.cxx; "bloom":
 // vtkFXBenchBloom.cxx; "lights": vtkFXBenchLights.cxx.
 // "pipeline": the vtkFX pipeline with no effect (which must reproduce VTK's
 // forward render of the same scene), with its default ambient occlusion and
@@ -151,7 +151,7 @@ int BenchPipeline(const Options& o)
 
 void Usage(std::ostream& os)
 {
-  os << "usage: vtkfx-bench pipeline|ao|avsm|bloom|lights [INPUT ...] [--size WxH] [--frames N]\n"
+  os << "usage: vtkfx-bench pipeline|ao|do|avsm|bloom|lights [INPUT ...] [--size WxH] [--frames N]\n"
         "                   [--falloff binary|cuberoot] [--max-vtk-lights N] --out DIR\n"
         "pipeline: vtkFX without effects, with its default ambient occlusion and with\n"
         "          toon shading against\n"
@@ -161,6 +161,9 @@ void Usage(std::ostream& os)
         "          (default: scene:corner, bunny, fandisk, 1crn.pdb, 640x480), with\n"
         "          visibility within R (--falloff binary, the default) or the\n"
         "          near-weighted 1 - (t/R)^(1/3) (--falloff cuberoot)\n"
+        "do:       directional occlusion against a reference traced with the shading\n"
+        "          normals, beside vtkFX's plain AO and VTK's (default: scene:bumps,\n"
+        "          scene:normalmap, bunny, 640x480)\n"
         "bloom:    vtkFX's glow and the seed's direct 21x21 Gaussian against the exact\n"
         "          glow computed on the CPU (default: scene:glow, 1280x720)\n"
         "avsm:     shadows of translucent props, AVSM-4/8/16 against the exact deep shadow\n"
@@ -220,7 +223,7 @@ int main(int argc, char* argv[])
     else
       o.Inputs.push_back(a);
   }
-  const bool known = o.Effect == "pipeline" || o.Effect == "ao" || o.Effect == "bloom" ||
+  const bool known = o.Effect == "pipeline" || o.Effect == "ao" || o.Effect == "do" || o.Effect == "bloom" ||
     o.Effect == "lights" || o.Effect == "avsm";
   if (!known || o.Out.empty())
   {
@@ -230,12 +233,17 @@ int main(int argc, char* argv[])
   }
   vtksys::SystemTools::MakeDirectory(o.Out);
   const std::string data = vtkFXScenes::DataDirectory();
-  if (o.Effect == "ao")
+  if (o.Effect == "ao" || o.Effect == "do")
   {
-    if (o.Inputs.empty())
+    if (o.Inputs.empty() && o.Effect == "ao")
     {
       o.Inputs = { "scene:corner", data + "/stanford-bunny.obj", data + "/fandisk.obj",
         data + "/1crn.pdb" };
+    }
+    if (o.Inputs.empty())
+    {
+      // Bumped and normal-mapped scenes, and a mesh with neither.
+      o.Inputs = { "scene:bumps", "scene:normalmap", data + "/stanford-bunny.obj" };
     }
     if (!o.SizeGiven)
     {

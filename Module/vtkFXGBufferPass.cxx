@@ -450,6 +450,12 @@ void vtkFXGBufferPass::Render(const vtkRenderState* s)
   }
   this->FrameBuffer->UnBind();
   state->PopFramebufferBindings();
+  // Hand the G-buffer's draws to the rasteriser now. On llvmpipe, leaving
+  // them queued until a later pass samples the channels made scenes with
+  // many triangles several times slower (vtkfx-bench do, scene:bumps at
+  // 640x480: 65 -> 17 ms for directional occlusion, and 65 -> 24 ms for
+  // the next window's vtkSSAOPass frame); a GPU driver only submits.
+  glFlush();
 }
 
 bool vtkFXGBufferPass::PreReplaceShaderValues(std::string& vertexShader,

@@ -70,12 +70,34 @@ float fxGuideWeight(float d0, vec3 n0, vec4 g)
     return 0.0; // background never contributes
   }
   float r = (g.w - d0) / (fxDepthSigma * d0);
+  // c^FX_NORMAL_POWER by squaring, unrolled at compile time: a loop here,
+  // nested in the taps' loop, cost llvmpipe a quarter of a directional
+  // occlusion frame (10 ms at 640x480).
   float c = max(dot(n0, g.xyz), 0.0);
   float wn = 1.0;
-  for (int i = 0; i < FX_NORMAL_POWER; ++i)
-  {
-    wn *= c;
-  }
+#if (FX_NORMAL_POWER & 1) != 0
+  wn *= c;
+#endif
+  c *= c;
+#if (FX_NORMAL_POWER & 2) != 0
+  wn *= c;
+#endif
+  c *= c;
+#if (FX_NORMAL_POWER & 4) != 0
+  wn *= c;
+#endif
+  c *= c;
+#if (FX_NORMAL_POWER & 8) != 0
+  wn *= c;
+#endif
+  c *= c;
+#if (FX_NORMAL_POWER & 16) != 0
+  wn *= c;
+#endif
+  c *= c;
+#if (FX_NORMAL_POWER & 32) != 0
+  wn *= c;
+#endif
   return wn / (1.0 + r * r);
 }
 
