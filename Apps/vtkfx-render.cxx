@@ -62,8 +62,8 @@ struct Arguments
 // occlusion resolved with bumped normals, blur included), "toon" (banded
 // diffuse light and feature lines), "lines" (the feature lines alone) and
 // "bloom" (glow of emissive props) and "avsm" (shadows of translucent props).
-const std::vector<std::string> KnownEffects = { "ssao", "blur", "do", "toon", "lines", "bloom",
-  "avsm" };
+const std::vector<std::string> KnownEffects = { "ssao", "blur", "do", "bleed", "toon", "lines",
+  "bloom", "avsm" };
 
 void Usage(std::ostream& os)
 {
@@ -75,6 +75,7 @@ void Usage(std::ostream& os)
         "                    [--ao-quality low|medium|high] [--ao-falloff binary|cuberoot]\n"
         "LIST: comma-separated effects: ssao, blur (ssao,blur: ambient occlusion),\n"
         "      do (directional occlusion: shows bumps in the ambient term; not with ssao),\n"
+        "      bleed (with do: colour bounced off nearby occluders),\n"
         "      toon (banded light and feature lines) or lines (feature lines alone),\n"
         "      bloom (glow of emissive props), avsm (shadows cast by translucent props)\n"
         "INPUT: a .obj, .ply, .stl, .vtp, .vtk or .pdb file, or one of:";
@@ -282,6 +283,11 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
     error = "'do' (directional occlusion) replaces 'ssao': give one of them";
     return false;
   }
+  if (has("bleed") && !has("do"))
+  {
+    error = "'bleed' is directional occlusion's diffuse bleeding: use --effects do,bleed";
+    return false;
+  }
   if (has("do") && args.AOQualityGiven)
   {
     error = "--ao-quality picks an ambient-occlusion preset; 'do' has none (--ao-radius and "
@@ -392,6 +398,7 @@ int main(int argc, char* argv[])
     if (has("do"))
     {
       pipeline->SetDirectionalOcclusion(true);
+      pipeline->GetDirectionalOcclusionPass()->SetBleeding(has("bleed") ? 1.0 : 0.0);
       if (args.AORadius > 0.0)
       {
         pipeline->GetDirectionalOcclusionPass()->SetRadius(args.AORadius);

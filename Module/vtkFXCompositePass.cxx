@@ -282,6 +282,11 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
   return fs;
 }
 
+std::string vtkFXCompositePass::GetUniformLightCalls(int complexity, int lightCount)
+{
+  return UniformLightCalls(complexity, lightCount, std::string());
+}
+
 int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
 {
   // VTK's own light parameters (vtkOpenGLRenderer::UpdateLightingUniforms),

@@ -114,6 +114,16 @@ public:
   vtkGetMacro(MaximumUniformLights, int);
 
   /**
+   * GLSL that adds the first `lightCount` lights of VTK's light uniforms
+   * (vtkOpenGLRenderer::GetLightingUniforms, at lighting `complexity`) into
+   * `diffuseLight` and `specularLight` with vtkFXLightingFS.glsl's
+   * functions, for a surface of normal `n`, view-space `position`, `view`
+   * direction and `specularPower`: the composite's own light loop, for
+   * other passes that light G-buffer surfaces.
+   */
+  static std::string GetUniformLightCalls(int complexity, int lightCount);
+
+  /**
    * On the light-texture path, a positional light is left out of a tile
    * where, by VTK's attenuation, it can add less than LightCutoff to a
    * colour channel (linear units, 0..1, default 1/512: under half a level

@@ -1,9 +1,15 @@
 #include "vtkFXDirectionalOcclusionPass.h"
 
+#include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
+#include "vtkFXLightingFS.h"
 #include "vtkFXOcclusionBasis.h"
+#include "vtkFXRenderUtilities.h"
 
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
@@ -20,6 +26,148 @@ vtkFXDirectionalOcclusionPass::vtkFXDirectionalOcclusionPass()
   this->TileSize = 8;
   this->Method = Hemisphere;
   this->NumberOfSamples = 15;
+  this->DeclareOutput("bleeding");
+  this->DeclareInput("bleeding-denoised", true, true);
+}
+
+unsigned int vtkFXDirectionalOcclusionPass::GetRequiredChannels()
+{
+  return this->Superclass::GetRequiredChannels() |
+    (this->Bleeding > 0.0 ? GB::ChannelBit(GB::Albedo) : 0u);
+}
+
+vtkFXEffectPass::Output vtkFXDirectionalOcclusionPass::GetOutput(const char* name)
+{
+  if (name && std::string(name) == "bleeding")
+  {
+    Output output;
+    if (this->Bleeding > 0.0 && this->BleedingTexture)
+    {
+      output.Texture = this->BleedingTexture;
+      output.Step = this->HalfResolution ? 2 : 1;
+      output.Components = 3;
+      output.Format = vtkFXRenderUtilities::RGBA16F;
+    }
+    return output;
+  }
+  return this->Superclass::GetOutput(name);
+}
+
+int vtkFXDirectionalOcclusionPass::BleedingLights(vtkRenderer* ren)
+{
+  auto* glRenderer = vtkOpenGLRenderer::SafeDownCast(ren);
+  const int count = glRenderer && glRenderer->GetLightingComplexity() > 0
+    ? glRenderer->GetLightingCount()
+    : 0;
+  const int cap = 8;
+  if (count > cap && !this->WarnedLights)
+  {
+    vtkWarningMacro("Diffuse bleeding lights occluders with the first " << cap << " of the "
+                                                                        << count << " lights.");
+    this->WarnedLights = true;
+  }
+  return std::min(count, cap);
+}
+
+std::string vtkFXDirectionalOcclusionPass::GetExtensionDefines(vtkRenderer* ren)
+{
+  return this->Bleeding > 0.0 && this->BleedingLights(ren) > 0 ? "#define FX_BLEED 1\n"
+                                                                : std::string();
+}
+
+std::string vtkFXDirectionalOcclusionPass::GetExtensionCode(vtkRenderer* ren)
+{
+  const int lights = this->BleedingLights(ren);
+  if (this->Bleeding <= 0.0 || lights == 0)
+  {
+    return std::string();
+  }
+  auto* glRenderer = vtkOpenGLRenderer::SafeDownCast(ren);
+  // The occluder is the surface the G-buffer shows at the blocked sample's
+  // texel; it reflects albedo x its direct diffuse light, computed with the
+  // composite's own light calls (no highlights, no shadows).
+  return std::string("uniform sampler2D fxAlbedo;\nuniform sampler2D fxShadingNormal;\n") +
+    glRenderer->GetLightingUniforms() +
+    "\n#define FX_HAS_SPECULAR 0\nfloat fxDiffuseResponse(float df) { return df; }\n" +
+    vtkFXLightingFS +
+    "\nvec3 fxBleed = vec3(0.0);\n"
+    "vec3 fxOccluderLight(ivec2 q, float d)\n{\n"
+    "  vec2 code = texelFetch(fxShadingNormal, q, 0).rg;\n"
+    "  if (fxIsUnlit(code)) { return vec3(0.0); }\n"
+    "  vec3 n = fxDecodeNormal(code);\n"
+    "  vec3 rayOrigin, rayDirection;\n"
+    "  fxTexelRay(q, rayOrigin, rayDirection);\n"
+    "  vec3 position = rayOrigin + d * rayDirection;\n"
+    "  vec3 view = normalize(-position);\n"
+    "  float specularPower = 1.0;\n"
+    "  vec3 diffuseLight = vec3(0.0);\n"
+    "  vec3 specularLight = vec3(0.0);\n" +
+    vtkFXCompositePass::GetUniformLightCalls(glRenderer->GetLightingComplexity(), lights) +
+    "  return texelFetch(fxAlbedo, q, 0).rgb * diffuseLight;\n}\n";
+}
+
+void vtkFXDirectionalOcclusionPass::AddExtensionTargets(
+  vtkRenderer* ren, int width, int height, std::vector<vtkTextureObject*>& targets)
+{
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  const bool bleeding = this->Bleeding > 0.0 && this->BleedingLights(ren) > 0;
+  if (!bleeding)
+  {
+    if (this->BleedingTexture)
+    {
+      // (the framebuffer still has it attached: start a new one)
+      vtkFXRenderUtilities::Release(this->BleedingTexture, window);
+      vtkFXRenderUtilities::Release(this->FrameBuffer, window);
+    }
+    return;
+  }
+  vtkFXRenderUtilities::EnsureTexture(
+    this->BleedingTexture, window, width, height, vtkFXRenderUtilities::RGBA16F);
+  this->BleedingTexture->SetMinificationFilter(vtkTextureObject::Linear);
+  this->BleedingTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+  targets.push_back(this->BleedingTexture);
+}
+
+void vtkFXDirectionalOcclusionPass::BindExtensionInputs(vtkShaderProgram* program, vtkRenderer* ren)
+{
+  if (!program->IsUniformUsed("fxAlbedo"))
+  {
+    return;
+  }
+  vtkTextureObject* albedo = this->GBuffer->GetChannelTexture(GB::Albedo);
+  vtkTextureObject* shading = this->GBuffer->GetChannelTexture(GB::Normal);
+  if (!albedo || !shading)
+  {
+    vtkErrorMacro("Diffuse bleeding needs the G-buffer's albedo and normal channels.");
+    return;
+  }
+  for (auto* texture : { albedo, shading })
+  {
+    texture->Activate();
+    this->ExtensionBound.push_back(texture);
+  }
+  program->SetUniformi("fxAlbedo", albedo->GetTextureUnit());
+  program->SetUniformi("fxShadingNormal", shading->GetTextureUnit());
+  vtkOpenGLRenderer::SafeDownCast(ren)->UpdateLightingUniforms(program);
+}
+
+void vtkFXDirectionalOcclusionPass::UnbindExtensionInputs()
+{
+  for (auto* texture : this->ExtensionBound)
+  {
+    texture->Deactivate();
+  }
+  this->ExtensionBound.clear();
+}
+
+vtkTextureObject* vtkFXDirectionalOcclusionPass::BleedingToShow()
+{
+  if (this->Bleeding <= 0.0 || !this->BleedingTexture)
+  {
+    return nullptr;
+  }
+  Output denoised = this->GetInput("bleeding-denoised");
+  return denoised.Texture ? denoised.Texture : this->BleedingTexture.GetPointer();
 }
 
 vtkFXDirectionalOcclusionPass::~vtkFXDirectionalOcclusionPass() = default;
@@ -32,12 +180,22 @@ vtkTextureObject* vtkFXDirectionalOcclusionPass::GeometricNormalChannel() const
 std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
 {
   const bool geometric = this->GeometricNormalChannel() != nullptr;
+  const bool bleeding = this->BleedingToShow() != nullptr;
   switch (hook)
   {
     case Declarations:
       // The occlusion texture's layout is vtkFXSSAOPass's (see there).
       return std::string("uniform sampler2D @occlusion;\nuniform vec2 @scale;\nuniform vec2 @offset;\n") +
-        (geometric ? "uniform sampler2D @geometric;\n" : "") + vtkFXOcclusionBasis;
+        (geometric ? "uniform sampler2D @geometric;\n" : "") +
+        (bleeding ? "uniform sampler2D @bleeding;\nuniform float @bleedingStrength;\n" : "") +
+        vtkFXOcclusionBasis;
+    case Color:
+      // One bounce off the occluders: irradiance x this surface's albedo
+      // (the bleeding texture shares the occlusion's layout).
+      return bleeding
+        ? "  if (lit)\n  {\n    color += @bleedingStrength * albedo.rgb * "
+          "max(texture(@bleeding, texCoord * @scale + @offset).rgb, vec3(0.0));\n  }"
+        : std::string();
     case Ambient:
     {
       if (this->ShowChannels)
@@ -77,6 +235,13 @@ void vtkFXDirectionalOcclusionPass::BindCompositeResources(
     this->GeometricNormalBound = geometric;
     program->SetUniformi((prefix + "geometric").c_str(), geometric->GetTextureUnit());
   }
+  if (vtkTextureObject* bleeding = this->BleedingToShow())
+  {
+    bleeding->Activate();
+    this->BleedingBound = bleeding;
+    program->SetUniformi((prefix + "bleeding").c_str(), bleeding->GetTextureUnit());
+    program->SetUniformf((prefix + "bleedingStrength").c_str(), static_cast<float>(this->Bleeding));
+  }
 }
 
 void vtkFXDirectionalOcclusionPass::UnbindCompositeResources()
@@ -87,11 +252,18 @@ void vtkFXDirectionalOcclusionPass::UnbindCompositeResources()
     this->GeometricNormalBound->Deactivate();
     this->GeometricNormalBound = nullptr;
   }
+  if (this->BleedingBound)
+  {
+    this->BleedingBound->Deactivate();
+    this->BleedingBound = nullptr;
+  }
 }
 
 void vtkFXDirectionalOcclusionPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->UnbindCompositeResources();
+  this->UnbindExtensionInputs();
+  vtkFXRenderUtilities::Release(this->BleedingTexture, w);
   this->Superclass::ReleaseGraphicsResources(w);
 }
 
@@ -99,5 +271,6 @@ void vtkFXDirectionalOcclusionPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ShowChannels: " << this->ShowChannels << "\n";
+  os << indent << "Bleeding: " << this->Bleeding << "\n";
   os << indent << "Samples used: " << this->GetEffectiveNumberOfSamples() << "\n";
 }

@@ -54,6 +54,21 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
+   * Diffuse bleeding, the seed's extra (0..10, default 0: off, its texture
+   * freed): light the occluders within R reflect onto the surface, one
+   * bounce. Each blocked sample adds its occluder's albedo times the
+   * occluder's unshadowed direct diffuse light (VTK's light model, the
+   * first 8 lights), and the mean over the samples is the irradiance from
+   * that bounce in the units of VTK's diffuse light, written to the output
+   * "bleeding" (RGBA16F; blurred like the channels when the pipeline runs
+   * it, input "bleeding-denoised"). The composite adds Bleeding x the
+   * surface's albedo x that to lit pixels: 1 is the physical one bounce.
+   * Costs two more fetches per blocked sample and a second blur.
+   */
+  vtkSetClampMacro(Bleeding, double, 0.0, 10.0);
+  vtkGetMacro(Bleeding, double);
+
+  /**
    * For inspection: the composite's ambient visibility becomes the three
    * channels as red, green and blue instead of their resolve (with
    * vtkFXCompositePass::DebugOcclusion, an image of the channels). Default
@@ -63,6 +78,8 @@ public:
   vtkGetMacro(ShowChannels, bool);
   vtkBooleanMacro(ShowChannels, bool);
 
+  unsigned int GetRequiredChannels() override;
+  Output GetOutput(const char* name) override;
   std::string GetCompositeCode(int hook) override;
   void BindCompositeResources(vtkShaderProgram* program, const std::string& prefix) override;
   void UnbindCompositeResources() override;
@@ -73,9 +90,24 @@ protected:
   ~vtkFXDirectionalOcclusionPass() override;
 
   vtkTextureObject* GeometricNormalChannel() const;
+  vtkTextureObject* BleedingToShow();
+
+  // vtkFXSSAOPass's hooks: the bleeding's shader code, target and inputs.
+  std::string GetExtensionDefines(vtkRenderer* ren) override;
+  std::string GetExtensionCode(vtkRenderer* ren) override;
+  void AddExtensionTargets(
+    vtkRenderer* ren, int width, int height, std::vector<vtkTextureObject*>& targets) override;
+  void BindExtensionInputs(vtkShaderProgram* program, vtkRenderer* ren) override;
+  void UnbindExtensionInputs() override;
+  int BleedingLights(vtkRenderer* ren);
 
   bool ShowChannels = false;
+  double Bleeding = 0.0;
+  bool WarnedLights = false;
   vtkTextureObject* GeometricNormalBound = nullptr;
+  vtkTextureObject* BleedingBound = nullptr;
+  vtkSmartPointer<vtkTextureObject> BleedingTexture;
+  std::vector<vtkTextureObject*> ExtensionBound;
 
 private:
   vtkFXDirectionalOcclusionPass(const vtkFXDirectionalOcclusionPass&) = delete;

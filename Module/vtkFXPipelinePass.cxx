@@ -181,6 +181,11 @@ vtkFXPipelinePass::vtkFXPipelinePass()
   this->DirectionalOcclusionPass->SetInputConnection("denoised", "do-blur.blurred");
   this->DirectionalOcclusionBlurPass->SetNumberOfComponents(3);
   this->DirectionalOcclusionBlurPass->UpsampleOff();
+  this->BleedingBlurPass = vtkSmartPointer<vtkFXBilateralBlurPass>::New();
+  this->BleedingBlurPass->SetInputConnection("source", "do.bleeding");
+  this->DirectionalOcclusionPass->SetInputConnection("bleeding-denoised", "do-bleed-blur.blurred");
+  this->BleedingBlurPass->SetNumberOfComponents(3);
+  this->BleedingBlurPass->UpsampleOff();
 
   this->GBufferPass->SetDelegatePass(this->OpaquePass);
   this->CompositePass->SetGBuffer(this->GBufferPass);
@@ -511,6 +516,10 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
   using E = vtkFXEffectPass;
   this->Sequence->ClearPasses();
   this->HDRSequence->ClearPasses();
+  // The bleeding's blur has work only while directional occlusion bleeds
+  // (which needs a light).
+  this->BleedingBlurPass->SetEnabled(
+    this->DirectionalOcclusionPass->GetBleeding() > 0.0 && scene.LightingComplexity > 0);
   const bool deferred = !scene.OpaqueProps.empty();
   if (this->GBufferRan && !deferred)
   {
@@ -638,11 +647,13 @@ void vtkFXPipelinePass::SetDirectionalOcclusion(bool enabled)
     this->SetAmbientOcclusion(false);
     this->AddEffect("do", this->DirectionalOcclusionPass);
     this->AddEffect("do-blur", this->DirectionalOcclusionBlurPass);
+    this->AddEffect("do-bleed-blur", this->BleedingBlurPass);
   }
   else
   {
     this->RemoveEffect("do");
     this->RemoveEffect("do-blur");
+    this->RemoveEffect("do-bleed-blur");
   }
   this->Modified();
 }

@@ -147,7 +147,9 @@ public:
    * 000): adds a vtkFXDirectionalOcclusionPass ("do") and a
    * vtkFXBilateralBlurPass ("do-blur", Gaussian of radius 4 at half
    * resolution: the seed's 17-texel blur), connected as ssao/ssao-blur
-   * are. It replaces ambient occlusion: the pipeline runs one of the two,
+   * are, and, while its Bleeding is above 0, a second blur
+   * ("do-bleed-blur") of its output "bleeding" into its input
+   * "bleeding-denoised". It replaces ambient occlusion: the pipeline runs one of the two,
    * so turning either on turns the other off. Off by default. The falloff
    * (SetAmbientOcclusionFalloff) applies to both.
    */
@@ -258,6 +260,7 @@ protected:
   bool DirectionalOcclusion = false;
   vtkSmartPointer<vtkFXDirectionalOcclusionPass> DirectionalOcclusionPass;
   vtkSmartPointer<vtkFXBilateralBlurPass> DirectionalOcclusionBlurPass;
+  vtkSmartPointer<vtkFXBilateralBlurPass> BleedingBlurPass;
   int AmbientOcclusionQuality = Medium;
   void ApplyAmbientOcclusionPreset();
   std::vector<EffectSlot> Effects;

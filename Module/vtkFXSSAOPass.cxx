@@ -278,15 +278,20 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
           << "\n#define FX_CHANNELS " << this->Channels << "\n#define FX_TILE " << this->TileSize
           << "\n#define FX_FALLOFF " << this->Falloff
           << "\n#define FX_SLICES " << slices
-          << "\n#define FX_STEPS " << std::max(1, this->NumberOfSamples / (2 * slices)) << "\n";
+          << "\n#define FX_STEPS " << std::max(1, this->NumberOfSamples / (2 * slices)) << "\n"
+          << this->GetExtensionDefines(ren);
   std::string fs = vtkFXSSAOFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str(), false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXViewPosition::Dec", vtkFXViewPosition, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXOcclusionBasis::Dec",
     this->Channels == 3 ? vtkFXOcclusionBasis : "", false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXExtension::Dec", this->GetExtensionCode(ren), false);
 
-  vtkFXRenderUtilities::RenderTargetScope target(window, this->FrameBuffer, this->Occlusion);
+  std::vector<vtkTextureObject*> targets = { this->Occlusion };
+  this->AddExtensionTargets(ren, static_cast<int>(this->Occlusion->GetWidth()),
+    static_cast<int>(this->Occlusion->GetHeight()), targets);
+  vtkFXRenderUtilities::RenderTargetScope target(window, this->FrameBuffer, targets);
   vtkShaderProgram* program =
     vtkFXRenderUtilities::ReadyQuad(this->Quad, window, fs);
   if (!program)
@@ -312,7 +317,9 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   program->SetUniformf("fxRadius", static_cast<float>(this->EffectiveRadius));
   program->SetUniformf("fxBias", static_cast<float>(this->Bias * this->EffectiveRadius));
   this->SetKernelUniforms(program);
+  this->BindExtensionInputs(program, ren);
   this->Quad.Helper->Render();
+  this->UnbindExtensionInputs();
   depth->Deactivate();
   normal->Deactivate();
 }

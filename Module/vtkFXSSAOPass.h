@@ -41,6 +41,7 @@
 #include "vtkSmartPointer.h"
 
 #include <string>
+#include <vector>
 
 class vtkOpenGLFramebufferObject;
 class vtkRenderer;
@@ -169,6 +170,18 @@ protected:
   // (hemisphere only), an 8x8 tile.
   int GetEffectiveMethod() const;
   int GetOcclusionFormat() const;
+
+  ///@{
+  // Hooks around Render's one full-screen pass, for subclasses that compute
+  // more in it (default: nothing): defines and code for the shader's
+  // FXExtension tags, further render targets (colour attachments 1, ...),
+  // and the inputs that code reads.
+  virtual std::string GetExtensionDefines(vtkRenderer*) { return std::string(); }
+  virtual std::string GetExtensionCode(vtkRenderer*) { return std::string(); }
+  virtual void AddExtensionTargets(vtkRenderer*, int, int, std::vector<vtkTextureObject*>&) {}
+  virtual void BindExtensionInputs(vtkShaderProgram*, vtkRenderer*) {}
+  virtual void UnbindExtensionInputs() {}
+  ///@}
   void SetKernelUniforms(vtkShaderProgram* program) const;
   void SetHemisphereKernel(vtkShaderProgram* program) const;
 

@@ -59,12 +59,18 @@ const float fxPi = 3.14159265358979;
 
 //VTK::FXOcclusionBasis::Dec
 
+#ifndef FX_BLEED
+#define FX_BLEED 0
+#endif
+
 // Ray through the centre of G-buffer texel `texel`: origin and direction,
 // so that the surface there is at origin + depth * direction.
 void fxTexelRay(ivec2 texel, out vec3 origin, out vec3 direction)
 {
   fxRay((vec2(texel) + 0.5) / vec2(fxGBufferSize) * 2.0 - 1.0, origin, direction);
 }
+
+//VTK::FXExtension::Dec
 
 #if FX_METHOD == 0
 #if FX_CHANNELS == 3
@@ -138,6 +144,10 @@ fxOcclusionValue fxHemisphereOcclusion(vec3 p, vec3 n, float depth, vec2 rotatio
       // the receiver and the sample.
       float gap = depth - sceneDepth;
       float blocked = gap < fxRadius ? 1.0 : max(0.0, 2.0 - gap / fxRadius);
+#if FX_BLEED
+      // (fxBleed and fxOccluderLight: vtkFXDirectionalOcclusionPass)
+      fxBleed += blocked * fxOccluderLight(texelQ, sceneDepth);
+#endif
 #if FX_CHANNELS == 3
       // The sample's direction in the fixed frame (t0, b0, n).
       vec3 d = vec3(rotation.x * k.x - rotation.y * k.y, rotation.y * k.x + rotation.x * k.y, k.z);
@@ -305,6 +315,9 @@ void main()
     // No surface, or one VTK does not light: open.
 #if FX_CHANNELS == 3
     gl_FragData[0] = vec4(1.0);
+#if FX_BLEED
+    gl_FragData[1] = vec4(0.0, 0.0, 0.0, 1.0);
+#endif
 #else
     gl_FragData[0] = vec4(1.0, depth, 0.0, 1.0);
 #endif
@@ -318,6 +331,9 @@ void main()
 #if FX_CHANNELS == 3
   // The blur builds its own guide for three values.
   gl_FragData[0] = vec4(fxHemisphereOcclusion(p, n, depth, fxTile[tileEntry].xy), 1.0);
+#if FX_BLEED
+  gl_FragData[1] = vec4(fxBleed / float(FX_SAMPLES), 1.0);
+#endif
 #else
 #if FX_METHOD == 0
   float ao = fxHemisphereOcclusion(p, n, depth, fxTile[tileEntry].xy);

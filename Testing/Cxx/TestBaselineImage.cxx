@@ -47,11 +47,13 @@ int TestBaselineImage(int argc, char* argv[])
   }
   else if (view.rfind("do-", 0) == 0)
   {
-    // do-channels|resolved|lit: directional occlusion's three channels
-    // (as RGB), their resolve with the shading normals, the lit image.
+    // do-channels|resolved|lit|bleed: directional occlusion's three
+    // channels (as RGB), their resolve with the shading normals, the lit
+    // image, the lit image with diffuse bleeding.
     pipeline->DirectionalOcclusionOn();
     pipeline->GetDirectionalOcclusionPass()->SetShowChannels(view == "do-channels");
-    pipeline->GetCompositePass()->SetDebugOcclusion(view != "do-lit");
+    pipeline->GetDirectionalOcclusionPass()->SetBleeding(view == "do-bleed" ? 1.0 : 0.0);
+    pipeline->GetCompositePass()->SetDebugOcclusion(view != "do-lit" && view != "do-bleed");
   }
   else if (view == "toon" || view == "lines")
   {

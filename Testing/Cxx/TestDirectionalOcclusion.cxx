@@ -19,12 +19,19 @@
 //    beside one with it has the same normal in both channels, bit for bit;
 // 5. the bumped crease under scale 1e-6 / 1e6, translated by 1e6, parallel
 //    projection and near/far 1e-6: channels finite in [0, 1], both normals
-//    finite and of unit length.
+//    finite and of unit length;
+// 6. diffuse bleeding off by default (no texture, no pass); on, with a red
+//    wall lit by one directional light, the floor receives
+//    rho_wall x D_wall x (1 - A(h)) (every blocked ray ends on the wall,
+//    whose direct light D_wall is uniform), red before green and blue in
+//    the wall's proportions.
 #include "vtkFXDirectionalOcclusionPass.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXOcclusionTestUtilities.h"
 
 #include "vtkFloatArray.h"
+#include "vtkLight.h"
+#include "vtkProperty.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
@@ -495,6 +502,95 @@ int TestDirectionalOcclusion(int, char*[])
     }
     std::cout << c.Name << ": " << surface << " surface pixels, channels in range" << std::endl;
     FX_CHECK(surface > 1000, c.Name << ": the crease is seen");
+  }
+
+  // 6. Diffuse bleeding.
+  {
+    Setup s = MakeDOSetup(window, 63);
+    BuildCrease(s, 0.0);
+    vtkFXDirectionalOcclusionPass* dop = s.Pipeline->GetDirectionalOcclusionPass();
+    window->Render();
+    FX_CHECK(dop->GetBleeding() == 0.0 && !dop->GetOutputTexture("bleeding") &&
+        vtkFXTest::Passes(s.Pipeline).find("bleed") == std::string::npos,
+      "bleeding is off by default: no texture, no blur");
+    const double rho[3] = { 0.8, 0.3, 0.1 };
+    s.Renderer->GetActors()->GetLastActor()->GetProperty()->SetColor(rho[0], rho[1], rho[2]);
+    vtkNew<vtkLight> sun; // from (0, 1, 1) towards the crease: n . l = 1/sqrt 2 on both planes
+    sun->SetLightTypeToSceneLight();
+    sun->SetPosition(0, 1, 1);
+    sun->SetFocalPoint(0, 0, 0);
+    s.Renderer->RemoveAllLights();
+    s.Renderer->AddLight(sun);
+    dop->SetBleeding(1.0);
+    window->Render();
+    FX_CHECK(vtkFXTest::Passes(s.Pipeline).find("do-bleed-blur") != std::string::npos,
+      "the bleeding is blurred: " << vtkFXTest::Passes(s.Pipeline));
+    vtkTextureObject* bled = s.Pipeline->GetEffect("do-bleed-blur")->GetOutputTexture();
+    FX_CHECK(bled, "blurred bleeding");
+    std::vector<float> bleed[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      bleed[k] = OcclusionAtPixels(bled, k);
+    }
+    const auto world = WorldPositions(s.Renderer, s.Pipeline->GetGBufferPass());
+    const double direct = std::sqrt(0.5);
+    double binGot[10][3] = {}, binWant[10] = {};
+    int binCount[10] = {};
+    double far = 0.0;
+    for (size_t i = 0; i < world.size(); ++i)
+    {
+      const auto& p = world[i];
+      for (int k = 0; k < 3; ++k)
+      {
+        FX_CHECK(std::isfinite(bleed[k][i]) && bleed[k][i] >= 0.0f, "bleeding at pixel " << i);
+      }
+      if (p[3] > 0.0 && std::fabs(p[1]) < 1e-4 && p[2] > 2.5 * Radius)
+      {
+        far = std::max(far, static_cast<double>(bleed[0][i]));
+      }
+      if (!OnFloorNearWall(p))
+      {
+        continue;
+      }
+      const int bin = std::min(9, static_cast<int>(std::cbrt(p[2] / Radius) * 10));
+      for (int k = 0; k < 3; ++k)
+      {
+        binGot[bin][k] += bleed[k][i] / (rho[k] * direct);
+      }
+      binWant[bin] += 1.0 - vtkFXTest::CreaseOcclusionBinary(p[2], Radius);
+      ++binCount[bin];
+    }
+    double worst = 0.0;
+    int bins = 0;
+    for (int b = 4; b < 10; ++b)
+    {
+      if (binCount[b] < 20)
+      {
+        continue;
+      }
+      ++bins;
+      const double want = binWant[b] / binCount[b];
+      std::cout << "  bleeding / (rho D) in bin " << b << ": ";
+      for (int k = 0; k < 3; ++k)
+      {
+        const double got = binGot[b][k] / binCount[b];
+        std::cout << got << " ";
+        worst = std::max(worst, std::fabs(got - want));
+      }
+      std::cout << "(1 - A: " << want << ")" << std::endl;
+    }
+    std::cout << "bleeding: worst bin " << worst << ", largest far from the wall " << far
+              << std::endl;
+    FX_CHECK(bins >= 4, "bands near the crease");
+    // The blocked fraction is the estimate of 1 - A that the channels' mean
+    // is held to (0.03 per bin); the albedo's 8 bits add 1/255 relative to
+    // the smallest component (0.1): 0.04.
+    FX_CHECK(worst <= 0.03 + 0.04, "the floor receives the wall's light times 1 - A(h)");
+    FX_CHECK(far <= 1e-3, "no bleeding beyond R from the wall");
+    // Off again: the texture goes.
+    dop->SetBleeding(0.0);
+    window->Render();
+    FX_CHECK(!dop->GetOutputTexture("bleeding"), "bleeding off frees its texture");
   }
   return EXIT_SUCCESS;
 }
