@@ -448,6 +448,86 @@ std::vector<float> WorldShadingNormals(const Method& m)
   return world;
 }
 
+// Diffuse bleeding on one scene (vtkfx-bench do): the directional
+// occlusion's blurred bleeding irradiance, read back, against the one-bounce
+// reference (vtkFXReferenceAO::TraceBleeding), next to none at all; and the
+// frame with bleeding against the frame without, interleaved. The scene
+// keeps its own materials (the bleeding needs their albedo). Appends to the
+// bleeding report; prints the figures.
+void BenchBleeding(const Options& o, const std::string& input, double radius, int rays,
+  std::vector<vtkSmartPointer<vtkRenderWindow>>& windows, std::ofstream& csv, vtkTimerLog* timer)
+{
+  std::vector<Method> runs(2, Method{ Kind::FXDirectional, "vtkfx-do" });
+  runs[0].Setting = "no bleeding";
+  runs[1].Setting = "bleeding 1";
+  std::string error;
+  for (size_t i = 0; i < runs.size(); ++i)
+  {
+    Method& m = runs[i];
+    m.Window = windows[i];
+    double bounds[6];
+    m.Renderer = Stage(m.Window, input, error, bounds);
+    if (!m.Renderer)
+    {
+      std::cerr << "vtkfx-bench: " << error << "\n";
+      return;
+    }
+    vtkNew<vtkFXPipelinePass> pipeline;
+    pipeline->DirectionalOcclusionOn();
+    pipeline->GetDirectionalOcclusionPass()->SetRadius(radius);
+    pipeline->GetDirectionalOcclusionPass()->SetBleeding(i == 1 ? 1.0 : 0.0);
+    m.Renderer->SetPass(pipeline);
+    m.Window->Render();
+  }
+  TimeFramesInTurn(runs, o.Frames, FileTag(input) + " bleeding", timer);
+  auto* pipeline = vtkFXPipelinePass::SafeDownCast(runs[1].Renderer->GetPass());
+  vtkFXEffectPass* blur = pipeline->GetEffect("do-bleed-blur");
+  vtkTextureObject* texture = blur ? blur->GetOutputTexture() : nullptr;
+  const std::vector<float> texels = Download(runs[1].Window, texture, 4);
+  vtkFXReferenceAO reference;
+  if (texels.empty() || !reference.Build(runs[1].Renderer, error))
+  {
+    std::cerr << "vtkfx-bench: no bleeding to measure on " << input << " " << error << "\n";
+    return;
+  }
+  const std::vector<float> truth =
+    reference.TraceBleeding(runs[1].Renderer, o.Width, o.Height, radius, rays);
+  const int tw = static_cast<int>(texture->GetWidth()), th = static_cast<int>(texture->GetHeight());
+  const int step = o.Width / tw >= 2 ? 2 : 1;
+  double sum = 0.0, sumNone = 0.0;
+  size_t n = 0;
+  for (int y = 0; y < o.Height; ++y)
+  {
+    for (int x = 0; x < o.Width; ++x)
+    {
+      const size_t i = static_cast<size_t>(y) * o.Width + x;
+      if (truth[3 * i] < 0.0f)
+      {
+        continue;
+      }
+      const size_t t = static_cast<size_t>(std::min(y / step, th - 1)) * tw + std::min(x / step, tw - 1);
+      for (int c = 0; c < 3; ++c)
+      {
+        const double d = texels[4 * t + c] - truth[3 * i + c];
+        sum += d * d;
+        sumNone += truth[3 * i + c] * truth[3 * i + c];
+      }
+      ++n;
+    }
+  }
+  const double rmse = n ? std::sqrt(sum / (3.0 * n)) : 0.0;
+  const double rmseNone = n ? std::sqrt(sumNone / (3.0 * n)) : 0.0;
+  const double frame = Median(runs[1].FrameMs), without = Median(runs[0].FrameMs);
+  const auto psnr = [](double e) { return e > 0.0 ? 20.0 * std::log10(1.0 / e) : 99.0; };
+  csv << input << ",no-bleeding,none,0," << rmseNone << "," << psnr(rmseNone) << "\n";
+  csv << input << ",vtkfx-do,bleeding 1," << frame - without << "," << rmse << "," << psnr(rmse)
+      << "\n";
+  std::cout << std::fixed << std::setprecision(4) << FileTag(input)
+            << "  bleeding irradiance RMSE " << rmse << " (none: " << rmseNone << ")  frame "
+            << std::setprecision(2) << frame << " ms against " << without << " ms without ("
+            << frame / without << "x)\n";
+}
+
 double PSNROf(const Method& m)
 {
   return m.PSNR;
@@ -478,6 +558,14 @@ int BenchAO(const Options& o)
   std::vector<Method> methods =
     directional ? MakeDirectionalMethods(o.Falloff) : MakeMethods(o.Falloff);
   const Kind fxKind = directional ? Kind::FXDirectional : Kind::FX;
+  std::ofstream bleedingCsv;
+  std::vector<vtkSmartPointer<vtkRenderWindow>> bleedingWindows;
+  if (directional)
+  {
+    bleedingCsv.open((o.Out + "/do-bleeding.csv").c_str());
+    bleedingCsv << "scene,method,setting,ms,rmse,psnr\n";
+    bleedingWindows = { MakeWindow(o), MakeWindow(o) };
+  }
   for (auto& m : methods)
   {
     m.Window = MakeWindow(o);
@@ -589,6 +677,10 @@ int BenchAO(const Options& o)
     }
     std::cout << std::flush;
     const std::string tag = FileTag(input);
+    if (directional)
+    {
+      BenchBleeding(o, input, radius, rays, bleedingWindows, bleedingCsv, timer);
+    }
     const std::string what = directional ? "directional occlusion" : "AO";
     WritePlot(methods, tag + ": " + what + " error against time (" + falloffName + " falloff)",
       "PSNR against ray-traced " + what + " (dB)", PSNROf,

@@ -14,6 +14,9 @@
 #include "vtkPeriodicTable.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkTimerLog.h"
@@ -23,6 +26,7 @@
 #include <embree3/rtcore.h>
 
 #include <algorithm>
+#include <array>
 #include <iostream>
 #include <atomic>
 #include <cmath>
@@ -182,9 +186,18 @@ struct vtkFXReferenceAO::Internals
   void Attach(RTCGeometry geometry)
   {
     rtcCommitGeometry(geometry);
-    rtcAttachGeometry(this->Scene, geometry);
+    const unsigned int id = rtcAttachGeometry(this->Scene, geometry);
     rtcReleaseGeometry(geometry);
+    if (this->Albedo.size() <= id)
+    {
+      this->Albedo.resize(id + 1, { 0.0, 0.0, 0.0 });
+    }
+    this->Albedo[id] = this->CurrentAlbedo;
   }
+
+  // Per geometry: its actor's albedo (VTK's diffuse colour x Diffuse).
+  std::array<double, 3> CurrentAlbedo = { 0.0, 0.0, 0.0 };
+  std::vector<std::array<double, 3>> Albedo;
 };
 
 vtkFXReferenceAO::vtkFXReferenceAO()
@@ -217,6 +230,12 @@ bool vtkFXReferenceAO::Build(vtkRenderer* renderer, std::string& error)
     }
     vtkNew<vtkMatrix4x4> matrix;
     actor->GetMatrix(matrix);
+    double color[3];
+    actor->GetProperty()->GetDiffuseColor(color);
+    for (int c = 0; c < 3; ++c)
+    {
+      this->Impl->CurrentAlbedo[c] = actor->GetProperty()->GetDiffuse() * color[c];
+    }
     if (auto* molecule = vtkMoleculeMapper::SafeDownCast(actor->GetMapper()))
     {
       added += this->Impl->AddMolecule(molecule, matrix) ? 1 : 0;
@@ -291,7 +310,7 @@ double Hash(unsigned int a, unsigned int b)
 }
 
 bool Intersect(RTCScene scene, const double o[3], const double d[3], double tnear, double tfar,
-  double& t, double normal[3])
+  double& t, double normal[3], unsigned int* geometry = nullptr)
 {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -315,6 +334,10 @@ bool Intersect(RTCScene scene, const double o[3], const double d[3], double tnea
     return false;
   }
   t = rh.ray.tfar;
+  if (geometry)
+  {
+    *geometry = rh.hit.geomID;
+  }
   normal[0] = rh.hit.Ng_x;
   normal[1] = rh.hit.Ng_y;
   normal[2] = rh.hit.Ng_z;
@@ -459,5 +482,186 @@ vtkFXReferenceAO::Result vtkFXReferenceAO::Trace(
   result.StandardErrorRMS = result.CoveredPixels ? std::sqrt(total / result.CoveredPixels) : 0.0;
   timer->StopTimer();
   result.Seconds = timer->GetElapsedTime();
+  return result;
+}
+
+namespace
+{
+// A light as VTK's Phong model applies it (vtkFXLightingFS.glsl), in world
+// coordinates: colour x intensity, direction from the light, position,
+// attenuation and cone.
+struct WorldLight
+{
+  double Color[3];
+  double Direction[3];
+  double Position[3];
+  double Attenuation[3];
+  double ConeAngle;
+  double Exponent;
+  bool Positional;
+};
+
+std::vector<WorldLight> WorldLights(vtkRenderer* renderer)
+{
+  std::vector<WorldLight> lights;
+  vtkLightCollection* collection = renderer->GetLights();
+  vtkCollectionSimpleIterator it;
+  collection->InitTraversal(it);
+  while (vtkLight* light = collection->GetNextLight(it))
+  {
+    if (light->GetSwitch() <= 0)
+    {
+      continue;
+    }
+    WorldLight l;
+    double color[3], focal[3];
+    light->GetDiffuseColor(color);
+    light->GetTransformedPosition(l.Position);
+    light->GetTransformedFocalPoint(focal);
+    for (int c = 0; c < 3; ++c)
+    {
+      l.Color[c] = light->GetIntensity() * color[c];
+      l.Direction[c] = focal[c] - l.Position[c];
+    }
+    vtkMath::Normalize(l.Direction);
+    light->GetAttenuationValues(l.Attenuation);
+    l.ConeAngle = light->GetConeAngle();
+    l.Exponent = light->GetExponent();
+    l.Positional = light->GetPositional() != 0;
+    lights.push_back(l);
+  }
+  return lights;
+}
+
+// VTK's diffuse light at a point of normal n (no shadows).
+void DirectLight(const std::vector<WorldLight>& lights, const double p[3], const double n[3],
+  double out[3])
+{
+  out[0] = out[1] = out[2] = 0.0;
+  for (const WorldLight& l : lights)
+  {
+    double toSurface[3] = { l.Direction[0], l.Direction[1], l.Direction[2] };
+    double attenuation = 1.0;
+    if (l.Positional)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        toSurface[c] = p[c] - l.Position[c];
+      }
+      const double d = vtkMath::Normalize(toSurface);
+      attenuation = 1.0 / (l.Attenuation[0] + l.Attenuation[1] * d + l.Attenuation[2] * d * d);
+      if (l.ConeAngle < 90.0)
+      {
+        const double coneDot = vtkMath::Dot(toSurface, l.Direction);
+        attenuation = coneDot >= std::cos(vtkMath::RadiansFromDegrees(l.ConeAngle))
+          ? attenuation * std::pow(coneDot, l.Exponent)
+          : 0.0;
+      }
+    }
+    const double df = std::max(0.0, -attenuation * vtkMath::Dot(n, toSurface));
+    for (int c = 0; c < 3; ++c)
+    {
+      out[c] += df * l.Color[c];
+    }
+  }
+}
+}
+
+std::vector<float> vtkFXReferenceAO::TraceBleeding(
+  vtkRenderer* renderer, int width, int height, double radius, int raysPerPixel, int threads) const
+{
+  std::vector<float> result(3 * static_cast<size_t>(width) * height, -1.0f);
+  if (!this->Impl->Scene)
+  {
+    return result;
+  }
+  const std::vector<WorldLight> lights = WorldLights(renderer);
+  vtkNew<vtkMatrix4x4> inverse;
+  inverse->DeepCopy(renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
+    static_cast<double>(width) / height, -1, 1));
+  inverse->Invert();
+  const int side = std::max(1, static_cast<int>(std::ceil(std::sqrt(raysPerPixel))));
+  const int rays = side * side;
+  RTCScene scene = this->Impl->Scene;
+  const auto& albedo = this->Impl->Albedo;
+  std::atomic<int> nextRow(0);
+  auto work = [&]() {
+    for (int y = nextRow++; y < height; y = nextRow++)
+    {
+      for (int x = 0; x < width; ++x)
+      {
+        double o[3], d[3], t, n[3];
+        PixelRay(inverse, x, y, width, height, o, d);
+        if (!Intersect(scene, o, d, 0.0, 1e30, t, n) || vtkMath::Normalize(n) == 0.0)
+        {
+          continue;
+        }
+        if (vtkMath::Dot(n, d) > 0.0)
+        {
+          n[0] = -n[0], n[1] = -n[1], n[2] = -n[2];
+        }
+        const double p[3] = { o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2] };
+        double helper[3] = { 0, 0, 1 };
+        if (std::fabs(n[2]) > 0.9)
+        {
+          helper[0] = 1, helper[2] = 0;
+        }
+        double tx[3], ty[3];
+        vtkMath::Cross(helper, n, tx);
+        vtkMath::Normalize(tx);
+        vtkMath::Cross(n, tx, ty);
+        const double offset = 1e-4 * radius + 1e-6 * (t + std::max(std::fabs(p[0]),
+          std::max(std::fabs(p[1]), std::fabs(p[2]))));
+        const double start[3] = { p[0] + offset * n[0], p[1] + offset * n[1], p[2] + offset * n[2] };
+        const unsigned int pixel = static_cast<unsigned int>(y * width + x);
+        double sum[3] = { 0.0, 0.0, 0.0 };
+        for (int s = 0; s < rays; ++s)
+        {
+          const double u1 = ((s % side) + Hash(pixel, 2 * s)) / side;
+          const double u2 = ((s / side) + Hash(pixel, 2 * s + 1)) / side;
+          const double r = std::sqrt(u1), phi = 2.0 * vtkMath::Pi() * u2;
+          const double lx = r * std::cos(phi), ly = r * std::sin(phi);
+          const double lz = std::sqrt(std::max(0.0, 1.0 - u1));
+          double w[3];
+          for (int c = 0; c < 3; ++c)
+          {
+            w[c] = lx * tx[c] + ly * ty[c] + lz * n[c];
+          }
+          double hitT, hitN[3];
+          unsigned int geometry = 0;
+          if (!Intersect(scene, start, w, 0.0, radius, hitT, hitN, &geometry) ||
+            vtkMath::Normalize(hitN) == 0.0 || geometry >= albedo.size())
+          {
+            continue;
+          }
+          if (vtkMath::Dot(hitN, w) > 0.0)
+          {
+            hitN[0] = -hitN[0], hitN[1] = -hitN[1], hitN[2] = -hitN[2]; // the side we see
+          }
+          const double hit[3] = { start[0] + hitT * w[0], start[1] + hitT * w[1],
+            start[2] + hitT * w[2] };
+          double light[3];
+          DirectLight(lights, hit, hitN, light);
+          for (int c = 0; c < 3; ++c)
+          {
+            sum[c] += albedo[geometry][c] * light[c];
+          }
+        }
+        for (int c = 0; c < 3; ++c)
+        {
+          result[3 * pixel + c] = static_cast<float>(sum[c] / rays);
+        }
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int i = 0; i < std::max(1, threads); ++i)
+  {
+    pool.emplace_back(work);
+  }
+  for (auto& thread : pool)
+  {
+    thread.join();
+  }
   return result;
 }

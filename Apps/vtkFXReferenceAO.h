@@ -84,6 +84,18 @@ public:
   static void PixelRay(vtkMatrix4x4* inverseProjection, int x, int y, int width, int height,
     double origin[3], double direction[3]);
 
+  /**
+   * One bounce of diffuse light within the radius (the reference of
+   * vtkFXDirectionalOcclusionPass's bleeding): per pixel, the mean over
+   * cosine-distributed rays around the geometric normal of the albedo of
+   * what a ray hits before R (its actor's diffuse colour x Diffuse; scalar
+   * colours and textures are not seen) times that point's direct diffuse
+   * light, unshadowed, from the renderer's lights as VTK's Phong model
+   * applies them. RGB per pixel, rows bottom-up; -1 where no surface is.
+   */
+  std::vector<float> TraceBleeding(vtkRenderer* renderer, int width, int height, double radius,
+    int raysPerPixel, int threads = 2) const;
+
 private:
   struct Internals;
   std::unique_ptr<Internals> Impl;

@@ -242,8 +242,10 @@ int main(int argc, char* argv[])
     }
     if (o.Inputs.empty())
     {
-      // Bumped and normal-mapped scenes, and a mesh with neither.
-      o.Inputs = { "scene:bumps", "scene:normalmap", data + "/stanford-bunny.obj" };
+      // Bumped and normal-mapped scenes, a mesh with neither, and coloured
+      // props by white walls (the bleeding).
+      o.Inputs = { "scene:bumps", "scene:normalmap", data + "/stanford-bunny.obj",
+        "scene:corner" };
     }
     if (!o.SizeGiven)
     {
