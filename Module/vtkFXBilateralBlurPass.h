@@ -41,6 +41,7 @@
 
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
+class vtkRenderer;
 class vtkShaderProgram;
 
 class VTKFX_EXPORT vtkFXBilateralBlurPass : public vtkFXEffectPass
@@ -118,7 +119,7 @@ protected:
   vtkFXBilateralBlurPass();
   ~vtkFXBilateralBlurPass() override;
 
-  void RunStage(int mode, vtkOpenGLRenderWindow* window, vtkTextureObject* input,
+  void RunStage(int mode, vtkRenderer* renderer, vtkTextureObject* input,
     vtkTextureObject* output, int step, bool packed);
   int OutputFormat() const;
 

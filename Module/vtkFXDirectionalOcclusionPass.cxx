@@ -160,6 +160,22 @@ void vtkFXDirectionalOcclusionPass::UnbindExtensionInputs()
   this->ExtensionBound.clear();
 }
 
+std::string vtkFXDirectionalOcclusionPass::ChannelsReadCode()
+{
+  // The blurred channels are plain values (bilinear); this pass's own
+  // output, when no blur ran, is packed (vtkFXEffectPass::Output::Packing):
+  // read the nearest texel and unpack it.
+  if (this->GetInput("denoised").Texture)
+  {
+    return "vec3 @channels()\n{\n  return texture(@occlusion, texCoord * @scale + @offset).rgb;\n}\n";
+  }
+  return "vec3 @channels()\n{\n"
+         "  ivec2 size = textureSize(@occlusion, 0);\n"
+         "  ivec2 t = clamp(ivec2((texCoord * @scale + @offset) * vec2(size)), ivec2(0), size - 1);\n"
+         "  vec4 texel = texelFetch(@occlusion, t, 0);\n"
+         "  return vec3(fxUnpack12(texel.r), texel.g);\n}\n";
+}
+
 vtkTextureObject* vtkFXDirectionalOcclusionPass::BleedingToShow()
 {
   if (this->Bleeding <= 0.0 || !this->BleedingTexture)
@@ -186,7 +202,7 @@ std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
     case Declarations:
       // The occlusion texture's layout is vtkFXSSAOPass's (see there).
       return std::string("uniform sampler2D @occlusion;\nuniform vec2 @scale;\nuniform vec2 @offset;\n") +
-        (geometric ? "uniform sampler2D @geometric;\n" : "") +
+        this->ChannelsReadCode() + (geometric ? "uniform sampler2D @geometric;\n" : "") +
         (bleeding ? "uniform sampler2D @bleeding;\nuniform float @bleedingStrength;\n" : "") +
         vtkFXOcclusionBasis;
     case Color:
@@ -200,7 +216,7 @@ std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
     {
       if (this->ShowChannels)
       {
-        return "    ambientVisibility *= clamp(texture(@occlusion, texCoord * @scale + @offset).rgb, "
+        return "    ambientVisibility *= clamp(@channels(), "
                "0.0, 1.0);";
       }
       // The seed's resolve: the channels weighted by the shading normal n's
@@ -208,7 +224,7 @@ std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
       // Without a GeometricNormal channel no prop perturbs its normal: g = n
       // and the weights are 1/3 (the channels' mean).
       std::string code = "    {\n"
-                         "      vec3 channels = texture(@occlusion, texCoord * @scale + @offset).rgb;\n"
+                         "      vec3 channels = @channels();\n"
                          "      vec3 g = n;\n";
       if (geometric)
       {

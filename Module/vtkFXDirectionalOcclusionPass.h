@@ -16,11 +16,12 @@
  * vtkFXGBufferPass::GetGeometricNormalTexture; the pipeline allocates the
  * GeometricNormal channel while a visible prop has a bump or a normal
  * texture) and, in the composite, the shading normal (`n`). Writes the
- * output "occlusion" (RGBA16F: RGB = the three
- * channels' visibility, 1 = open) at full or half resolution. In the
+ * output "occlusion" (RGBA32F, the three channels' visibility, 1 = open,
+ * packed with the normal and depth that guide the blur:
+ * vtkFXEffectPass::Output::Packing) at full or half resolution. In the
  * composite it scales the ambient visibility by the resolved value, read
- * from its optional input "denoised" (vtkFXBilateralBlurPass, which blurs
- * 3 values with depth and normal guides) when that ran.
+ * from its optional input "denoised" (vtkFXBilateralBlurPass with three
+ * components, which reads the packing in one fetch per tap) when that ran.
  *
  * The estimator is vtkFXSSAOPass's hemisphere sampling (the seed's
  * cosine-weighted rays; lengths u^3 R under the CubeRoot falloff, R under
@@ -35,8 +36,8 @@
  * repeats over the seed's 8x8 pattern (vtkFXSSAOPass: 4x4).
  *
  * Cost: vtkFXSSAOPass's hemisphere pass (the same fetches; three weights
- * per occluded sample), a blur of three values (a guide pass and two
- * passes of RGBA16F taps), one texture read in the composite, and while a
+ * per occluded sample), a blur of three values (two passes of one
+ * RGBA32F fetch per tap), one texture read in the composite, and while a
  * visible prop perturbs its normal the geometric-normal channel (4 bytes
  * per pixel, written by the G-buffer, read by the composite).
  */
@@ -91,6 +92,7 @@ protected:
 
   vtkTextureObject* GeometricNormalChannel() const;
   vtkTextureObject* BleedingToShow();
+  std::string ChannelsReadCode();
 
   // vtkFXSSAOPass's hooks: the bleeding's shader code, target and inputs.
   std::string GetExtensionDefines(vtkRenderer* ren) override;

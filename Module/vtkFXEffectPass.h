@@ -159,6 +159,11 @@ public:
     int Components = 0;      // values per texel (not counting a guide depth)
     int Format = -1;         // a vtkFXRenderUtilities::TextureFormat
     int DepthComponent = -1; // component holding the texel's linear depth, or -1
+    // 0: one value per component; 1: vtkFXDirectionalOcclusionPass's
+    // packing of three values with their normal and depth (R = values 1
+    // and 2, 12 bits each, G = value 3, B = octahedral normal, 12 bits a
+    // coordinate, A = depth; vtkFXNormalCoding.glsl's fxPack12).
+    int Packing = 0;
   };
 
   ///@{

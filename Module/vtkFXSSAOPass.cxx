@@ -91,7 +91,8 @@ vtkFXEffectPass::Output vtkFXSSAOPass::GetOutput(const char* name)
     output.Step = this->HalfResolution ? 2 : 1;
     output.Components = this->Channels;
     output.Format = this->GetOcclusionFormat();
-    output.DepthComponent = this->Channels == 1 ? 1 : -1;
+    output.DepthComponent = this->Channels == 3 ? 3 : 1;
+    output.Packing = this->Channels == 3 ? 1 : 0;
   }
   return output;
 }
@@ -171,9 +172,9 @@ int vtkFXSSAOPass::GetEffectiveMethod() const
 
 int vtkFXSSAOPass::GetOcclusionFormat() const
 {
-  // One value and its guide depth (32-bit: a 16-bit float overflows at
-  // 65504 world units); three values in [0, 1] (16 bits are plenty).
-  return this->Channels == 3 ? vtkFXRenderUtilities::RGBA16F : vtkFXRenderUtilities::RG32F;
+  // The values and the blur's guide depth after them, 32-bit: a 16-bit
+  // float overflows at 65504 world units.
+  return this->Channels == 3 ? vtkFXRenderUtilities::RGBA32F : vtkFXRenderUtilities::RG32F;
 }
 
 double vtkFXSSAOPass::ComputeRadius(vtkRenderer* ren) const

@@ -22,9 +22,19 @@
 //            taps below fetch one texel instead of two and decode nothing;
 //          0 horizontal pass, 1 vertical pass (input resolution),
 //          2 upsample from input to G-buffer resolution.
+// Inputs that carry their own guide need no guide stage, and every tap is
+// a single fetch (a software rasteriser pays per fetch):
 // FX_PACKED: one value whose linear depth rides in .g (vtkFXSSAOPass's
-//            output): every tap is a single fetch, weighted by depth only,
-//            and no guide stage runs. A software rasteriser pays per fetch.
+//            output), weighted by depth only;
+// FX_PACKED_NORMALS: three values with their normal and depth
+//            (vtkFXDirectionalOcclusionPass's packing: R = two values, 12
+//            bits each, G = the third, B = the octahedral normal, 12 bits
+//            a coordinate, A = depth), weighted by normal and depth as the
+//            guide would: the channels are relative to each pixel's own
+//            basis and must not mix across a crease. The horizontal pass
+//            keeps the packing; the vertical one writes the three values
+//            and the depth (.a) as they are, for bilinear reads.
+// FX_DEPTH_COMPONENT: where the depth rides in what the blur writes.
 
 // Texels are addressed through gl_FragCoord; texCoord is read once only so
 // that the quad's texture-coordinate attribute stays in the program
@@ -52,13 +62,35 @@ ivec2 fxGuideTexel(ivec2 inputTexel)
   return min(inputTexel * fxStep, fxGBufferSize - 1);
 }
 
-// Guide (normal, depth) of input texel q whose value is `tap`.
-vec4 fxTapGuide(ivec2 q, vec4 tap, vec3 n0)
+// Values `value` of input texel q and their guide (normal, depth); `n0`
+// stands in for the normal of inputs that carry depth alone.
+void fxReadTap(ivec2 q, vec3 n0, out vec4 value, out vec4 guide)
 {
-#if FX_PACKED
-  return vec4(n0, tap.g);
+  vec4 texel = texelFetch(fxInput, q, 0);
+#if FX_PACKED_NORMALS
+  value = vec4(fxUnpack12(texel.r), texel.g, 0.0);
+  guide = vec4(fxDecodeNormal(fxUnpack12(texel.b) * 2.0 - 1.0), texel.a);
+#elif FX_PACKED
+  value = texel;
+  guide = vec4(n0, texel.g);
 #else
-  return texelFetch(fxGuide, q, 0);
+  value = texel;
+  guide = texelFetch(fxGuide, q, 0);
+#endif
+}
+
+// What a blur pass writes for values `value` of a pixel whose input texel
+// is `center` and depth d0.
+vec4 fxBlurOutput(vec4 value, vec4 center, float d0)
+{
+#if FX_PACKED_NORMALS && FX_MODE == 0
+  return vec4(fxPack12(value.xy), value.z, center.b, d0);
+#elif FX_PACKED_NORMALS
+  return vec4(value.xyz, d0);
+#elif FX_PACKED
+  return vec4(value.r, d0, value.ba); // the depth travels on to the next stage
+#else
+  return value;
 #endif
 }
 
@@ -114,17 +146,18 @@ void main()
     texelFetch(fxLinearDepth, texel, 0).r);
 #elif FX_MODE < 2
   vec4 center = texelFetch(fxInput, p, 0);
-  vec4 g0 = fxTapGuide(p, center, vec3(0.0, 0.0, 1.0));
+  vec4 value0, g0;
+  fxReadTap(p, vec3(0.0, 0.0, 1.0), value0, g0);
   float d0 = g0.w;
   if (!(d0 > 0.0))
   {
-    gl_FragData[0] = center;
+    gl_FragData[0] = fxBlurOutput(value0, center, d0);
     return;
   }
   vec3 n0 = g0.xyz;
   ivec2 direction = FX_MODE == 0 ? ivec2(1, 0) : ivec2(0, 1);
   float sigma = max(0.5 * float(fxRadius), 0.5);
-  vec4 sum = center;
+  vec4 sum = value0;
   float total = 1.0;
   for (int i = -fxRadius; i <= fxRadius; ++i)
   {
@@ -133,20 +166,18 @@ void main()
     {
       continue;
     }
-    vec4 tap = texelFetch(fxInput, q, 0);
+    vec4 tap, guide;
+    fxReadTap(q, n0, tap, guide);
 #if FX_BOX
     float distanceWeight = abs(i) == fxRadius ? 0.5 : 1.0;
 #else
     float distanceWeight = exp(-0.5 * float(i * i) / (sigma * sigma));
 #endif
-    float w = distanceWeight * fxGuideWeight(d0, n0, fxTapGuide(q, tap, n0));
+    float w = distanceWeight * fxGuideWeight(d0, n0, guide);
     sum += w * tap;
     total += w;
   }
-  gl_FragData[0] = sum / total;
-#if FX_PACKED
-  gl_FragData[0].g = d0; // the depth travels on to the next stage
-#endif
+  gl_FragData[0] = fxBlurOutput(sum / total, center, d0);
 #else
   float d0 = texelFetch(fxLinearDepth, p, 0).r;
   if (!(d0 > 0.0))
@@ -154,8 +185,9 @@ void main()
     gl_FragData[0] = texelFetch(fxInput, clamp(p / fxStep, ivec2(0), fxInputSize - 1), 0);
     return;
   }
-#if FX_PACKED
-  gl_FragData[0] = fxJointUpsample(fxInput, true, fxInput, 1, fxInputSize, fxStep, p, d0, fxDepthSigma);
+#if FX_PACKED || FX_PACKED_NORMALS
+  gl_FragData[0] = fxJointUpsample(
+    fxInput, true, fxInput, FX_DEPTH_COMPONENT, fxInputSize, fxStep, p, d0, fxDepthSigma);
 #else
   gl_FragData[0] = fxJointUpsample(fxInput, false, fxGuide, 3, fxInputSize, fxStep, p, d0, fxDepthSigma);
 #endif

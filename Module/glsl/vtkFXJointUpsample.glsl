@@ -3,12 +3,13 @@
 // blend of the 4 nearest low-resolution texels, each weighted also by
 // 1 / (1 + ((d - d0) / (sigma d0))^2), its depth agreement (relative to the
 // depth: scale-free). The texels' linear depths are component
-// `depthComponent` of `depths`, or, when `depthInG` (a constant at every call,
-// so the branch compiles away), the values' own .g as vtkFXSSAOPass writes
-// them, saving a fetch per texel; with no agreeing texel (a feature
+// `depthComponent` of `depths`, or, when `depthInValue` (a constant at every
+// call, so the branch compiles away), of the values themselves, as the
+// occlusion passes write them, saving a fetch per texel; with no agreeing
+// texel (a feature
 // thinner than a low-resolution texel) the texel closest in depth wins.
 // Used by vtkFXBilateralBlurFS.
-vec4 fxJointUpsample(sampler2D lowResolution, bool depthInG, sampler2D depths, int depthComponent,
+vec4 fxJointUpsample(sampler2D lowResolution, bool depthInValue, sampler2D depths, int depthComponent,
   ivec2 lowSize, int step, ivec2 pixel, float d0, float depthSigma)
 {
   // Low-resolution texel i holds the value of full-resolution texel i * step.
@@ -25,7 +26,7 @@ vec4 fxJointUpsample(sampler2D lowResolution, bool depthInG, sampler2D depths, i
     {
       ivec2 q = clamp(base + ivec2(i, j), ivec2(0), lowSize - 1);
       vec4 v = texelFetch(lowResolution, q, 0);
-      float d = depthInG ? v.g : texelFetch(depths, q, 0)[depthComponent];
+      float d = depthInValue ? v[depthComponent] : texelFetch(depths, q, 0)[depthComponent];
       float bilinear = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
       float r = (d - d0) / (depthSigma * d0);
       float w = d > 0.0 ? bilinear / (1.0 + r * r) : 0.0;

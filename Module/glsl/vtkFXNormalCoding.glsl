@@ -35,3 +35,19 @@ bool fxIsUnlit(vec2 e)
 {
   return e.x > 2.0;
 }
+
+// Two values in [0, 1] in one 32-bit float, 12 bits each: an integer below
+// 2^24, which the float's mantissa holds exactly. (How
+// vtkFXDirectionalOcclusionPass carries two channels and an octahedral
+// normal, so that its blur reads a pixel in one fetch.)
+float fxPack12(vec2 v)
+{
+  vec2 q = floor(clamp(v, 0.0, 1.0) * 4095.0 + 0.5);
+  return q.x * 4096.0 + q.y;
+}
+
+vec2 fxUnpack12(float code)
+{
+  float high = floor(code / 4096.0);
+  return vec2(high, code - high * 4096.0) / 4095.0;
+}

@@ -314,7 +314,7 @@ void main()
   {
     // No surface, or one VTK does not light: open.
 #if FX_CHANNELS == 3
-    gl_FragData[0] = vec4(1.0);
+    gl_FragData[0] = vec4(fxPack12(vec2(1.0)), 1.0, fxPack12(vec2(0.5)), depth);
 #if FX_BLEED
     gl_FragData[1] = vec4(0.0, 0.0, 0.0, 1.0);
 #endif
@@ -329,8 +329,11 @@ void main()
 
   int tileEntry = (pixel.x & (FX_TILE - 1)) + FX_TILE * (pixel.y & (FX_TILE - 1));
 #if FX_CHANNELS == 3
-  // The blur builds its own guide for three values.
-  gl_FragData[0] = vec4(fxHemisphereOcclusion(p, n, depth, fxTile[tileEntry].xy), 1.0);
+  // Packed with the normal and the depth, the blur's guide
+  // (vtkFXBilateralBlurFS: FX_PACKED_NORMALS).
+  vec3 channels = fxHemisphereOcclusion(p, n, depth, fxTile[tileEntry].xy);
+  gl_FragData[0] = vec4(fxPack12(channels.xy), channels.z,
+    fxPack12(fxEncodeNormal(n) * 0.5 + 0.5), depth);
 #if FX_BLEED
   gl_FragData[1] = vec4(fxBleed / float(FX_SAMPLES), 1.0);
 #endif

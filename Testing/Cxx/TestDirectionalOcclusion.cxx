@@ -202,15 +202,37 @@ Setup MakeDOSetup(vtkRenderWindow* window, int samples)
   return s;
 }
 
-// Every value of a float texture finite and within [0, 1].
+// The three channels of an RGBA float texture finite and within [0, 1]; the
+// depth alongside (A) finite and not negative.
 int CheckAllInRange(vtkTextureObject* texture, int components, const char* what)
 {
   const auto values = vtkFXTest::Download(texture, components);
   FX_CHECK(!values.empty(), what << ": read back");
   for (size_t i = 0; i < values.size(); ++i)
   {
-    FX_CHECK(std::isfinite(values[i]) && values[i] >= 0.0f && values[i] <= 1.0f,
-      what << ": " << values[i] << " at texel " << i / components);
+    const bool depth = i % components == 3;
+    FX_CHECK(std::isfinite(values[i]) && values[i] >= 0.0f && (depth || values[i] <= 1.0f),
+      what << ": " << values[i] << " at texel " << i / components << ", component "
+           << i % components);
+  }
+  return EXIT_SUCCESS;
+}
+
+// The pass's own output, packed (vtkFXEffectPass::Output::Packing 1): R
+// holds two 12-bit channels, G the third, B the 12-bit octahedral normal,
+// A the depth; every part finite and in range.
+int CheckPackedInRange(vtkTextureObject* texture, const char* what)
+{
+  const auto values = vtkFXTest::Download(texture, 4);
+  FX_CHECK(!values.empty(), what << ": read back");
+  for (size_t i = 0; i < values.size(); i += 4)
+  {
+    const float r = values[i], g = values[i + 1], b = values[i + 2], a = values[i + 3];
+    FX_CHECK(std::isfinite(r) && r >= 0.0f && r < 16777216.0f && r == std::floor(r) &&
+        std::isfinite(g) && g >= 0.0f && g <= 1.0f && std::isfinite(b) && b >= 0.0f &&
+        b < 16777216.0f && std::isfinite(a) && a >= 0.0f,
+      what << ": packed texel " << i / 4 << " (" << r << ", " << g << ", " << b << ", " << a
+           << ")");
   }
   return EXIT_SUCCESS;
 }
@@ -237,7 +259,7 @@ int TestDirectionalOcclusion(int, char*[])
     FX_CHECK(dop->GetEffectiveNumberOfSamples() == 63, "63 samples used");
     FX_CHECK(!(s.Pipeline->GetGBufferChannels() & GB::ChannelBit(GB::GeometricNormal)),
       "no bump: no geometric-normal channel");
-    if (CheckAllInRange(dop->GetOutputTexture(), 4, "raw channels") != EXIT_SUCCESS)
+    if (CheckPackedInRange(dop->GetOutputTexture(), "raw channels") != EXIT_SUCCESS)
     {
       return EXIT_FAILURE;
     }
@@ -475,7 +497,7 @@ int TestDirectionalOcclusion(int, char*[])
     vtkFXTest::MoveScene(s.Renderer, c.Scale, c.Offset, c.Parallel, c.NearRatio);
     window->Render();
     vtkFXGBufferPass* gbuffer = s.Pipeline->GetGBufferPass();
-    if (CheckAllInRange(s.Pipeline->GetDirectionalOcclusionPass()->GetOutputTexture(), 4, c.Name) !=
+    if (CheckPackedInRange(s.Pipeline->GetDirectionalOcclusionPass()->GetOutputTexture(), c.Name) !=
         EXIT_SUCCESS ||
       CheckAllInRange(s.Pipeline->GetDirectionalOcclusionBlurPass()->GetOutputTexture(), 4, c.Name) !=
         EXIT_SUCCESS)
