@@ -18,6 +18,17 @@ assert pipeline.GetDebugChannel() == vtkfx.vtkFXGBufferPass.GeometricNormal, pip
 gbuffer.SetRequiredChannels(0)
 assert gbuffer.GetRequiredChannels() == 0
 
+# Directional occlusion replaces ambient occlusion in the pipeline.
+pipeline.SetAmbientOcclusion(True)
+pipeline.SetDirectionalOcclusion(True)
+assert not pipeline.GetAmbientOcclusion()
+directional = pipeline.GetDirectionalOcclusionPass()
+assert isinstance(directional, vtkfx.vtkFXSSAOPass)
+directional.SetBleeding(50.0)  # clamped to 10
+assert directional.GetBleeding() == 10.0
+directional.SetNumberOfSamples(16)
+assert directional.GetEffectiveNumberOfSamples() == 18
+
 # The effects: toon shading and bloom plug into the pipeline by name.
 toon = vtkfx.vtkFXToonPass()
 toon.RemoveAllBandThresholds()
