@@ -343,6 +343,116 @@ bool Intersect(RTCScene scene, const double o[3], const double d[3], double tnea
   normal[2] = rh.hit.Ng_z;
   return true;
 }
+
+// The surface a pixel shows, as every traced pixel starts from it: point,
+// geometric normal faced towards the viewer, the primary ray's length, and
+// the point its rays leave from.
+struct VisibleSurface
+{
+  double Point[3];
+  double Normal[3];
+  double Distance;
+  double Start[3];
+};
+
+bool FindVisibleSurface(RTCScene scene, vtkMatrix4x4* inverse, int x, int y, int width,
+  int height, double radius, VisibleSurface& v)
+{
+  double o[3], d[3];
+  vtkFXReferenceAO::PixelRay(inverse, x, y, width, height, o, d);
+  if (!Intersect(scene, o, d, 0.0, 1e30, v.Distance, v.Normal) ||
+    vtkMath::Normalize(v.Normal) == 0.0)
+  {
+    return false;
+  }
+  if (vtkMath::Dot(v.Normal, d) > 0.0)
+  {
+    v.Normal[0] = -v.Normal[0], v.Normal[1] = -v.Normal[1], v.Normal[2] = -v.Normal[2];
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    v.Point[c] = o[c] + v.Distance * d[c];
+  }
+  // Leave the surface by a hair to avoid hitting it again: the hit point
+  // carries float error growing with its coordinates and with the distance
+  // travelled.
+  const double offset = 1e-4 * radius + 1e-6 * (v.Distance + std::max(std::fabs(v.Point[0]),
+    std::max(std::fabs(v.Point[1]), std::fabs(v.Point[2]))));
+  for (int c = 0; c < 3; ++c)
+  {
+    v.Start[c] = v.Point[c] + offset * v.Normal[c];
+  }
+  return true;
+}
+
+// Stratified cosine-weighted directions around an axis (Malley's method on
+// a side x side grid, jittered by a per-pixel hash: deterministic).
+class CosineLobe
+{
+public:
+  CosineLobe(const double axis[3], int side, unsigned int pixel)
+    : Side(side)
+    , Pixel(pixel)
+  {
+    double helper[3] = { 0, 0, 1 };
+    if (std::fabs(axis[2]) > 0.9)
+    {
+      helper[0] = 1, helper[2] = 0;
+    }
+    std::copy(axis, axis + 3, this->Axis);
+    vtkMath::Cross(helper, axis, this->Tx);
+    vtkMath::Normalize(this->Tx);
+    vtkMath::Cross(axis, this->Tx, this->Ty);
+  }
+
+  void Direction(int s, double w[3]) const
+  {
+    const double u1 = ((s % this->Side) + Hash(this->Pixel, 2 * s)) / this->Side;
+    const double u2 = ((s / this->Side) + Hash(this->Pixel, 2 * s + 1)) / this->Side;
+    const double r = std::sqrt(u1), phi = 2.0 * vtkMath::Pi() * u2;
+    const double lx = r * std::cos(phi), ly = r * std::sin(phi);
+    const double lz = std::sqrt(std::max(0.0, 1.0 - u1));
+    for (int c = 0; c < 3; ++c)
+    {
+      w[c] = lx * this->Tx[c] + ly * this->Ty[c] + lz * this->Axis[c];
+    }
+  }
+
+private:
+  double Axis[3], Tx[3], Ty[3];
+  int Side;
+  unsigned int Pixel;
+};
+
+// The camera's inverse composite projection for a width x height image.
+void InverseProjection(vtkRenderer* renderer, int width, int height, vtkMatrix4x4* inverse)
+{
+  inverse->DeepCopy(renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
+    static_cast<double>(width) / height, -1, 1));
+  inverse->Invert();
+}
+
+// Runs row(y) for every row, rows handed out to `threads` threads.
+template <typename Row>
+void ForEachRow(int height, int threads, Row row)
+{
+  std::atomic<int> nextRow(0);
+  auto work = [&]() {
+    for (int y = nextRow++; y < height; y = nextRow++)
+    {
+      row(y);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int i = 0; i < std::max(1, threads); ++i)
+  {
+    pool.emplace_back(work);
+  }
+  for (auto& thread : pool)
+  {
+    thread.join();
+  }
+}
 }
 
 vtkFXReferenceAO::Result vtkFXReferenceAO::Trace(
@@ -367,109 +477,64 @@ vtkFXReferenceAO::Result vtkFXReferenceAO::Trace(
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   vtkNew<vtkMatrix4x4> inverse;
-  inverse->DeepCopy(renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
-    static_cast<double>(width) / height, -1, 1));
-  inverse->Invert();
+  InverseProjection(renderer, width, height, inverse);
   const int side = std::max(1, static_cast<int>(std::ceil(std::sqrt(raysPerPixel))));
   const int rays = side * side;
   std::vector<double> variance(result.Occlusion.size(), 0.0);
   RTCScene scene = this->Impl->Scene;
-
-  std::atomic<int> nextRow(0);
-  auto work = [&]() {
-    for (int y = nextRow++; y < height; y = nextRow++)
+  ForEachRow(height, threads, [&](int y) {
+    for (int x = 0; x < width; ++x)
     {
-      for (int x = 0; x < width; ++x)
+      VisibleSurface v;
+      if (!FindVisibleSurface(scene, inverse, x, y, width, height, radius, v))
       {
-        double o[3], d[3], t, n[3];
-        PixelRay(inverse, x, y, width, height, o, d);
-        if (!Intersect(scene, o, d, 0.0, 1e30, t, n) || vtkMath::Normalize(n) == 0.0)
-        {
-          continue;
-        }
-        if (vtkMath::Dot(n, d) > 0.0)
-        {
-          n[0] = -n[0], n[1] = -n[1], n[2] = -n[2]; // face the viewer
-        }
-        double p[3] = { o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2] };
-        const unsigned int pixel = static_cast<unsigned int>(y * width + x);
-        // The lobe's axis: the shading normal when given (turned to the
-        // geometric normal's side), else the geometric normal.
-        double axis[3] = { n[0], n[1], n[2] };
-        if (shadingNormals && shadingNormals->size() >= 3 * (static_cast<size_t>(pixel) + 1))
-        {
-          double s[3] = { (*shadingNormals)[3 * pixel], (*shadingNormals)[3 * pixel + 1],
-            (*shadingNormals)[3 * pixel + 2] };
-          if (vtkMath::Normalize(s) > 0.0 && std::isfinite(s[0] + s[1] + s[2]))
-          {
-            const double side = vtkMath::Dot(s, n) < 0.0 ? -1.0 : 1.0;
-            axis[0] = side * s[0], axis[1] = side * s[1], axis[2] = side * s[2];
-          }
-        }
-        // Tangent frame of the axis.
-        double helper[3] = { 0, 0, 1 };
-        if (std::fabs(axis[2]) > 0.9)
-        {
-          helper[0] = 1, helper[2] = 0;
-        }
-        double tx[3], ty[3];
-        vtkMath::Cross(helper, axis, tx);
-        vtkMath::Normalize(tx);
-        vtkMath::Cross(axis, tx, ty);
-        // Leave the surface by a hair to avoid hitting it again: the hit
-        // point carries float error growing with its coordinates and with
-        // the distance travelled.
-        const double offset = 1e-4 * radius + 1e-6 * (t + std::max(std::fabs(p[0]),
-          std::max(std::fabs(p[1]), std::fabs(p[2]))));
-        const double start[3] = { p[0] + offset * n[0], p[1] + offset * n[1], p[2] + offset * n[2] };
-        double sum = 0.0, sum2 = 0.0;
-        int counted = 0;
-        for (int s = 0; s < rays; ++s)
-        {
-          // Stratified cosine-weighted direction (Malley's method).
-          const double u1 = ((s % side) + Hash(pixel, 2 * s)) / side;
-          const double u2 = ((s / side) + Hash(pixel, 2 * s + 1)) / side;
-          const double r = std::sqrt(u1), phi = 2.0 * vtkMath::Pi() * u2;
-          const double lx = r * std::cos(phi), ly = r * std::sin(phi);
-          const double lz = std::sqrt(std::max(0.0, 1.0 - u1));
-          double w[3];
-          for (int c = 0; c < 3; ++c)
-          {
-            w[c] = lx * tx[c] + ly * ty[c] + lz * axis[c];
-          }
-          if (vtkMath::Dot(w, n) <= 0.0)
-          {
-            continue; // into the surface: outside the geometric hemisphere
-          }
-          ++counted;
-          double hitT, hitN[3];
-          double f = 0.0;
-          if (Intersect(scene, start, w, 0.0, radius, hitT, hitN))
-          {
-            f = falloff == Binary ? 1.0
-                                  : 1.0 - std::cbrt(std::min(1.0, std::max(0.0, hitT / radius)));
-          }
-          sum += f;
-          sum2 += f * f;
-        }
-        // (the axis lies in the geometric hemisphere, so most rays count)
-        const int used = std::max(1, counted);
-        const double mean = sum / used;
-        result.Occlusion[pixel] = static_cast<float>(1.0 - mean);
-        variance[pixel] = std::max(0.0, sum2 / used - mean * mean) / used;
-        result.StandardError[pixel] = static_cast<float>(std::sqrt(variance[pixel]));
+        continue;
       }
+      const double* n = v.Normal;
+      const unsigned int pixel = static_cast<unsigned int>(y * width + x);
+      // The lobe's axis: the shading normal when given (turned to the
+      // geometric normal's side), else the geometric normal.
+      double axis[3] = { n[0], n[1], n[2] };
+      if (shadingNormals && shadingNormals->size() >= 3 * (static_cast<size_t>(pixel) + 1))
+      {
+        double s[3] = { (*shadingNormals)[3 * pixel], (*shadingNormals)[3 * pixel + 1],
+          (*shadingNormals)[3 * pixel + 2] };
+        if (vtkMath::Normalize(s) > 0.0 && std::isfinite(s[0] + s[1] + s[2]))
+        {
+          const double facing = vtkMath::Dot(s, n) < 0.0 ? -1.0 : 1.0;
+          axis[0] = facing * s[0], axis[1] = facing * s[1], axis[2] = facing * s[2];
+        }
+      }
+      const CosineLobe lobe(axis, side, pixel);
+      double sum = 0.0, sum2 = 0.0;
+      int counted = 0;
+      for (int s = 0; s < rays; ++s)
+      {
+        double w[3];
+        lobe.Direction(s, w);
+        if (vtkMath::Dot(w, n) <= 0.0)
+        {
+          continue; // into the surface: outside the geometric hemisphere
+        }
+        ++counted;
+        double hitT, hitN[3];
+        double f = 0.0;
+        if (Intersect(scene, v.Start, w, 0.0, radius, hitT, hitN))
+        {
+          f = falloff == Binary ? 1.0
+                                : 1.0 - std::cbrt(std::min(1.0, std::max(0.0, hitT / radius)));
+        }
+        sum += f;
+        sum2 += f * f;
+      }
+      // (the axis lies in the geometric hemisphere, so most rays count)
+      const int used = std::max(1, counted);
+      const double mean = sum / used;
+      result.Occlusion[pixel] = static_cast<float>(1.0 - mean);
+      variance[pixel] = std::max(0.0, sum2 / used - mean * mean) / used;
+      result.StandardError[pixel] = static_cast<float>(std::sqrt(variance[pixel]));
     }
-  };
-  std::vector<std::thread> pool;
-  for (int i = 0; i < std::max(1, threads); ++i)
-  {
-    pool.emplace_back(work);
-  }
-  for (auto& thread : pool)
-  {
-    thread.join();
-  }
+  });
   double total = 0.0;
   for (size_t i = 0; i < variance.size(); ++i)
   {
@@ -577,91 +642,50 @@ std::vector<float> vtkFXReferenceAO::TraceBleeding(
   }
   const std::vector<WorldLight> lights = WorldLights(renderer);
   vtkNew<vtkMatrix4x4> inverse;
-  inverse->DeepCopy(renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
-    static_cast<double>(width) / height, -1, 1));
-  inverse->Invert();
+  InverseProjection(renderer, width, height, inverse);
   const int side = std::max(1, static_cast<int>(std::ceil(std::sqrt(raysPerPixel))));
   const int rays = side * side;
   RTCScene scene = this->Impl->Scene;
   const auto& albedo = this->Impl->Albedo;
-  std::atomic<int> nextRow(0);
-  auto work = [&]() {
-    for (int y = nextRow++; y < height; y = nextRow++)
+  ForEachRow(height, threads, [&](int y) {
+    for (int x = 0; x < width; ++x)
     {
-      for (int x = 0; x < width; ++x)
+      VisibleSurface v;
+      if (!FindVisibleSurface(scene, inverse, x, y, width, height, radius, v))
       {
-        double o[3], d[3], t, n[3];
-        PixelRay(inverse, x, y, width, height, o, d);
-        if (!Intersect(scene, o, d, 0.0, 1e30, t, n) || vtkMath::Normalize(n) == 0.0)
+        continue;
+      }
+      const unsigned int pixel = static_cast<unsigned int>(y * width + x);
+      const CosineLobe lobe(v.Normal, side, pixel);
+      double sum[3] = { 0.0, 0.0, 0.0 };
+      for (int s = 0; s < rays; ++s)
+      {
+        double w[3], hitT, hitN[3];
+        lobe.Direction(s, w);
+        unsigned int geometry = 0;
+        if (!Intersect(scene, v.Start, w, 0.0, radius, hitT, hitN, &geometry) ||
+          vtkMath::Normalize(hitN) == 0.0 || geometry >= albedo.size())
         {
           continue;
         }
-        if (vtkMath::Dot(n, d) > 0.0)
+        if (vtkMath::Dot(hitN, w) > 0.0)
         {
-          n[0] = -n[0], n[1] = -n[1], n[2] = -n[2];
+          hitN[0] = -hitN[0], hitN[1] = -hitN[1], hitN[2] = -hitN[2]; // the side we see
         }
-        const double p[3] = { o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2] };
-        double helper[3] = { 0, 0, 1 };
-        if (std::fabs(n[2]) > 0.9)
-        {
-          helper[0] = 1, helper[2] = 0;
-        }
-        double tx[3], ty[3];
-        vtkMath::Cross(helper, n, tx);
-        vtkMath::Normalize(tx);
-        vtkMath::Cross(n, tx, ty);
-        const double offset = 1e-4 * radius + 1e-6 * (t + std::max(std::fabs(p[0]),
-          std::max(std::fabs(p[1]), std::fabs(p[2]))));
-        const double start[3] = { p[0] + offset * n[0], p[1] + offset * n[1], p[2] + offset * n[2] };
-        const unsigned int pixel = static_cast<unsigned int>(y * width + x);
-        double sum[3] = { 0.0, 0.0, 0.0 };
-        for (int s = 0; s < rays; ++s)
-        {
-          const double u1 = ((s % side) + Hash(pixel, 2 * s)) / side;
-          const double u2 = ((s / side) + Hash(pixel, 2 * s + 1)) / side;
-          const double r = std::sqrt(u1), phi = 2.0 * vtkMath::Pi() * u2;
-          const double lx = r * std::cos(phi), ly = r * std::sin(phi);
-          const double lz = std::sqrt(std::max(0.0, 1.0 - u1));
-          double w[3];
-          for (int c = 0; c < 3; ++c)
-          {
-            w[c] = lx * tx[c] + ly * ty[c] + lz * n[c];
-          }
-          double hitT, hitN[3];
-          unsigned int geometry = 0;
-          if (!Intersect(scene, start, w, 0.0, radius, hitT, hitN, &geometry) ||
-            vtkMath::Normalize(hitN) == 0.0 || geometry >= albedo.size())
-          {
-            continue;
-          }
-          if (vtkMath::Dot(hitN, w) > 0.0)
-          {
-            hitN[0] = -hitN[0], hitN[1] = -hitN[1], hitN[2] = -hitN[2]; // the side we see
-          }
-          const double hit[3] = { start[0] + hitT * w[0], start[1] + hitT * w[1],
-            start[2] + hitT * w[2] };
-          double light[3];
-          DirectLight(lights, hit, hitN, light);
-          for (int c = 0; c < 3; ++c)
-          {
-            sum[c] += albedo[geometry][c] * light[c];
-          }
-        }
+        const double hit[3] = { v.Start[0] + hitT * w[0], v.Start[1] + hitT * w[1],
+          v.Start[2] + hitT * w[2] };
+        double light[3];
+        DirectLight(lights, hit, hitN, light);
         for (int c = 0; c < 3; ++c)
         {
-          result[3 * pixel + c] = static_cast<float>(sum[c] / rays);
+          sum[c] += albedo[geometry][c] * light[c];
         }
       }
+      for (int c = 0; c < 3; ++c)
+      {
+        result[3 * pixel + c] = static_cast<float>(sum[c] / rays);
+      }
     }
-  };
-  std::vector<std::thread> pool;
-  for (int i = 0; i < std::max(1, threads); ++i)
-  {
-    pool.emplace_back(work);
-  }
-  for (auto& thread : pool)
-  {
-    thread.join();
-  }
+  });
   return result;
 }

@@ -158,12 +158,10 @@ std::vector<unsigned char> Grab(vtkRenderWindow* window)
 }
 
 // The floor (with a ramp height s z when s != 0, as a bump) and the wall;
-// the camera of TestSSAO's crease.
+// as vtkFXOcclusionTest::AddCrease sets them up.
 vtkActor* BuildCrease(Setup& s, double slope)
 {
-  const double fo[3] = { -10, 0, 0 }, f1[3] = { 10, 0, 0 }, f2[3] = { -10, 0, 10 };
-  const double wo[3] = { -10, 0, 0 }, w1[3] = { 10, 0, 0 }, w2[3] = { -10, 10, 0 };
-  auto floor = Plane(fo, f1, f2);
+  vtkActor* floor = AddCrease(s);
   if (slope != 0.0)
   {
     auto* mapper = vtkPolyDataMapper::SafeDownCast(floor->GetMapper());
@@ -180,13 +178,6 @@ vtkActor* BuildCrease(Setup& s, double slope)
     mapper->SetInputData(data);
     vtkFXGBufferPass::SetBump(floor, "height", 1.0);
   }
-  s.Renderer->AddActor(floor);
-  s.Renderer->AddActor(Plane(wo, w1, w2));
-  vtkCamera* camera = s.Renderer->GetActiveCamera();
-  camera->SetFocalPoint(0, 0.5, 0.5);
-  camera->SetPosition(0.5, 3.0, 4.0);
-  camera->SetViewUp(0, 1, 0);
-  s.Renderer->ResetCameraClippingRange();
   return floor;
 }
 

@@ -175,15 +175,7 @@ int TestSSAO(int, char*[])
   {
     const bool horizon = method == vtkFXSSAOPass::Horizon;
     Setup s = MakeSetup(window);
-    const double fo[3] = { -10, 0, 0 }, f1[3] = { 10, 0, 0 }, f2[3] = { -10, 0, 10 };
-    const double wo[3] = { -10, 0, 0 }, w1[3] = { 10, 0, 0 }, w2[3] = { -10, 10, 0 };
-    s.Renderer->AddActor(Plane(fo, f1, f2));
-    s.Renderer->AddActor(Plane(wo, w1, w2));
-    vtkCamera* camera = s.Renderer->GetActiveCamera();
-    camera->SetFocalPoint(0, 0.5, 0.5);
-    camera->SetPosition(0.5, 3.0, 4.0);
-    camera->SetViewUp(0, 1, 0);
-    s.Renderer->ResetCameraClippingRange();
+    AddCrease(s);
     vtkFXSSAOPass* ssao = s.Pipeline->GetSSAOPass();
     ssao->SetMethod(method);
     ssao->SetFalloff(falloff);

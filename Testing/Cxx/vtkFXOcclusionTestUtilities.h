@@ -128,6 +128,24 @@ inline Setup MakeSetup(vtkRenderWindow* window)
   s.Renderer->SetPass(s.Pipeline);
   return s;
 }
+
+// The inner crease of a floor (y = 0, z in [0, 10]) and a wall (z = 0,
+// y in [0, 10]), 20 units wide, seen from (0.5, 3, 4) towards (0, 0.5,
+// 0.5). Returns the floor; the wall is the renderer's last actor.
+inline vtkActor* AddCrease(Setup& s)
+{
+  const double fo[3] = { -10, 0, 0 }, f1[3] = { 10, 0, 0 }, f2[3] = { -10, 0, 10 };
+  const double wo[3] = { -10, 0, 0 }, w1[3] = { 10, 0, 0 }, w2[3] = { -10, 10, 0 };
+  auto floor = Plane(fo, f1, f2);
+  s.Renderer->AddActor(floor);
+  s.Renderer->AddActor(Plane(wo, w1, w2));
+  vtkCamera* camera = s.Renderer->GetActiveCamera();
+  camera->SetFocalPoint(0, 0.5, 0.5);
+  camera->SetPosition(0.5, 3.0, 4.0);
+  camera->SetViewUp(0, 1, 0);
+  s.Renderer->ResetCameraClippingRange();
+  return floor;
+}
 }
 
 #endif
