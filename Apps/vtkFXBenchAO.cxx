@@ -625,7 +625,11 @@ int BenchAO(const Options& o)
     TimeFramesInTurn(methods, o.Frames,
       "[" + std::to_string(s + 1) + "/" + std::to_string(o.Inputs.size()) + "] " + input, timer);
 
+    // Each image is divided by its own renderer's unoccluded image: VTK's
+    // for vtkSSAOPass, vtkFX's for vtkFX (which lights bumps VTK does not
+    // draw).
     const auto base = vtkFXScenes::Capture(methods[0].Window);
+    const auto fxBaseImage = vtkFXScenes::Capture(methods[1].Window);
     const double vtkBase = Median(methods[0].FrameMs), fxBase = Median(methods[1].FrameMs);
     const Method* bestVTK = nullptr;
     const Method* fxDefault = nullptr;
@@ -643,7 +647,8 @@ int BenchAO(const Options& o)
       }
       else
       {
-        m.Occlusion = OcclusionOf(vtkFXScenes::Capture(m.Window), base, truth.Occlusion);
+        m.Occlusion = OcclusionOf(
+          vtkFXScenes::Capture(m.Window), m.Type == Kind::VTK ? base : fxBaseImage, truth.Occlusion);
       }
       Compare(m.Occlusion, truth.Occlusion, m.RMSE, m.PSNR);
       m.Detail = vtkFXScenes::DetailScore(m.Occlusion, truth.Occlusion, o.Width, o.Height);

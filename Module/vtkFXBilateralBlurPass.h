@@ -15,16 +15,20 @@
  * agreement (NormalPower),
  * then, for reduced-resolution input, a joint-bilateral upsample (4 taps).
  *
- * A one-value input that carries its linear depth in its second channel
- * (what vtkFXSSAOPass writes) is blurred by depth alone, one fetch per tap,
- * and its blurred output keeps carrying the depth until upsampled; other
- * inputs first get a guide texture (normal and depth per input pixel).
+ * Inputs that carry their own guide are read in one fetch per tap and need
+ * no guide pass: one value with its linear depth in the second channel
+ * (vtkFXSSAOPass), blurred by depth alone, and three values packed with
+ * their normal and depth (vtkFXDirectionalOcclusionPass:
+ * vtkFXEffectPass::Output::Packing 1), blurred by normal and depth; the
+ * blurred output keeps carrying the depth (RG32F, or RGBA32F with the three
+ * values plain and the depth in A) until upsampled. Other inputs first get
+ * a guide texture (normal and depth per input pixel).
  * Output formats: upsampled, R8 / RG8 for one or two values and RGBA16F for
- * three or four (directional occlusion's channels keep their precision);
- * left at a reduced resolution, RG32F with a carried depth, else RGBA16F.
+ * three or four; left at a reduced resolution, as above for inputs with a
+ * guide, else RGBA16F.
  *
  * Cost: 2 x (2 Radius + 1) taps per input pixel, plus 4 taps per output
- * pixel when upsampling, plus the guide pass for multi-value inputs.
+ * pixel when upsampling, plus the guide pass for inputs without a guide.
  *
  * Reduced-resolution inputs follow vtkFXSSAOPass's layout: input texel i
  * holds the value of G-buffer texel step x i (steps 1 and 2).
@@ -99,8 +103,8 @@ public:
 
   /**
    * Upsample a reduced-resolution input to full resolution (default on).
-   * Off, the output stays at the input's resolution (with the depth in the
-   * second channel when the input carries one), for a consumer that
+   * Off, the output stays at the input's resolution (with the depth after
+   * the values when the input carries one), for a consumer that
    * samples it bilinearly (the composite does: it saves a full-resolution
    * pass).
    */

@@ -103,7 +103,11 @@ std::string vtkFXDirectionalOcclusionPass::GetExtensionCode(vtkRenderer* ren)
     "  vec3 diffuseLight = vec3(0.0);\n"
     "  vec3 specularLight = vec3(0.0);\n" +
     vtkFXCompositePass::GetUniformLightCalls(glRenderer->GetLightingComplexity(), lights) +
-    "  return texelFetch(fxAlbedo, q, 0).rgb * diffuseLight;\n}\n";
+    "  // (VTK's attenuation can make a light infinite; a half float ends at\n"
+    "  // 65504: keep the blur's sums finite)\n"
+    "  vec3 light = texelFetch(fxAlbedo, q, 0).rgb * diffuseLight;\n"
+    "  light = mix(light, vec3(0.0), bvec3(isnan(light.x), isnan(light.y), isnan(light.z)));\n"
+    "  return clamp(light, 0.0, 65504.0 / float(FX_SAMPLES));\n}\n";
 }
 
 void vtkFXDirectionalOcclusionPass::AddExtensionTargets(
@@ -203,14 +207,18 @@ std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
       // The occlusion texture's layout is vtkFXSSAOPass's (see there).
       return std::string("uniform sampler2D @occlusion;\nuniform vec2 @scale;\nuniform vec2 @offset;\n") +
         this->ChannelsReadCode() + (geometric ? "uniform sampler2D @geometric;\n" : "") +
-        (bleeding ? "uniform sampler2D @bleeding;\nuniform float @bleedingStrength;\n" : "") +
+        (bleeding ? "uniform sampler2D @bleeding;\nuniform float @bleedingStrength;\n"
+                    "uniform vec2 @bleedingScale;\nuniform vec2 @bleedingOffset;\n"
+                  : "") +
         vtkFXOcclusionBasis;
     case Color:
       // One bounce off the occluders: irradiance x this surface's albedo
       // (the bleeding texture shares the occlusion's layout).
       return bleeding
-        ? "  if (lit)\n  {\n    color += @bleedingStrength * albedo.rgb * "
-          "max(texture(@bleeding, texCoord * @scale + @offset).rgb, vec3(0.0));\n  }"
+        ? "  if (lit)\n  {\n"
+          "    vec3 bled = texture(@bleeding, texCoord * @bleedingScale + @bleedingOffset).rgb;\n"
+          "    bled = mix(bled, vec3(0.0), bvec3(isnan(bled.x), isnan(bled.y), isnan(bled.z)));\n"
+          "    color += @bleedingStrength * albedo.rgb * clamp(bled, 0.0, 65504.0);\n  }"
         : std::string();
     case Ambient:
     {
@@ -257,6 +265,12 @@ void vtkFXDirectionalOcclusionPass::BindCompositeResources(
     this->BleedingBound = bleeding;
     program->SetUniformi((prefix + "bleeding").c_str(), bleeding->GetTextureUnit());
     program->SetUniformf((prefix + "bleedingStrength").c_str(), static_cast<float>(this->Bleeding));
+    Output source = this->GetInput("bleeding-denoised");
+    if (!source.Texture)
+    {
+      source = this->GetOutput("bleeding");
+    }
+    this->SetReadUniforms(program, prefix + "bleedingScale", prefix + "bleedingOffset", source);
   }
 }
 

@@ -21,7 +21,9 @@
  * vtkFXEffectPass::Output::Packing) at full or half resolution. In the
  * composite it scales the ambient visibility by the resolved value, read
  * from its optional input "denoised" (vtkFXBilateralBlurPass with three
- * components, which reads the packing in one fetch per tap) when that ran.
+ * components, which reads the packing in one fetch per tap) when that ran,
+ * bilinearly: at a crease, the one full-resolution pixel between two
+ * half-resolution texels blends channels of two bases.
  *
  * The estimator is vtkFXSSAOPass's hemisphere sampling (the seed's
  * cosine-weighted rays; lengths u^3 R under the CubeRoot falloff, R under

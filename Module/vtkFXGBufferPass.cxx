@@ -8,6 +8,8 @@
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataObject.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleKey.h"
@@ -103,7 +105,9 @@ std::string ShadingNormalGLSL(bool bump, bool normalTexture)
     code += "  {\n"
             "    vec3 dpdx = dFdx(vertexVC.xyz);\n"
             "    vec3 dpdy = dFdy(vertexVC.xyz);\n"
-            "    float h = fxBumpScale * fxBumpVSOutput;\n"
+            // (the height is along the mesh's front normal: seen from
+            // behind, a bump is a dent)
+            "    float h = (gl_FrontFacing ? 1.0 : -1.0) * fxBumpScale * fxBumpVSOutput;\n"
             "    vec3 r1 = cross(dpdy, fxShadingNormal);\n"
             "    vec3 r2 = cross(fxShadingNormal, dpdx);\n"
             "    float det = dot(dpdx, r1);\n"
@@ -270,11 +274,33 @@ bool vtkFXGBufferPass::PerturbsNormal(vtkProp* prop)
     return true;
   }
   vtkActor* actor = vtkActor::SafeDownCast(prop);
-  vtkPolyData* mesh = actor && actor->GetMapper()
-    ? vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0))
-    : nullptr;
-  return mesh && actor->GetProperty()->GetTexture("normalTex") &&
-    mesh->GetPointData()->GetTangents() && mesh->GetPointData()->GetTCoords();
+  if (!actor || !actor->GetMapper() || !actor->GetProperty()->GetTexture("normalTex"))
+  {
+    return false;
+  }
+  // VTK applies the texture where the mesh has tangents and texture
+  // coordinates: look at the data the mapper will draw (brought up to date,
+  // as the render would), every block of a composite dataset.
+  actor->GetMapper()->Update();
+  vtkDataObject* data = actor->GetMapper()->GetInputDataObject(0, 0);
+  const auto mapped = [](vtkDataObject* object) {
+    vtkPolyData* mesh = vtkPolyData::SafeDownCast(object);
+    return mesh && mesh->GetPointData()->GetTangents() && mesh->GetPointData()->GetTCoords();
+  };
+  if (auto* blocks = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> leaves;
+    leaves.TakeReference(blocks->NewIterator());
+    for (leaves->InitTraversal(); !leaves->IsDoneWithTraversal(); leaves->GoToNextItem())
+    {
+      if (mapped(leaves->GetCurrentDataObject()))
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+  return mapped(data);
 }
 
 vtkTextureObject* vtkFXGBufferPass::GetDepthTexture()

@@ -38,7 +38,7 @@
  *                        GetGeometricNormalTexture() returns Normal's.
  * plus a 32-bit float hardware depth texture that is always allocated.
  *
- * Cost: one geometry pass with up to 6 render targets; memory is
+ * Cost: one geometry pass with up to 7 render targets; memory is
  * GetBytesPerPixel() x viewport pixels. The mappers rebuild their shaders
  * only when the set of channels changes.
  *

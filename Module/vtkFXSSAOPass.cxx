@@ -124,14 +124,24 @@ void vtkFXSSAOPass::BindCompositeResources(vtkShaderProgram* program, const std:
   {
     source = this->GetOutput("occlusion");
   }
-  vtkTextureObject* reference = this->GBuffer ? this->GBuffer->GetDepthTexture() : nullptr;
-  if (!source.Texture || !reference)
+  if (!source.Texture)
   {
     return;
   }
   source.Texture->Activate();
   this->BoundInComposite = source.Texture;
   program->SetUniformi((prefix + "occlusion").c_str(), source.Texture->GetTextureUnit());
+  this->SetReadUniforms(program, prefix + "scale", prefix + "offset", source);
+}
+
+void vtkFXSSAOPass::SetReadUniforms(vtkShaderProgram* program, const std::string& scaleName,
+  const std::string& offsetName, const Output& source)
+{
+  vtkTextureObject* reference = this->GBuffer ? this->GBuffer->GetDepthTexture() : nullptr;
+  if (!source.Texture || !reference)
+  {
+    return;
+  }
   const int full[2] = { static_cast<int>(reference->GetWidth()),
     static_cast<int>(reference->GetHeight()) };
   const int low[2] = { static_cast<int>(source.Texture->GetWidth()),
@@ -142,8 +152,8 @@ void vtkFXSSAOPass::BindCompositeResources(vtkShaderProgram* program, const std:
     scale[i] = static_cast<float>(static_cast<double>(full[i]) / (source.Step * low[i]));
     offset[i] = static_cast<float>((0.5 - 0.5 / source.Step) / low[i]);
   }
-  program->SetUniform2f((prefix + "scale").c_str(), scale);
-  program->SetUniform2f((prefix + "offset").c_str(), offset);
+  program->SetUniform2f(scaleName.c_str(), scale);
+  program->SetUniform2f(offsetName.c_str(), offset);
 }
 
 void vtkFXSSAOPass::UnbindCompositeResources()

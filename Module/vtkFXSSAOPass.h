@@ -166,6 +166,11 @@ protected:
   ~vtkFXSSAOPass() override;
 
   double ComputeRadius(vtkRenderer* ren) const;
+  // Sets the uniforms `scale` and `offset`, which map the composite's
+  // texCoord to `source`'s texture (full or reduced resolution, in
+  // vtkFXSSAOPass's layout).
+  void SetReadUniforms(vtkShaderProgram* program, const std::string& scale,
+    const std::string& offset, const Output& source);
   // What the subclass vtkFXDirectionalOcclusionPass changes: three channels
   // (hemisphere only), an 8x8 tile.
   int GetEffectiveMethod() const;

@@ -86,8 +86,9 @@ void fxTexelRay(ivec2 texel, out vec3 origin, out vec3 direction)
 // visibility under the lobe 3 w_k(direction), whose mean over the three
 // channels is exactly the one-channel estimate from the same samples,
 // because the weights of every direction sum to 1. The kernel is 3-fold
-// symmetric around the normal (vtkFXDirectionalOcclusionPass), so an open
-// surface reads exactly 1 in each channel under any rotation.
+// symmetric around the normal (vtkFXDirectionalOcclusionPass), so each
+// channel's weights sum to FX_SAMPLES / 3 under any rotation: a fully
+// occluded pixel reads exactly 0 in every channel, and the scaling is exact.
 fxOcclusionValue fxHemisphereOcclusion(vec3 p, vec3 n, float depth, vec2 rotation)
 {
 #if FX_CHANNELS == 3
@@ -146,7 +147,10 @@ fxOcclusionValue fxHemisphereOcclusion(vec3 p, vec3 n, float depth, vec2 rotatio
       float blocked = gap < fxRadius ? 1.0 : max(0.0, 2.0 - gap / fxRadius);
 #if FX_BLEED
       // (fxBleed and fxOccluderLight: vtkFXDirectionalOcclusionPass)
-      fxBleed += blocked * fxOccluderLight(texelQ, sceneDepth);
+      if (blocked > 0.0)
+      {
+        fxBleed += blocked * fxOccluderLight(texelQ, sceneDepth);
+      }
 #endif
 #if FX_CHANNELS == 3
       // The sample's direction in the fixed frame (t0, b0, n).

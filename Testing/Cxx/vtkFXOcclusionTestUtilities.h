@@ -134,7 +134,8 @@ inline Setup MakeSetup(vtkRenderWindow* window)
 // 0.5). Returns the floor; the wall is the renderer's last actor.
 inline vtkActor* AddCrease(Setup& s)
 {
-  const double fo[3] = { -10, 0, 0 }, f1[3] = { 10, 0, 0 }, f2[3] = { -10, 0, 10 };
+  // (both front faces towards the crease: a bump rises along them)
+  const double fo[3] = { -10, 0, 0 }, f1[3] = { -10, 0, 10 }, f2[3] = { 10, 0, 0 };
   const double wo[3] = { -10, 0, 0 }, w1[3] = { 10, 0, 0 }, w2[3] = { -10, 10, 0 };
   auto floor = Plane(fo, f1, f2);
   s.Renderer->AddActor(floor);
