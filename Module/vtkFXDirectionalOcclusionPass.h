@@ -28,14 +28,16 @@
  * The estimator is vtkFXSSAOPass's hemisphere sampling (the seed's
  * cosine-weighted rays; lengths u^3 R under the CubeRoot falloff, R under
  * Binary) with each sample's occlusion split over the channels by its
- * direction's weights against the basis. The kernel is 3-fold symmetric
- * around the normal and each channel is scaled by 3 / samples, so the mean
- * of the three channels is exactly vtkFXSSAOPass's one-channel estimate
- * from the same samples; and with no bump the shading normal is the
- * geometric one, whose weights are 1/3 each: the result is that mean, plain
- * ambient occlusion. NumberOfSamples is rounded up to a multiple of 3 (at
- * most 63); Method is ignored (always Hemisphere). The per-pixel rotation
- * repeats over the seed's 8x8 pattern (vtkFXSSAOPass: 4x4).
+ * direction's weights against the basis, which sum to 1 for every
+ * direction. Each channel is scaled by 3 / samples, so the mean of the
+ * three channels is exactly vtkFXSSAOPass's one-channel estimate from the
+ * same samples; and with no bump the shading normal is the geometric one,
+ * whose weights are 1/3 each: the result is that mean, plain ambient
+ * occlusion. NumberOfSamples is rounded up to a multiple of 3 (at most 63),
+ * so that the stratified azimuths split evenly over the three basis
+ * directions; Method is ignored (always Hemisphere). The per-pixel rotation
+ * repeats over the seed's 8x8 pattern (vtkFXSSAOPass: 4x4; the two measured
+ * alike).
  *
  * Cost: vtkFXSSAOPass's hemisphere pass (the same fetches; three weights
  * per occluded sample), a blur of three values (two passes of one

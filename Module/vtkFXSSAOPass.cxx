@@ -210,18 +210,17 @@ void vtkFXSSAOPass::SetHemisphereKernel(vtkShaderProgram* program) const
   // Vizerie's (2009) distribution: cosine-weighted directions (z = sqrt(r2))
   // and lengths u^3 (CubeRoot falloff), or 1 (Binary: every sample at R). Azimuths are stratified over [0, 2 pi); r2 and u follow
   // radical-inverse sequences (bases 2 and 3).
-  // With three channels, sample i + n/3 is sample i turned by 120 degrees
-  // (the stratified azimuths already are): the kernel is 3-fold symmetric
-  // around the normal, so its weights against the three basis directions
-  // balance exactly under any rotation.
+  // (A kernel of triples turned by 120 degrees would balance the three
+  // directional channels exactly, but with a third of the elevations it
+  // measured less accurate: worst channel band 0.035 against 0.019 in
+  // TestDirectionalOcclusion, 0.5 dB lower on scene:bumps.)
   const int n = this->GetEffectiveNumberOfSamples();
-  const int distinct = this->Channels == 3 ? n / 3 : n;
   std::vector<float> kernel(4 * n);
   for (int i = 0; i < n; ++i)
   {
     const double r1 = (i + 0.5) / n;
-    const double r2 = RadicalInverse(i % distinct + 1, 2);
-    const double u = RadicalInverse(i % distinct + 1, 3);
+    const double r2 = RadicalInverse(i + 1, 2);
+    const double u = RadicalInverse(i + 1, 3);
     const double phi = 2.0 * vtkMath::Pi() * r1;
     kernel[4 * i + 0] = static_cast<float>(std::cos(phi) * std::sqrt(1.0 - r2));
     kernel[4 * i + 1] = static_cast<float>(std::sin(phi) * std::sqrt(1.0 - r2));

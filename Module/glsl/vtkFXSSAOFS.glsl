@@ -85,10 +85,10 @@ void fxTexelRay(ivec2 texel, out vec3 origin, out vec3 direction)
 // 1 - (3 / FX_SAMPLES) x its weighted occlusion: the cosine-weighted
 // visibility under the lobe 3 w_k(direction), whose mean over the three
 // channels is exactly the one-channel estimate from the same samples,
-// because the weights of every direction sum to 1. The kernel is 3-fold
-// symmetric around the normal (vtkFXDirectionalOcclusionPass), so each
-// channel's weights sum to FX_SAMPLES / 3 under any rotation: a fully
-// occluded pixel reads exactly 0 in every channel, and the scaling is exact.
+// because the weights of every direction sum to 1. A channel is an
+// unbiased estimate of its lobe's visibility up to the kernel's quadrature:
+// its weights sum to FX_SAMPLES / 3 only on average over the rotations, so
+// it is clamped to [0, 1].
 fxOcclusionValue fxHemisphereOcclusion(vec3 p, vec3 n, float depth, vec2 rotation)
 {
 #if FX_CHANNELS == 3

@@ -239,8 +239,7 @@ int TestDirectionalOcclusion(int, char*[])
   auto window = vtkFXTest::MakeWindow(Width, Height);
   const double up[3] = { 0, 1, 0 };
 
-  // 1 and 2: the crease without a bump, 63 samples (21 directions, each
-  // turned by 0, 120 and 240 degrees), blurred.
+  // 1 and 2: the crease without a bump, 63 samples, blurred.
   std::array<double, 3> meanChannels = { 0, 0, 0 };
   {
     Setup s = MakeDOSetup(window, 63);
