@@ -614,6 +614,23 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
   }
 }
 
+void vtkFXPipelinePass::SetEffectGroup(
+  bool enabled, const std::vector<std::pair<const char*, vtkFXEffectPass*>>& group)
+{
+  for (const auto& named : group)
+  {
+    if (enabled)
+    {
+      this->AddEffect(named.first, named.second);
+    }
+    else
+    {
+      this->RemoveEffect(named.first);
+    }
+  }
+  this->Modified();
+}
+
 void vtkFXPipelinePass::SetAmbientOcclusion(bool enabled)
 {
   if (enabled == this->AmbientOcclusion)
@@ -623,16 +640,10 @@ void vtkFXPipelinePass::SetAmbientOcclusion(bool enabled)
   this->AmbientOcclusion = enabled;
   if (enabled)
   {
-    this->SetDirectionalOcclusion(false);
-    this->AddEffect("ssao", this->SSAOPass);
-    this->AddEffect("ssao-blur", this->OcclusionBlurPass);
+    this->SetDirectionalOcclusion(false); // the pipeline runs one of the two
   }
-  else
-  {
-    this->RemoveEffect("ssao");
-    this->RemoveEffect("ssao-blur");
-  }
-  this->Modified();
+  this->SetEffectGroup(
+    enabled, { { "ssao", this->SSAOPass }, { "ssao-blur", this->OcclusionBlurPass } });
 }
 
 void vtkFXPipelinePass::SetDirectionalOcclusion(bool enabled)
@@ -645,17 +656,10 @@ void vtkFXPipelinePass::SetDirectionalOcclusion(bool enabled)
   if (enabled)
   {
     this->SetAmbientOcclusion(false);
-    this->AddEffect("do", this->DirectionalOcclusionPass);
-    this->AddEffect("do-blur", this->DirectionalOcclusionBlurPass);
-    this->AddEffect("do-bleed-blur", this->BleedingBlurPass);
   }
-  else
-  {
-    this->RemoveEffect("do");
-    this->RemoveEffect("do-blur");
-    this->RemoveEffect("do-bleed-blur");
-  }
-  this->Modified();
+  this->SetEffectGroup(enabled,
+    { { "do", this->DirectionalOcclusionPass }, { "do-blur", this->DirectionalOcclusionBlurPass },
+      { "do-bleed-blur", this->BleedingBlurPass } });
 }
 
 vtkFXDirectionalOcclusionPass* vtkFXPipelinePass::GetDirectionalOcclusionPass()

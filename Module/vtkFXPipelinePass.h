@@ -51,6 +51,7 @@
 #include "vtkWeakPointer.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 class vtkCameraPass;
@@ -263,6 +264,9 @@ protected:
   vtkSmartPointer<vtkFXBilateralBlurPass> BleedingBlurPass;
   int AmbientOcclusionQuality = Medium;
   void ApplyAmbientOcclusionPreset();
+  // Adds (enabled) or removes effects under their names.
+  void SetEffectGroup(
+    bool enabled, const std::vector<std::pair<const char*, vtkFXEffectPass*>>& group);
   std::vector<EffectSlot> Effects;
   vtkSmartPointer<vtkFXSSAOPass> SSAOPass;
   vtkSmartPointer<vtkFXBilateralBlurPass> OcclusionBlurPass;
