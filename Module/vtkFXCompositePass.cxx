@@ -362,8 +362,15 @@ void vtkFXCompositePass::BuildLightTiles(
   {
     this->LightTiles.reset(new vtkFXLightTiles);
   }
-  this->LightTiles->Build(lights, &projection->Element[0][0], static_cast<int>(albedo->GetWidth()),
-    static_cast<int>(albedo->GetHeight()));
+  if (!this->LightTiles->Build(lights, &projection->Element[0][0],
+        static_cast<int>(albedo->GetWidth()), static_cast<int>(albedo->GetHeight())) &&
+    !this->WarnedLightTiles)
+  {
+    vtkWarningMacro("The per-tile light lists would exceed "
+      << vtkFXLightTiles::MaximumEntries << " entries (" << lights.size()
+      << " lights over this viewport): every pixel loops over every light instead.");
+    this->WarnedLightTiles = true;
+  }
   this->LightTiles->Upload(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()));
 }
 

@@ -202,6 +202,7 @@ protected:
   vtkSmartPointer<vtkTextureObject> LightTexture;
   std::unique_ptr<vtkFXLightTiles> LightTiles;
   bool LightTilesUsed = false;
+  bool WarnedLightTiles = false;
   vtkFXRenderUtilities::FullScreenQuad Quad;
 
 private:

@@ -79,7 +79,7 @@ bool vtkFXLightTiles::CoveredTiles(const Light& light, const double p[16], int b
   return true;
 }
 
-void vtkFXLightTiles::Build(
+bool vtkFXLightTiles::Build(
   const std::vector<Light>& lights, const double projection[16], int width, int height)
 {
   this->Width = std::max(1, width);
@@ -110,8 +110,28 @@ void vtkFXLightTiles::Build(
   {
     forEachCoveredTile(i, [&](size_t t) { ++counts[t]; });
   }
-  this->HeaderData.assign(2 * tiles, 0.0f);
   size_t total = 0;
+  for (size_t t = 0; t < tiles; ++t)
+  {
+    total += counts[t];
+  }
+  if (total > MaximumEntries || lights.size() > MaximumEntries)
+  {
+    // One shared list of every light (row i is light i): exact, untiled.
+    this->IndexData.resize(std::max<size_t>(lights.size(), 1));
+    for (size_t i = 0; i < this->IndexData.size(); ++i)
+    {
+      this->IndexData[i] = static_cast<float>(i);
+    }
+    this->HeaderData.assign(2 * tiles, 0.0f);
+    for (size_t t = 0; t < tiles; ++t)
+    {
+      this->HeaderData[2 * t + 1] = static_cast<float>(lights.size());
+    }
+    return false;
+  }
+  this->HeaderData.assign(2 * tiles, 0.0f);
+  total = 0;
   for (size_t t = 0; t < tiles; ++t)
   {
     this->HeaderData[2 * t] = static_cast<float>(total);
@@ -130,6 +150,7 @@ void vtkFXLightTiles::Build(
   {
     this->HeaderData[2 * t + 1] = static_cast<float>(counts[t]);
   }
+  return true;
 }
 
 void vtkFXLightTiles::Upload(vtkOpenGLRenderWindow* window)

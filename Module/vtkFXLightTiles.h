@@ -19,7 +19,10 @@
  * Textures (uploaded by Upload): headers, RG32F, one texel per tile
  * (first entry, count); indices, R32F, 4096 entries per row, each a light's
  * row in the composite's light texture. Floats hold the integers exactly
- * up to 2^24 entries.
+ * up to 2^24 entries (MaximumEntries): lists that would hold more (a
+ * thousand lights that each cover a 4K viewport's 32,400 tiles) are not
+ * built; every tile then lists every light, the untiled loop's cost, and
+ * Build says so.
  *
  * A plain C++ helper of vtkFXCompositePass (not wrapped).
  */
@@ -40,6 +43,7 @@ class VTKFX_EXPORT vtkFXLightTiles
 public:
   static const int TileSize = 16;       // pixels
   static const int IndicesPerRow = 4096;
+  static const size_t MaximumEntries = size_t(1) << 24;
 
   vtkFXLightTiles();
   ~vtkFXLightTiles();
@@ -66,9 +70,19 @@ public:
   /**
    * Lists for a width x height viewport; `projection` is the camera's
    * view-to-clip matrix (row-major). Light i of `lights` is row i of the
-   * light texture.
+   * light texture. Returns false when the lists would exceed
+   * MaximumEntries: every tile then lists every light.
    */
-  void Build(const std::vector<Light>& lights, const double projection[16], int width, int height);
+  bool Build(const std::vector<Light>& lights, const double projection[16], int width, int height);
+
+  ///@{
+  /**
+   * What the last Build made (for tests): per tile (first, count), and the
+   * entries.
+   */
+  const std::vector<float>& GetHeaderData() const { return this->HeaderData; }
+  const std::vector<float>& GetIndexData() const { return this->IndexData; }
+  ///@}
 
   /**
    * Uploads the lists of the last Build into the two textures.

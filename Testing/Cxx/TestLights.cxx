@@ -111,6 +111,29 @@ int TestLights(int, char*[])
   const double dim[3] = { 2000.0, 0.0, 0.0 };
   FX_CHECK(vtkFXLightTiles::Range(1.0, dim, 1.0 / 512.0) < 0.0, "a light under the cutoff");
 
+  // Lists past 2^24 entries (17 lights over every tile of a 16384^2
+  // viewport: 17.8 million) would lose exactness in their float offsets:
+  // every tile lists every light instead, in light order.
+  {
+    vtkFXLightTiles tiles;
+    std::vector<vtkFXLightTiles::Light> everywhere(17, { { 0.0, 0.0, -1.0 }, HUGE_VAL });
+    const double identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+    FX_CHECK(!tiles.Build(everywhere, identity, 16384, 16384), "the overflow is reported");
+    const auto& headers = tiles.GetHeaderData();
+    const auto& entries = tiles.GetIndexData();
+    FX_CHECK(headers.size() == 2u * 1024 * 1024 && entries.size() == 17, "one shared list");
+    for (size_t t = 0; t < headers.size() / 2; ++t)
+    {
+      FX_CHECK(headers[2 * t] == 0.0f && headers[2 * t + 1] == 17.0f, "tile " << t);
+    }
+    for (size_t i = 0; i < entries.size(); ++i)
+    {
+      FX_CHECK(entries[i] == static_cast<float>(i), "entry " << i);
+    }
+    FX_CHECK(tiles.Build(everywhere, identity, 256, 256), "small lists are built");
+    FX_CHECK(tiles.GetIndexData().size() == 17u * 16 * 16, "every tile lists the 17 lights");
+  }
+
   auto window = vtkFXTest::MakeWindow(200, 150);
   const Lit many = Render(window, 256, false, false, Defaults);
   std::cout << "256 lights: " << many.LightsPerTile << " lights per tile" << std::endl;
