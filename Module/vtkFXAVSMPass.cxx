@@ -633,16 +633,19 @@ bool vtkFXAVSMPass::PostReplaceShaderValues(
     // The capture's chord needs the splat's scale in units of light depth
     // along the view's axis: view units, times the cosine between the
     // light ray and the axis for a perspective view (the triangle faces
-    // the light there). The triangle shrinks to hold just the sphere
-    // (VTK's holds triangleScale, 3 by default, scale units: some 3x the
-    // fragments).
+    // the light there); and, in a perspective view, the splat's centre in
+    // scale units, for each fragment's ray's distance from it. The
+    // triangle shrinks to hold just the sphere (VTK's holds triangleScale,
+    // 3 by default, scale units: some 3x the fragments).
     ExtendSplatShaders(geometryShader, fragmentShader,
-      "out float fxSplatScaleGSOutput;\nuniform float fxSplatRadius;",
+      "out float fxSplatScaleGSOutput;\nout vec3 fxSplatCenterGSOutput;\n"
+      "uniform float fxSplatRadius;",
       "float fxAxial = cameraParallel != 0 ? 1.0\n"
       "    : -gl_in[0].gl_Position.z / max(length(gl_in[0].gl_Position.xyz), 1e-30);",
       "offset.xy *= min(1.0, fxSplatRadius / triangleScale);\n"
-      "  fxSplatScaleGSOutput = radius * fxAxial;",
-      "in float fxSplatScaleVSOutput;\nuniform float fxSplatRadius;");
+      "  fxSplatScaleGSOutput = radius * fxAxial;\n"
+      "  fxSplatCenterGSOutput = gl_in[0].gl_Position.xyz / max(radius, 1e-30);",
+      "in float fxSplatScaleVSOutput;\nin vec3 fxSplatCenterVSOutput;\nuniform float fxSplatRadius;");
   }
   if (!this->Receiving || !Contains(fragmentShader, ReceiverMarker))
   {

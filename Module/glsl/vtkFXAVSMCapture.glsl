@@ -8,8 +8,11 @@
 // - A point-gaussian splat (FX_SPLAT; its inputs are named VSOutput here,
 //   VTK renames them GSOutput) is a sphere of uniform density, of
 //   radius fxSplatRadius in the splat's scale units, centred on the splat
-//   (seed 003's particles): the fragment at offset d from the centre is the
-//   chord of half-length r sqrt(1 - d^2 / R^2) around the splat's depth
+//   (seed 003's particles): the fragment whose ray passes at distance d
+//   from the centre (its offset on the light-facing triangle in an
+//   orthographic view; in a perspective one the offset's part across the
+//   ray from the light, d^2 = |o|^2 - (o . p)^2 / |p|^2 for the point p of
+//   the triangle) is the chord of half-length r sqrt(1 - d^2 / R^2) around the splat's depth
 //   (its extent along the view's axis: fxSplatScale carries the cosine to
 //   the axis for a spot or point light's view),
 //   and its optical depth is the centre chord's, -ln(1 - a_centre), times
@@ -29,7 +32,14 @@
     float fxShare = 1.0;
 #ifdef FX_SPLAT
     fxAlpha = min(fxAlpha / max(fxSplatFalloff, 1e-30), 1.0);
-    float fxD2 = dot(offsetVCVSOutput, offsetVCVSOutput) / (fxSplatRadius * fxSplatRadius);
+    float fxD2 = dot(offsetVCVSOutput, offsetVCVSOutput);
+    if (fxAVSMPerspective != 0)
+    {
+      vec3 fxOnTriangle = fxSplatCenterVSOutput + vec3(offsetVCVSOutput, 0.0);
+      float fxAlong = dot(offsetVCVSOutput, fxOnTriangle.xy);
+      fxD2 -= fxAlong * fxAlong / max(dot(fxOnTriangle, fxOnTriangle), 1e-30);
+    }
+    fxD2 /= fxSplatRadius * fxSplatRadius;
     fxShare = sqrt(max(1.0 - fxD2, 0.0));
     float fxHalf = fxSplatRadius * fxSplatScaleVSOutput * fxShare /
       (fxAVSMNearFar.y - fxAVSMNearFar.x);
