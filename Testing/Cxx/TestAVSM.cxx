@@ -238,11 +238,11 @@ vtkSmartPointer<vtkActor> Splats(
 // view) or a point light (cone 90: six views) that high over the origin,
 // and the chord is along the ray from the light: its distance d from the
 // splat's centre takes rho's place (the axial factor of perspective views).
-int CheckSplatSphere(
-  vtkRenderWindow* window, bool exact, double height, double spotHeight = 0.0, double cone = 60.0)
+int CheckSplatSphere(vtkRenderWindow* window, bool exact, double height,
+  double spotHeight = 0.0, double cone = 60.0, int mapSize = 2048)
 {
   auto avsm = MakeAVSM(8, exact, true);
-  avsm->SetShadowMapSize(2048);
+  avsm->SetShadowMapSize(mapSize);
   const double R = avsm->GetSplatRadius();
   const auto v = Visibility(
     window, avsm, { Splats({ { 0.0, 0.0, height } }, 1.0, 0.5) }, true, 1, spotHeight, cone);
@@ -649,9 +649,14 @@ int TestAVSM(int, char*[])
   {
     FX_CHECK(CheckSplatSphere(window, exactSplat, 3.0) == EXIT_SUCCESS, "splat over the ground");
     FX_CHECK(CheckSplatSphere(window, exactSplat, 0.0) == EXIT_SUCCESS, "splat in the ground");
-    FX_CHECK(CheckSplatSphere(window, exactSplat, 3.0, 10.0, 60.0) == EXIT_SUCCESS,
+  }
+  // (the compressed curves only: the chord is the capture's, shared by both
+  // modes; the point light's six views at 1024^2, whose four times larger
+  // bilinear error, from 6e-6 at 2048^2, stays far below 1e-3)
+  {
+    FX_CHECK(CheckSplatSphere(window, false, 3.0, 10.0, 60.0) == EXIT_SUCCESS,
       "splat under a spot light");
-    FX_CHECK(CheckSplatSphere(window, exactSplat, 3.0, 10.0, 90.0) == EXIT_SUCCESS,
+    FX_CHECK(CheckSplatSphere(window, false, 3.0, 10.0, 90.0, 1024) == EXIT_SUCCESS,
       "splat under a point light");
   }
   FX_CHECK(CheckSplatsShadowEachOther(window) == EXIT_SUCCESS, "splat self-shadowing");
