@@ -56,7 +56,7 @@ vtkFXEffectPass::Output vtkFXDirectionalOcclusionPass::GetOutput(const char* nam
 int vtkFXDirectionalOcclusionPass::BleedingLights(vtkRenderer* ren)
 {
   auto* glRenderer = vtkOpenGLRenderer::SafeDownCast(ren);
-  const int count = glRenderer && glRenderer->GetLightingComplexity() > 0
+  const int count = this->Bleeding > 0.0 && glRenderer && glRenderer->GetLightingComplexity() > 0
     ? glRenderer->GetLightingCount()
     : 0;
   const int cap = 8;
@@ -71,14 +71,13 @@ int vtkFXDirectionalOcclusionPass::BleedingLights(vtkRenderer* ren)
 
 std::string vtkFXDirectionalOcclusionPass::GetExtensionDefines(vtkRenderer* ren)
 {
-  return this->Bleeding > 0.0 && this->BleedingLights(ren) > 0 ? "#define FX_BLEED 1\n"
-                                                                : std::string();
+  return this->BleedingLights(ren) > 0 ? "#define FX_BLEED 1\n" : std::string();
 }
 
 std::string vtkFXDirectionalOcclusionPass::GetExtensionCode(vtkRenderer* ren)
 {
   const int lights = this->BleedingLights(ren);
-  if (this->Bleeding <= 0.0 || lights == 0)
+  if (lights == 0)
   {
     return std::string();
   }
@@ -114,8 +113,7 @@ void vtkFXDirectionalOcclusionPass::AddExtensionTargets(
   vtkRenderer* ren, int width, int height, std::vector<vtkTextureObject*>& targets)
 {
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  const bool bleeding = this->Bleeding > 0.0 && this->BleedingLights(ren) > 0;
-  if (!bleeding)
+  if (this->BleedingLights(ren) == 0)
   {
     if (this->BleedingTexture)
     {

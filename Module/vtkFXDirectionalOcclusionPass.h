@@ -105,6 +105,7 @@ protected:
     vtkRenderer* ren, int width, int height, std::vector<vtkTextureObject*>& targets) override;
   void BindExtensionInputs(vtkShaderProgram* program, vtkRenderer* ren) override;
   void UnbindExtensionInputs() override;
+  // The lights the bleeding lights occluders with (0: no bleeding).
   int BleedingLights(vtkRenderer* ren);
 
   bool ShowChannels = false;

@@ -224,9 +224,9 @@ void vtkFXGBufferPass::SetBump(vtkActor* actor, const char* arrayName, double sc
 bool vtkFXGBufferPass::HasBump(vtkProp* prop)
 {
   vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
-  if (!keys || !keys->Has(BUMP_ARRAY()) || !keys->Has(BUMP_SCALE()) ||
-    !vtkOpenGLPolyDataMapper::SafeDownCast(
-      vtkActor::SafeDownCast(prop) ? vtkActor::SafeDownCast(prop)->GetMapper() : nullptr))
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  if (!keys || !keys->Has(BUMP_ARRAY()) || !keys->Has(BUMP_SCALE()) || !actor ||
+    !vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()))
   {
     return false;
   }

@@ -63,8 +63,9 @@ ivec2 fxGuideTexel(ivec2 inputTexel)
 }
 
 // Values `value` of input texel q and their guide (normal, depth); `n0`
-// stands in for the normal of inputs that carry depth alone.
-void fxReadTap(ivec2 q, vec3 n0, out vec4 value, out vec4 guide)
+// stands in for the normal of inputs that carry depth alone. Returns the
+// texel as stored.
+vec4 fxReadTap(ivec2 q, vec3 n0, out vec4 value, out vec4 guide)
 {
   vec4 texel = texelFetch(fxInput, q, 0);
 #if FX_PACKED_NORMALS
@@ -77,6 +78,7 @@ void fxReadTap(ivec2 q, vec3 n0, out vec4 value, out vec4 guide)
   value = texel;
   guide = texelFetch(fxGuide, q, 0);
 #endif
+  return texel;
 }
 
 // What a blur pass writes for values `value` of a pixel whose input texel
@@ -145,9 +147,8 @@ void main()
   gl_FragData[0] = vec4(fxDecodeNormal(texelFetch(fxNormal, texel, 0).rg),
     texelFetch(fxLinearDepth, texel, 0).r);
 #elif FX_MODE < 2
-  vec4 center = texelFetch(fxInput, p, 0);
   vec4 value0, g0;
-  fxReadTap(p, vec3(0.0, 0.0, 1.0), value0, g0);
+  vec4 center = fxReadTap(p, vec3(0.0, 0.0, 1.0), value0, g0);
   float d0 = g0.w;
   if (!(d0 > 0.0))
   {
