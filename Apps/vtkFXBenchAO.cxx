@@ -346,6 +346,12 @@ std::vector<float> OcclusionOf(const std::vector<unsigned char>& image,
   return ao;
 }
 
+// PSNR of values in [0, 1] off by `rmse` (99 dB for none).
+double PSNRFromRMSE(double rmse)
+{
+  return rmse > 0.0 ? 20.0 * std::log10(1.0 / rmse) : 99.0;
+}
+
 void Compare(const std::vector<float>& ao, const std::vector<float>& reference, double& rmse,
   double& psnr)
 {
@@ -361,7 +367,7 @@ void Compare(const std::vector<float>& ao, const std::vector<float>& reference, 
     }
   }
   rmse = n ? std::sqrt(sum / n) : 0.0;
-  psnr = rmse > 0.0 ? 20.0 * std::log10(1.0 / rmse) : 99.0;
+  psnr = PSNRFromRMSE(rmse);
 }
 
 
@@ -518,9 +524,8 @@ void BenchBleeding(const Options& o, const std::string& input, double radius, in
   const double rmse = n ? std::sqrt(sum / (3.0 * n)) : 0.0;
   const double rmseNone = n ? std::sqrt(sumNone / (3.0 * n)) : 0.0;
   const double frame = Median(runs[1].FrameMs), without = Median(runs[0].FrameMs);
-  const auto psnr = [](double e) { return e > 0.0 ? 20.0 * std::log10(1.0 / e) : 99.0; };
-  csv << input << ",no-bleeding,none,0," << rmseNone << "," << psnr(rmseNone) << "\n";
-  csv << input << ",vtkfx-do,bleeding 1," << frame - without << "," << rmse << "," << psnr(rmse)
+  csv << input << ",no-bleeding,none,0," << rmseNone << "," << PSNRFromRMSE(rmseNone) << "\n";
+  csv << input << ",vtkfx-do,bleeding 1," << frame - without << "," << rmse << "," << PSNRFromRMSE(rmse)
       << "\n";
   std::cout << std::fixed << std::setprecision(4) << FileTag(input)
             << "  bleeding irradiance RMSE " << rmse << " (none: " << rmseNone << ")  frame "
