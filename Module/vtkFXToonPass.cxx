@@ -6,6 +6,8 @@
 #include "vtkFXRenderUtilities.h"
 #include "vtkFXToonBands.h"
 #include "vtkFXToonEdgesFS.h"
+#include "vtkFXToonLineTilesGS.h"
+#include "vtkFXToonLineTilesVS.h"
 #include "vtkFXToonLinesFS.h"
 
 #include "vtkMath.h"
@@ -13,7 +15,9 @@
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
@@ -30,6 +34,10 @@ namespace
 {
 using GB = vtkFXGBufferPass;
 const int MaximumBandThresholds = 16; // each one is a step in the composite
+const int LineTileSize = 8;           // pixels; lines are drawn tile by tile
+// Line windows (texels per side) up to this get straight-line code: lines
+// under 5 px wide (72 midpoints); wider ones a loop.
+const int MaximumUnrolledLineWindow = 6;
 
 // After the version line: FX_GATHER 1 where textureGather can read any
 // component (GLSL 4.00, or GLSL 1.50 with ARB_gpu_shader5); both line
@@ -171,6 +179,37 @@ std::string vtkFXToonPass::GetCompositeCode(int hook)
   }
 }
 
+void vtkFXToonPass::GetLineWindow(int height, int window[2]) const
+{
+  // Texel offsets whose side midpoints can be within width / 2 + 1/2 of a
+  // pixel's centre, widened to an even count (2x2 blocks).
+  const double width = this->GetEffectiveLineWidth(height);
+  window[0] = -static_cast<int>(std::floor(0.5 * width + 1.0));
+  const int reach = static_cast<int>(std::floor(0.5 * width + 0.5));
+  window[1] = reach + (reach - window[0] + 1) % 2;
+}
+
+bool vtkFXToonPass::CanFlagLineTiles()
+{
+  const bool imageStores =
+    glewIsSupported("GL_VERSION_4_2") || glewIsSupported("GL_ARB_shader_image_load_store");
+  const bool textureClears =
+    glewIsSupported("GL_VERSION_4_4") || glewIsSupported("GL_ARB_clear_texture");
+  return imageStores && textureClears;
+}
+
+void vtkFXToonPass::ClearTileMask(vtkOpenGLRenderWindow* window, const int size[2])
+{
+  const int tiles[2] = { (size[0] + LineTileSize - 1) / LineTileSize,
+    (size[1] + LineTileSize - 1) / LineTileSize };
+  vtkFXRenderUtilities::EnsureTexture(
+    this->TileMask, window, tiles[0], tiles[1], vtkFXRenderUtilities::R8);
+  // (Clearing it as a framebuffer's attachment made llvmpipe wait for the
+  // frame's queued draws: the next G-buffer took 40 ms longer.)
+  const unsigned char zero = 0;
+  glClearTexImage(this->TileMask->GetHandle(), 0, GL_RED, GL_UNSIGNED_BYTE, &zero);
+}
+
 bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* window)
 {
   vtkTextureObject* depth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
@@ -182,11 +221,19 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   this->Edges->SetWrapS(vtkTextureObject::ClampToBorder);
   this->Edges->SetWrapT(vtkTextureObject::ClampToBorder);
   this->Edges->SetBorderColor(0.0f, 0.0f, 0.0f, 0.0f);
-
+  this->TilesFlagged = this->CullLineTiles && CanFlagLineTiles();
+  if (this->TilesFlagged)
+  {
+    this->ClearTileMask(window, size);
+  }
   std::string fs = vtkFXToonEdgesFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
     std::string(GatherDefines) + "#define FX_SILHOUETTES " + (this->Silhouettes ? "1" : "0") +
-      "\n#define FX_CREASES " + (this->Creases ? "1" : "0") + "\n",
+      "\n#define FX_CREASES " + (this->Creases ? "1" : "0") + "\n#define FX_TILE " +
+      std::to_string(LineTileSize) + "\n" +
+      (this->TilesFlagged
+          ? "#extension GL_ARB_shader_image_load_store : enable\n#define FX_TILE_MASK 1\n"
+          : "#define FX_TILE_MASK 0\n"),
     false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXViewPosition::Dec", vtkFXViewPosition, false);
@@ -206,20 +253,115 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   program->SetUniformf("fxSilhouetteThreshold", static_cast<float>(this->SilhouetteThreshold));
   program->SetUniformf(
     "fxCreaseCosine", static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(this->CreaseAngle))));
+  if (this->TilesFlagged)
+  {
+    int lineWindow[2];
+    this->GetLineWindow(size[1], lineWindow);
+    program->SetUniform2i("fxLineWindow", lineWindow);
+    glBindImageTexture(
+      0, this->TileMask->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
+    program->SetUniformi("fxTileMask", 0);
+  }
   this->EdgeQuad.Helper->Render();
+  if (this->TilesFlagged)
+  {
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
+    // The lines' vertex shader reads the flags as a texture.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  }
   depth->Deactivate();
   normal->Deactivate();
   return true;
 }
 
+std::string vtkFXToonPass::MidpointCode(int first, int last)
+{
+  // Every side midpoint of the texels first..last (an even count) away
+  // from the pixel, in the order of the pixel's distance to it; ties keep
+  // the order of 2x2 blocks (rows, then columns), texels in a block (w, z,
+  // x, y as textureGather returns them) and sides (right, then above), so
+  // the nearest two are always the same ones.
+  struct Midpoint
+  {
+    int Block;
+    char Component;
+    int Bit;
+    int X2, Y2; // twice the offset from the pixel's centre
+  };
+  static const struct
+  {
+    char Component;
+    int X, Y;
+  } texelsInBlock[4] = { { 'w', 0, 0 }, { 'z', 1, 0 }, { 'x', 0, 1 }, { 'y', 1, 1 } };
+  std::ostringstream blocks;
+  std::vector<Midpoint> midpoints;
+  int block = 0;
+  for (int dy = first; dy <= last; dy += 2)
+  {
+    for (int dx = first; dx <= last; dx += 2, ++block)
+    {
+      blocks << "  ivec4 block" << block << " = fxMarkBits(fxMarkBlock(pixel + ivec2(" << dx
+             << ", " << dy << ")));\n";
+      for (const auto& texel : texelsInBlock)
+      {
+        const int x2 = 2 * (dx + texel.X);
+        const int y2 = 2 * (dy + texel.Y);
+        midpoints.push_back({ block, texel.Component, 1, x2 + 1, y2 });
+        midpoints.push_back({ block, texel.Component, 2, x2, y2 + 1 });
+      }
+    }
+  }
+  std::stable_sort(midpoints.begin(), midpoints.end(), [](const Midpoint& a, const Midpoint& b) {
+    return a.X2 * a.X2 + a.Y2 * a.Y2 < b.X2 * b.X2 + b.Y2 * b.Y2;
+  });
+  std::ostringstream code;
+  code.setf(std::ios::fixed);
+  code.precision(1);
+  if (last - first + 1 <= MaximumUnrolledLineWindow)
+  {
+    // One gather per block, then straight-line code.
+    code << blocks.str();
+    for (const Midpoint& m : midpoints)
+    {
+      code << "  fxTake(nearest, (block" << m.Block << "." << m.Component << " & " << m.Bit
+           << ") != 0, vec2(" << 0.5 * m.X2 << ", " << 0.5 * m.Y2 << "));\n";
+    }
+    return code.str();
+  }
+  // Wide lines: a loop over the same list that stops at the second mark
+  // (a few hundred midpoints would make the straight-line code too long).
+  code << "  const vec3 midpoints[" << midpoints.size() << "] = vec3[](";
+  for (size_t i = 0; i < midpoints.size(); ++i)
+  {
+    code << (i ? ", " : "") << "vec3(" << 0.5 * midpoints[i].X2 << ", " << 0.5 * midpoints[i].Y2
+         << ", " << midpoints[i].Bit << ".0)";
+  }
+  code << ");\n"
+       << "  for (int i = 0; i < " << midpoints.size() << " && nearest.count < 2; ++i)\n"
+       << "  {\n"
+       << "    vec2 midpoint = midpoints[i].xy;\n"
+       << "    int marks = fxMarkBits(vec4(fxMarkAt(pixel + ivec2(floor(midpoint))))).x;\n"
+       << "    fxTake(nearest, (marks & int(midpoints[i].z)) != 0, midpoint);\n"
+       << "  }\n";
+  return code.str();
+}
+
 void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* window)
 {
+  const int size[2] = { static_cast<int>(this->Edges->GetWidth()),
+    static_cast<int>(this->Edges->GetHeight()) };
+  int lineWindow[2];
+  this->GetLineWindow(size[1], lineWindow);
+  std::string vs = vtkFXToonLineTilesVS;
   std::string fs = vtkFXToonLinesFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", GatherDefines, false);
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::FXToonLines::Midpoints", MidpointCode(lineWindow[0], lineWindow[1]), false);
   vtkShaderProgram* program =
-    vtkFXRenderUtilities::ReadyQuad(this->LineQuad, window, fs);
+    window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
   if (!program)
   {
+    vtkErrorMacro("The feature lines' shaders did not build; no lines are drawn.");
     return;
   }
   // Onto the image the pipeline is drawing (its HDR target, or whatever
@@ -227,25 +369,15 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
   // alpha of what is under a line becomes opaque where the line covers it.
   vtkFXRenderUtilities::BlendOntoScope blend(
     window, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-
-  const int size[2] = { static_cast<int>(this->Edges->GetWidth()),
-    static_cast<int>(this->Edges->GetHeight()) };
   // gl_FragCoord counts from the framebuffer's corner, the edges from the
   // viewport's.
   int viewport[4];
   window->GetState()->vtkglGetIntegerv(GL_VIEWPORT, viewport);
   program->SetUniform2i("fxOrigin", viewport);
-  const double width = this->GetEffectiveLineWidth(size[1]);
   this->Edges->Activate();
   program->SetUniformi("fxEdges", this->Edges->GetTextureUnit());
   program->SetUniform2i("fxEdgeSize", size);
-  program->SetUniformf("fxHalfWidth", static_cast<float>(0.5 * width));
-  // Texel offsets whose side midpoints can be within width / 2 + 1/2 of a
-  // pixel's centre, widened to an even count (2x2 blocks).
-  const int reach[2] = { -static_cast<int>(std::floor(0.5 * width + 1.0)),
-    static_cast<int>(std::floor(0.5 * width + 0.5)) };
-  const int blocks[2] = { reach[0], reach[1] + (reach[1] - reach[0] + 1) % 2 };
-  program->SetUniform2i("fxWindow", blocks);
+  program->SetUniformf("fxHalfWidth", static_cast<float>(0.5 * this->GetEffectiveLineWidth(size[1])));
   float color[3];
   for (int i = 0; i < 3; ++i)
   {
@@ -254,7 +386,22 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
     color[i] = static_cast<float>(c >= 0.0 ? std::min(c, 65504.0) : 0.0);
   }
   program->SetUniform3f("fxLineColor", color);
-  this->LineQuad.Helper->Render();
+  // Without flags, one tile as large as the image (many small quads cost
+  // more than one large one); the sampler then reads the edges, unused.
+  const int tileSize[2] = { this->TilesFlagged ? LineTileSize : size[0],
+    this->TilesFlagged ? LineTileSize : size[1] };
+  const int tiles[2] = { (size[0] + tileSize[0] - 1) / tileSize[0],
+    (size[1] + tileSize[1] - 1) / tileSize[1] };
+  program->SetUniform2i("fxTileSize", tileSize);
+  program->SetUniformi("fxTilesPerRow", tiles[0]);
+  vtkTextureObject* mask = this->TilesFlagged ? this->TileMask.Get() : this->Edges.Get();
+  mask->Activate();
+  program->SetUniformi("fxTileMask", mask->GetTextureUnit());
+  program->SetUniformi("fxEveryTile", this->TilesFlagged ? 0 : 1);
+  this->LineTiles->Bind();
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, tiles[0] * tiles[1]);
+  this->LineTiles->Release();
+  mask->Deactivate();
   this->Edges->Deactivate();
 }
 
@@ -282,7 +429,8 @@ void vtkFXToonPass::Render(const vtkRenderState* s)
 void vtkFXToonPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkFXRenderUtilities::ReleaseQuad(this->EdgeQuad, w);
-  vtkFXRenderUtilities::ReleaseQuad(this->LineQuad, w);
+  this->LineTiles->ReleaseGraphicsResources();
+  vtkFXRenderUtilities::Release(this->TileMask, w);
   vtkFXRenderUtilities::Release(this->Edges, w);
   vtkFXRenderUtilities::Release(this->EdgeFrameBuffer, w);
 }
@@ -303,6 +451,7 @@ void vtkFXToonPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CreaseAngle: " << this->CreaseAngle << "\n";
   os << indent << "LineWidth: " << this->LineWidth << " at " << this->LineReferenceHeight
      << " rows\n";
+  os << indent << "CullLineTiles: " << this->CullLineTiles << "\n";
   os << indent << "LineColor: " << this->LineColor[0] << " " << this->LineColor[1] << " "
      << this->LineColor[2] << "\n";
 }

@@ -33,10 +33,13 @@
  * one). With lines on, its stage is PostProcess, otherwise Composite.
  * Cost: bands, a few instructions per light and pixel; lines, one
  * full-screen pass of 3 gathers of G-buffer 2x2 blocks per pixel into an
- * R8 edge texture (1 byte per pixel), and one of 1 (lines under 1 px),
- * 4 (under 3 px) or 9 (under 5 px) gathers of edge blocks per pixel.
- * Where GL lacks textureGather (GLSL 4.00 or ARB_gpu_shader5), each
- * gather becomes 4 texel fetches.
+ * R8 edge texture (1 byte per pixel; it also flags, in an R8 texture of
+ * one byte per 8x8 tile, the tiles lines can reach: CullLineTiles), and a
+ * pass over the flagged tiles of 1 (lines under 1 px), 4 (under 3 px) or
+ * 9 (under 5 px) gathers of edge blocks per pixel (wider lines read
+ * texel by texel up to the two nearest marks). Where GL lacks
+ * textureGather (GLSL 4.00 or ARB_gpu_shader5), each gather becomes 4
+ * texel fetches.
  */
 #ifndef vtkFXToonPass_h
 #define vtkFXToonPass_h
@@ -44,6 +47,7 @@
 #include "vtkFXEffectPass.h"
 #include "vtkFXModule.h"
 #include "vtkFXRenderUtilities.h" // for the full-screen quads
+#include "vtkNew.h"     // for the tiles' vertex array
 #include "vtkSmartPointer.h"
 
 #include <string>
@@ -51,6 +55,7 @@
 
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
+class vtkOpenGLVertexArrayObject;
 class vtkTextureObject;
 
 class VTKFX_EXPORT vtkFXToonPass : public vtkFXEffectPass
@@ -143,6 +148,17 @@ public:
   vtkGetVector3Macro(LineColor, double);
 
   /**
+   * Draw lines only over the 8x8-pixel tiles that a marked pixel side can
+   * reach (default on). The edges pass flags those tiles with image stores
+   * (GL 4.2 and texture clears, GL 4.4, or their ARB extensions); without
+   * them, or with this off, lines are drawn over the whole image. The
+   * image is the same either way; off is for comparison.
+   */
+  vtkSetMacro(CullLineTiles, bool);
+  vtkGetMacro(CullLineTiles, bool);
+  vtkBooleanMacro(CullLineTiles, bool);
+
+  /**
    * Line width in pixels for a viewport `height` rows high (see LineWidth).
    */
   double GetEffectiveLineWidth(int height) const;
@@ -172,7 +188,17 @@ protected:
 
   std::string BandCode() const;
   bool FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
+  /** Texel offsets a line pixel reads marks from (first, last) at `height` rows. */
+  void GetLineWindow(int height, int window[2]) const;
+  /** Whether the edges pass can flag the tiles lines reach (image stores). */
+  static bool CanFlagLineTiles();
+  void ClearTileMask(vtkOpenGLRenderWindow* window, const int size[2]);
   void DrawLines(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
+  /**
+   * The lines shader's reads of the 2x2 mark blocks of texel offsets
+   * first..last, and its pick of the nearest marked side midpoints.
+   */
+  static std::string MidpointCode(int first, int last);
 
   bool Bands = true;
   std::vector<double> BandThresholds;
@@ -185,10 +211,13 @@ protected:
   int LineReferenceHeight = 720;
   double LineColor[3] = { 0.0, 0.0, 0.0 };
 
+  bool CullLineTiles = true;
+  bool TilesFlagged = false; // this frame's edges pass flagged the tiles
   vtkSmartPointer<vtkTextureObject> Edges;
+  vtkSmartPointer<vtkTextureObject> TileMask; // R8, one texel per 8x8 tile: lines reach it
   vtkSmartPointer<vtkOpenGLFramebufferObject> EdgeFrameBuffer;
   vtkFXRenderUtilities::FullScreenQuad EdgeQuad;
-  vtkFXRenderUtilities::FullScreenQuad LineQuad;
+  vtkNew<vtkOpenGLVertexArrayObject> LineTiles; // no attributes: one point per tile
 
 private:
   vtkFXToonPass(const vtkFXToonPass&) = delete;

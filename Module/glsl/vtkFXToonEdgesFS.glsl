@@ -16,6 +16,10 @@
 // neighbour are separated, g = 1 for the neighbour above. FX_SILHOUETTES,
 // FX_CREASES select the tests; FX_GATHER reads 2x2 blocks with
 // textureGather (GL 4.0 / ARB_gpu_shader5) where the context has it.
+// With FX_TILE_MASK (image stores: GL 4.2 / ARB_shader_image_load_store) a
+// marked pixel also flags, in fxTileMask, the FX_TILE x FX_TILE tiles of
+// the pixels whose lines can reach it (vtkFXToonLineTilesVS draws only
+// those).
 
 // Texels are addressed through gl_FragCoord; texCoord is read once only so
 // that the quad's texture-coordinate attribute stays in the program
@@ -27,6 +31,10 @@ uniform sampler2D fxNormal;
 uniform ivec2 fxGBufferSize;
 uniform float fxSilhouetteThreshold; // fraction of the depth
 uniform float fxCreaseCosine;
+#if FX_TILE_MASK
+layout(r8) uniform writeonly image2D fxTileMask;
+uniform ivec2 fxLineWindow; // texel offsets a line pixel reads: first, last
+#endif
 
 //VTK::FXNormalCoding::Dec
 
@@ -122,4 +130,20 @@ void main()
   // Both marks in one byte (0, 1/3, 2/3, 1), so one gather reads four
   // pixels' marks in vtkFXToonLinesFS.
   gl_FragData[0] = vec4((r + 2.0 * g) / 3.0, 0.0, 0.0, 1.0);
+#if FX_TILE_MASK
+  if (r + g > 0.0)
+  {
+    // Pixel q reads the marks of texels q + first .. q + last, so this
+    // texel's reach pixels texel - last .. texel - first.
+    ivec2 firstTile = max(texel - fxLineWindow.y, 0) / FX_TILE;
+    ivec2 lastTile = max(texel - fxLineWindow.x, 0) / FX_TILE;
+    for (int y = firstTile.y; y <= lastTile.y; ++y)
+    {
+      for (int x = firstTile.x; x <= lastTile.x; ++x)
+      {
+        imageStore(fxTileMask, ivec2(x, y), vec4(1.0));
+      }
+    }
+  }
+#endif
 }

@@ -8,6 +8,10 @@
 //   at twice the resolution they are twice as wide in pixels (the same
 //   drawing); on the fandisk (normals split at 30 degrees, as CAD parts are
 //   shown) creases add lines inside the part;
+// - lines drawn only over the tiles the edges pass flags give the same
+//   image, byte for byte, as lines drawn over the whole image, at widths
+//   that take each of the lines shader's forms and a size that is not a
+//   multiple of the tile;
 // - the same image at scene scales 1e-6 and 1e6, translated 1e6 from the
 //   origin, with a near/far ratio of 1e-6, in both projections.
 #include "vtkFXPipelinePass.h"
@@ -335,6 +339,58 @@ std::vector<unsigned char> RenderMoved(vtkRenderWindow* window, double scale, do
   return vtkFXScenes::Capture(window);
 }
 
+// The bunny with lines of `width` pixels, drawn over flagged tiles only or
+// over the whole image, at 403x301 (tiles of 8 px do not divide it).
+std::vector<unsigned char> RenderLines(vtkRenderWindow* window, double width, bool cull, bool lines)
+{
+  window->SetSize(403, 301);
+  window->GetRenderers()->RemoveAllItems();
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  std::string error;
+  if (!vtkFXScenes::Populate(renderer,
+        vtkFXScenes::DataDirectory() + "/stanford-bunny.obj", vtkFXScenes::Options(), error))
+  {
+    std::cerr << error << std::endl;
+    return {};
+  }
+  vtkNew<vtkFXPipelinePass> pipeline;
+  vtkNew<vtkFXToonPass> toon;
+  toon->SetLineReferenceHeight(301);
+  toon->SetLineWidth(width);
+  toon->SetCullLineTiles(cull);
+  toon->SetFeatureLines(lines);
+  pipeline->AddEffect("toon", toon);
+  renderer->SetPass(pipeline);
+  window->Render();
+  return vtkFXScenes::Capture(window);
+}
+
+int CheckTileCulling(vtkRenderWindow* window)
+{
+  // 0.8 px: one block of marks; 2 and 4 px: 4 and 9 blocks in straight-line
+  // code; 7 px: the loop over midpoints.
+  for (double width : { 0.8, 2.0, 4.0, 7.0 })
+  {
+    const auto culled = RenderLines(window, width, true, true);
+    const auto whole = RenderLines(window, width, false, true);
+    const auto none = RenderLines(window, width, true, false);
+    FX_CHECK(!culled.empty() && culled.size() == whole.size(), "the bunny did not render");
+    size_t differing = 0, lined = 0;
+    for (size_t i = 0; i < culled.size(); ++i)
+    {
+      differing += culled[i] != whole[i] ? 1 : 0;
+      lined += culled[i] != none[i] ? 1 : 0;
+    }
+    std::cout << "lines of " << width << " px: " << lined
+              << " bytes changed by lines, culled and whole images differ in " << differing
+              << std::endl;
+    FX_CHECK(lined > 1000, "no lines drawn at " << width << " px");
+    FX_CHECK(differing == 0, differing << " bytes differ with tile culling at " << width << " px");
+  }
+  return EXIT_SUCCESS;
+}
+
 int CheckScaleInvariance(vtkRenderWindow* window)
 {
   window->SetSize(320, 240);
@@ -383,6 +439,7 @@ int TestToon(int, char*[])
   FX_CHECK(std::fabs(width2 / width1 - 2.0) < 0.2,
     "lines at twice the size are " << width2 / width1 << " times as wide");
   FX_CHECK(CheckFandiskCreases(window) == EXIT_SUCCESS, "fandisk creases");
+  FX_CHECK(CheckTileCulling(window) == EXIT_SUCCESS, "tile culling");
   FX_CHECK(CheckScaleInvariance(window) == EXIT_SUCCESS, "scale invariance");
   return EXIT_SUCCESS;
 }
