@@ -159,6 +159,17 @@ public:
   vtkBooleanMacro(CullLineTiles, bool);
 
   /**
+   * Whether the last frame with lines drew them over flagged tiles only.
+   */
+  bool GetLineTilesCulled() const { return this->TilesFlagged; }
+
+  /**
+   * Whether the current OpenGL context can flag line tiles (image stores
+   * and texture clears). Needs a current context.
+   */
+  static bool CanFlagLineTiles();
+
+  /**
    * Line width in pixels for a viewport `height` rows high (see LineWidth).
    */
   double GetEffectiveLineWidth(int height) const;
@@ -190,8 +201,6 @@ protected:
   bool FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
   /** Texel offsets a line pixel reads marks from (first, last) at `height` rows. */
   void GetLineWindow(int height, int window[2]) const;
-  /** Whether the edges pass can flag the tiles lines reach (image stores). */
-  static bool CanFlagLineTiles();
   void ClearTileMask(vtkOpenGLRenderWindow* window, const int size[2]);
   void DrawLines(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
   /**

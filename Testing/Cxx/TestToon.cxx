@@ -341,7 +341,8 @@ std::vector<unsigned char> RenderMoved(vtkRenderWindow* window, double scale, do
 
 // The bunny with lines of `width` pixels, drawn over flagged tiles only or
 // over the whole image, at 403x301 (tiles of 8 px do not divide it).
-std::vector<unsigned char> RenderLines(vtkRenderWindow* window, double width, bool cull, bool lines)
+std::vector<unsigned char> RenderLines(
+  vtkRenderWindow* window, double width, bool cull, bool lines, bool* culled = nullptr)
 {
   window->SetSize(403, 301);
   window->GetRenderers()->RemoveAllItems();
@@ -363,6 +364,10 @@ std::vector<unsigned char> RenderLines(vtkRenderWindow* window, double width, bo
   pipeline->AddEffect("toon", toon);
   renderer->SetPass(pipeline);
   window->Render();
+  if (culled)
+  {
+    *culled = toon->GetLineTilesCulled();
+  }
   return vtkFXScenes::Capture(window);
 }
 
@@ -372,7 +377,11 @@ int CheckTileCulling(vtkRenderWindow* window)
   // code; 7 px: the loop over midpoints.
   for (double width : { 0.8, 2.0, 4.0, 7.0 })
   {
-    const auto culled = RenderLines(window, width, true, true);
+    bool tilesCulled = false;
+    const auto culled = RenderLines(window, width, true, true, &tilesCulled);
+    // Otherwise both images would come from the same whole-image draw.
+    FX_CHECK(tilesCulled == vtkFXToonPass::CanFlagLineTiles(),
+      "tile culling " << (tilesCulled ? "ran" : "did not run") << " at " << width << " px");
     const auto whole = RenderLines(window, width, false, true);
     const auto none = RenderLines(window, width, true, false);
     FX_CHECK(!culled.empty() && culled.size() == whole.size(), "the bunny did not render");
@@ -383,7 +392,8 @@ int CheckTileCulling(vtkRenderWindow* window)
       lined += culled[i] != none[i] ? 1 : 0;
     }
     std::cout << "lines of " << width << " px: " << lined
-              << " bytes changed by lines, culled and whole images differ in " << differing
+              << " bytes changed by lines, culled (tiles culled: " << (tilesCulled ? "yes" : "no")
+              << ") and whole images differ in " << differing
               << std::endl;
     FX_CHECK(lined > 1000, "no lines drawn at " << width << " px");
     FX_CHECK(differing == 0, differing << " bytes differ with tile culling at " << width << " px");
