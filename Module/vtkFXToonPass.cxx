@@ -6,7 +6,6 @@
 #include "vtkFXRenderUtilities.h"
 #include "vtkFXToonBands.h"
 #include "vtkFXToonEdgesFS.h"
-#include "vtkFXToonLineTilesGS.h"
 #include "vtkFXToonLineTilesVS.h"
 #include "vtkFXToonLinesFS.h"
 
@@ -35,6 +34,8 @@ namespace
 using GB = vtkFXGBufferPass;
 const int MaximumBandThresholds = 16; // each one is a step in the composite
 const int LineTileSize = 8;           // pixels; lines are drawn tile by tile
+// Pixels; the lines shader visits every side midpoint within half of it.
+const double MaximumLineWidth = 32.0;
 // Line windows (texels per side) up to this get straight-line code: lines
 // under 5 px wide (72 midpoints); wider ones a loop.
 const int MaximumUnrolledLineWindow = 6;
@@ -56,6 +57,10 @@ const char* const GatherDefines = "//VTK::System::Dec\n"
 vtkFXToonPass::vtkFXToonPass()
 {
   this->Stage = PostProcess;
+  // The edges shader's tile-flag loop runs a number of times that differs
+  // between neighbouring pixels: safe on llvmpipe only without a
+  // primitive edge inside the viewport (see FullScreenQuad::OneTriangle).
+  this->EdgeQuad.OneTriangle = true;
   this->SetDefaultBandThresholds();
 }
 
@@ -115,7 +120,8 @@ void vtkFXToonPass::SetFeatureLines(bool lines)
 
 double vtkFXToonPass::GetEffectiveLineWidth(int height) const
 {
-  return std::max(0.25, this->LineWidth * height / this->LineReferenceHeight);
+  return std::min(MaximumLineWidth,
+    std::max(0.25, this->LineWidth * height / this->LineReferenceHeight));
 }
 
 vtkTextureObject* vtkFXToonPass::GetEdgeTexture()
@@ -191,8 +197,9 @@ void vtkFXToonPass::GetLineWindow(int height, int window[2]) const
 
 bool vtkFXToonPass::CanFlagLineTiles()
 {
-  const bool imageStores =
-    glewIsSupported("GL_VERSION_4_2") || glewIsSupported("GL_ARB_shader_image_load_store");
+  // The shaders are GLSL 1.50 (VTK's version line) and enable the
+  // extension by name: GL 4.2 alone is not enough.
+  const bool imageStores = glewIsSupported("GL_ARB_shader_image_load_store");
   const bool textureClears =
     glewIsSupported("GL_VERSION_4_4") || glewIsSupported("GL_ARB_clear_texture");
   return imageStores && textureClears;
@@ -221,17 +228,14 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   this->Edges->SetWrapS(vtkTextureObject::ClampToBorder);
   this->Edges->SetWrapT(vtkTextureObject::ClampToBorder);
   this->Edges->SetBorderColor(0.0f, 0.0f, 0.0f, 0.0f);
-  this->TilesFlagged = this->CullLineTiles && CanFlagLineTiles();
-  if (this->TilesFlagged)
-  {
-    this->ClearTileMask(window, size);
-  }
+  const bool flag = this->CullLineTiles && CanFlagLineTiles();
+  this->TilesFlagged = false;
   std::string fs = vtkFXToonEdgesFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
     std::string(GatherDefines) + "#define FX_SILHOUETTES " + (this->Silhouettes ? "1" : "0") +
       "\n#define FX_CREASES " + (this->Creases ? "1" : "0") + "\n#define FX_TILE " +
       std::to_string(LineTileSize) + "\n" +
-      (this->TilesFlagged
+      (flag
           ? "#extension GL_ARB_shader_image_load_store : enable\n#define FX_TILE_MASK 1\n"
           : "#define FX_TILE_MASK 0\n"),
     false);
@@ -243,6 +247,11 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   if (!program)
   {
     return false;
+  }
+  this->TilesFlagged = flag;
+  if (flag)
+  {
+    this->ClearTileMask(window, size);
   }
   depth->Activate();
   normal->Activate();
@@ -266,8 +275,9 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   if (this->TilesFlagged)
   {
     glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
-    // The lines' vertex shader reads the flags as a texture.
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    // The lines' vertex shader reads the flags as a texture; the next
+    // frame clears them with glClearTexImage.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   }
   depth->Deactivate();
   normal->Deactivate();
@@ -328,8 +338,11 @@ std::string vtkFXToonPass::MidpointCode(int first, int last)
     }
     return code.str();
   }
-  // Wide lines: a loop over the same list that stops at the second mark
-  // (a few hundred midpoints would make the straight-line code too long).
+  // Wide lines: a loop over the same list (a few hundred midpoints would
+  // make the straight-line code too long). It runs to the end: past the
+  // second mark fxTake changes nothing, and on llvmpipe a loop whose trip
+  // count differs between neighbouring pixels goes wrong along the tile
+  // quads' diagonals (FullScreenQuad::OneTriangle).
   code << "  const vec3 midpoints[" << midpoints.size() << "] = vec3[](";
   for (size_t i = 0; i < midpoints.size(); ++i)
   {
@@ -337,7 +350,7 @@ std::string vtkFXToonPass::MidpointCode(int first, int last)
          << ", " << midpoints[i].Bit << ".0)";
   }
   code << ");\n"
-       << "  for (int i = 0; i < " << midpoints.size() << " && nearest.count < 2; ++i)\n"
+       << "  for (int i = 0; i < " << midpoints.size() << "; ++i)\n"
        << "  {\n"
        << "    vec2 midpoint = midpoints[i].xy;\n"
        << "    int marks = fxMarkBits(vec4(fxMarkAt(pixel + ivec2(floor(midpoint))))).x;\n"
@@ -352,13 +365,20 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
     static_cast<int>(this->Edges->GetHeight()) };
   int lineWindow[2];
   this->GetLineWindow(size[1], lineWindow);
-  std::string vs = vtkFXToonLineTilesVS;
-  std::string fs = vtkFXToonLinesFS;
-  vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", GatherDefines, false);
-  vtkShaderProgram::Substitute(
-    fs, "//VTK::FXToonLines::Midpoints", MidpointCode(lineWindow[0], lineWindow[1]), false);
-  vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
+  // The source depends on the window alone: made again only when it
+  // changes (with the viewport's height).
+  if (this->LineSource.empty() || this->LineSourceWindow[0] != lineWindow[0] ||
+    this->LineSourceWindow[1] != lineWindow[1])
+  {
+    this->LineSource = vtkFXToonLinesFS;
+    vtkShaderProgram::Substitute(this->LineSource, "//VTK::System::Dec", GatherDefines, false);
+    vtkShaderProgram::Substitute(this->LineSource, "//VTK::FXToonLines::Midpoints",
+      MidpointCode(lineWindow[0], lineWindow[1]), false);
+    this->LineSourceWindow[0] = lineWindow[0];
+    this->LineSourceWindow[1] = lineWindow[1];
+  }
+  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
+    vtkFXToonLineTilesVS, this->LineSource.c_str(), "");
   if (!program)
   {
     vtkErrorMacro("The feature lines' shaders did not build; no lines are drawn.");

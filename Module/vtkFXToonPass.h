@@ -126,9 +126,9 @@ public:
   /**
    * Line width in pixels at LineReferenceHeight rows of output
    * (0.25..16, default 2); in a viewport of H rows lines are
-   * LineWidth x H / LineReferenceHeight pixels wide, at least a quarter
-   * of a pixel, so an image rendered at twice the size shows the same
-   * drawing.
+   * LineWidth x H / LineReferenceHeight pixels wide, within a quarter
+   * of a pixel and 32 pixels, so an image rendered at twice the size
+   * shows the same drawing.
    */
   vtkSetClampMacro(LineWidth, double, 0.25, 16.0);
   vtkGetMacro(LineWidth, double);
@@ -226,7 +226,9 @@ protected:
   vtkSmartPointer<vtkTextureObject> TileMask; // R8, one texel per 8x8 tile: lines reach it
   vtkSmartPointer<vtkOpenGLFramebufferObject> EdgeFrameBuffer;
   vtkFXRenderUtilities::FullScreenQuad EdgeQuad;
-  vtkNew<vtkOpenGLVertexArrayObject> LineTiles; // no attributes: one point per tile
+  vtkNew<vtkOpenGLVertexArrayObject> LineTiles; // no attributes: a 4-vertex strip per tile
+  std::string LineSource;                       // the lines' fragment shader, generated
+  int LineSourceWindow[2] = { 0, 0 };           // for this line window
 
 private:
   vtkFXToonPass(const vtkFXToonPass&) = delete;

@@ -19,14 +19,12 @@ uniform int fxTilesPerRow;
 uniform ivec2 fxEdgeSize;
 uniform bool fxEveryTile;
 
-out vec2 texCoord; // read (never used) by vtkFXToonLinesFS
-
 void main()
 {
   ivec2 tile = ivec2(gl_InstanceID % fxTilesPerRow, gl_InstanceID / fxTilesPerRow);
   ivec2 corner = ivec2(gl_VertexID & 1, gl_VertexID >> 1); // a strip's four corners
   vec2 pixel = vec2(min((tile + corner) * fxTileSize, fxEdgeSize));
   bool drawn = fxEveryTile || texelFetch(fxTileMask, tile, 0).r > 0.0;
-  texCoord = pixel / vec2(fxEdgeSize);
-  gl_Position = drawn ? vec4(2.0 * texCoord - 1.0, 0.0, 1.0) : vec4(-2.0, -2.0, 0.0, 1.0);
+  gl_Position = drawn ? vec4(2.0 * pixel / vec2(fxEdgeSize) - 1.0, 0.0, 1.0)
+                      : vec4(-2.0, -2.0, 0.0, 1.0);
 }

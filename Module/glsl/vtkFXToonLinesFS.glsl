@@ -16,10 +16,9 @@
 // w = 0.8 covers 0.4 of each pixel beside it). Only midpoints within
 // w / 2 + 1/2 can matter: texel offsets from -floor(w/2 + 1) to
 // floor(w/2 + 1/2), in 2x2 blocks (one textureGather each with FX_GATHER):
-// one block for lines under 1 px, four under 3 px.
+// one block for lines under 1 px, four under 3 px, nine under 5 px; wider
+// lines read the marks texel by texel.
 // The result is blended over the image: colour and coverage as alpha.
-
-in vec2 texCoord;
 
 uniform sampler2D fxEdges;  // (r + 2 g) / 3, see vtkFXToonEdgesFS; 0 outside
 uniform ivec2 fxEdgeSize;
@@ -32,11 +31,12 @@ uniform vec3 fxLineColor;
 // Each pixel needs the two marked side midpoints nearest its centre. The
 // midpoints a pixel can see sit at fixed offsets from it, so
 // vtkFXToonPass lists them once, sorted by distance from the centre (ties
-// in a fixed order), and generates straight-line code that takes the first
-// two marked ones in that order: no distances, compares or loops per
-// pixel, which a software rasteriser would run for every pixel whatever
-// the branches (every midpoint used to be measured and insertion-sorted:
-// three times the cost at 1280x720 on llvmpipe).
+// in a fixed order), and generates code that takes the first two marked
+// ones in that order: no distances or compares per midpoint, which a
+// software rasteriser would run for every pixel whatever the branches
+// (every midpoint used to be measured and insertion-sorted: three times
+// the cost at 1280x720 on llvmpipe). Straight-line code for lines under
+// 5 px; a loop over a constant list for wider ones.
 struct fxNearest
 {
   vec2 first;
@@ -102,10 +102,6 @@ float fxContourDistance(fxNearest n)
 
 void main()
 {
-  if (texCoord.x < -1.0)
-  {
-    discard; // never: see vtkFXToonEdgesFS
-  }
   ivec2 pixel = ivec2(gl_FragCoord.xy) - fxOrigin;
   fxNearest nearest = fxNearest(vec2(0.0), vec2(0.0), 0);
   // Generated (vtkFXToonPass::MidpointCode): the marks, and fxTake of

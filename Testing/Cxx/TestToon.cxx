@@ -373,6 +373,13 @@ std::vector<unsigned char> RenderLines(
 
 int CheckTileCulling(vtkRenderWindow* window)
 {
+  window->MakeCurrent(); // CanFlagLineTiles asks the current context
+  if (!vtkFXToonPass::CanFlagLineTiles())
+  {
+    std::cout << "no image stores here: lines are always drawn over the whole image, "
+                 "tile culling is not compared" << std::endl;
+    return EXIT_SUCCESS;
+  }
   // 0.8 px: one block of marks; 2 and 4 px: 4 and 9 blocks in straight-line
   // code; 7 px: the loop over midpoints.
   for (double width : { 0.8, 2.0, 4.0, 7.0 })
@@ -380,11 +387,11 @@ int CheckTileCulling(vtkRenderWindow* window)
     bool tilesCulled = false;
     const auto culled = RenderLines(window, width, true, true, &tilesCulled);
     // Otherwise both images would come from the same whole-image draw.
-    FX_CHECK(tilesCulled == vtkFXToonPass::CanFlagLineTiles(),
-      "tile culling " << (tilesCulled ? "ran" : "did not run") << " at " << width << " px");
+    FX_CHECK(tilesCulled, "tile culling did not run at " << width << " px");
     const auto whole = RenderLines(window, width, false, true);
     const auto none = RenderLines(window, width, true, false);
-    FX_CHECK(!culled.empty() && culled.size() == whole.size(), "the bunny did not render");
+    FX_CHECK(!culled.empty() && culled.size() == whole.size() && none.size() == whole.size(),
+      "the bunny did not render");
     size_t differing = 0, lined = 0;
     for (size_t i = 0; i < culled.size(); ++i)
     {
