@@ -27,6 +27,7 @@
 #include "vtkRendererCollection.h"
 #include "vtkSphereSource.h"
 
+#include <functional>
 #include <map>
 
 namespace
@@ -316,9 +317,9 @@ int CheckFandiskCreases(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
-// The bunny scene with bands and lines, moved as TestSSAOScale moves it.
-std::vector<unsigned char> RenderMoved(vtkRenderWindow* window, double scale, double offset,
-  bool parallel, double nearRatio)
+// The bunny scene through `toon`, arranged by `arrange` (if any) first.
+std::vector<unsigned char> RenderBunny(vtkRenderWindow* window, vtkFXToonPass* toon,
+  const std::function<void(vtkRenderer*)>& arrange = nullptr)
 {
   window->GetRenderers()->RemoveAllItems();
   vtkNew<vtkRenderer> renderer;
@@ -330,13 +331,25 @@ std::vector<unsigned char> RenderMoved(vtkRenderWindow* window, double scale, do
     std::cerr << error << std::endl;
     return {};
   }
-  vtkFXTest::MoveScene(renderer, scale, offset, parallel, nearRatio);
+  if (arrange)
+  {
+    arrange(renderer);
+  }
   vtkNew<vtkFXPipelinePass> pipeline;
-  vtkNew<vtkFXToonPass> toon;
   pipeline->AddEffect("toon", toon);
   renderer->SetPass(pipeline);
   window->Render();
   return vtkFXScenes::Capture(window);
+}
+
+// The bunny scene with bands and lines, moved as TestSSAOScale moves it.
+std::vector<unsigned char> RenderMoved(vtkRenderWindow* window, double scale, double offset,
+  bool parallel, double nearRatio)
+{
+  vtkNew<vtkFXToonPass> toon;
+  return RenderBunny(window, toon, [&](vtkRenderer* renderer) {
+    vtkFXTest::MoveScene(renderer, scale, offset, parallel, nearRatio);
+  });
 }
 
 // The bunny with lines of `width` pixels, drawn over flagged tiles only or
@@ -345,30 +358,17 @@ std::vector<unsigned char> RenderLines(
   vtkRenderWindow* window, double width, bool cull, bool lines, bool* culled = nullptr)
 {
   window->SetSize(403, 301);
-  window->GetRenderers()->RemoveAllItems();
-  vtkNew<vtkRenderer> renderer;
-  window->AddRenderer(renderer);
-  std::string error;
-  if (!vtkFXScenes::Populate(renderer,
-        vtkFXScenes::DataDirectory() + "/stanford-bunny.obj", vtkFXScenes::Options(), error))
-  {
-    std::cerr << error << std::endl;
-    return {};
-  }
-  vtkNew<vtkFXPipelinePass> pipeline;
   vtkNew<vtkFXToonPass> toon;
   toon->SetLineReferenceHeight(301);
   toon->SetLineWidth(width);
   toon->SetCullLineTiles(cull);
   toon->SetFeatureLines(lines);
-  pipeline->AddEffect("toon", toon);
-  renderer->SetPass(pipeline);
-  window->Render();
+  auto image = RenderBunny(window, toon);
   if (culled)
   {
     *culled = toon->GetLineTilesCulled();
   }
-  return vtkFXScenes::Capture(window);
+  return image;
 }
 
 int CheckTileCulling(vtkRenderWindow* window)
