@@ -72,15 +72,8 @@ vec4 fxMarkBlock(ivec2 t)
 #if FX_GATHER
   return textureGather(fxEdges, vec2(t + 1) / vec2(fxEdgeSize), 0);
 #else
-  vec4 block = vec4(texelFetch(fxEdges, t + ivec2(0, 1), 0).r,
-    texelFetch(fxEdges, t + ivec2(1, 1), 0).r, texelFetch(fxEdges, t + ivec2(1, 0), 0).r,
-    texelFetch(fxEdges, t, 0).r);
-  // texelFetch outside the texture is undefined: no marks there.
-  bvec4 outside = bvec4(t.x < 0 || t.y + 1 < 0 || t.x >= fxEdgeSize.x || t.y + 1 >= fxEdgeSize.y,
-    t.x + 1 < 0 || t.y + 1 < 0 || t.x + 1 >= fxEdgeSize.x || t.y + 1 >= fxEdgeSize.y,
-    t.x + 1 < 0 || t.y < 0 || t.x + 1 >= fxEdgeSize.x || t.y >= fxEdgeSize.y,
-    t.x < 0 || t.y < 0 || t.x >= fxEdgeSize.x || t.y >= fxEdgeSize.y);
-  return mix(block, vec4(0.0), outside);
+  return vec4(fxMarkAt(t + ivec2(0, 1)), fxMarkAt(t + ivec2(1, 1)), fxMarkAt(t + ivec2(1, 0)),
+    fxMarkAt(t));
 #endif
 }
 
