@@ -13,7 +13,7 @@
 // Order independence: the segments are inserted in order (of entry depth,
 // then optical depth, then exit depth; equal ones together), so the curve
 // does not depend on the order fragments arrived in; past the first
-// FX_MAX_LIST (fewer for lists over 450 segments: the rounds stay within
+// FX_MAX_LIST (fewer for lists over 1764 segments: the rounds stay within
 // llvmpipe's loop budget, see below), the rest are summed into one last
 // segment from the nearest entry to the farthest exit among them (exact
 // past it). Optical depth is summed, capped at 1e4 (transmittance 0
@@ -171,6 +171,51 @@ bool fxBefore(float a, float b, float c, float d, float e, float f)
   return a < d || (a == d && (b < e || (b == e && c < f)));
 }
 
+// The four least segments of a walk so far, in order (unfilled: 3e38),
+// and how many identical copies of each it met: component k of each.
+vec4 fxPickEntry;
+vec4 fxPickTau;
+vec4 fxPickExit;
+vec4 fxPickSame; // whole numbers, exact in float
+
+// Componentwise fxBefore: (e, t, x) before pick k.
+bvec4 fxBeforePicks(float e, float t, float x)
+{
+  vec4 entryBefore = vec4(lessThan(vec4(e), fxPickEntry));
+  vec4 entryEqual = vec4(equal(vec4(e), fxPickEntry));
+  vec4 tauBefore = vec4(lessThan(vec4(t), fxPickTau));
+  vec4 tauEqual = vec4(equal(vec4(t), fxPickTau));
+  vec4 exitBefore = vec4(lessThan(vec4(x), fxPickExit));
+  return greaterThan(entryBefore + entryEqual * (tauBefore + tauEqual * exitBefore), vec4(0.0));
+}
+
+// Segment (e, t, x) into the picks: counted if it is one of them, else
+// placed in order when it is before the last, which then drops out. In
+// vector operations, without loops: llvmpipe counts every loop iteration
+// of the walk that calls this against one budget (see main).
+void fxPick(float e, float t, float x)
+{
+  bvec4 same = equal(vec4(equal(vec4(e), fxPickEntry)) * vec4(equal(vec4(t), fxPickTau)) *
+      vec4(equal(vec4(x), fxPickExit)), vec4(1.0));
+  if (any(same))
+  {
+    fxPickSame += vec4(same);
+    return;
+  }
+  // Each pick after the segment moves down one, unless the one above is
+  // after it too; the first pick after the segment takes the segment.
+  bvec4 after = fxBeforePicks(e, t, x);
+  bvec4 aboveAfter = bvec4(false, after.xyz);
+  vec4 newEntry = mix(vec4(e), fxPickEntry.xxyz, aboveAfter);
+  vec4 newTau = mix(vec4(t), fxPickTau.xxyz, aboveAfter);
+  vec4 newExit = mix(vec4(x), fxPickExit.xxyz, aboveAfter);
+  vec4 newSame = mix(vec4(1.0), fxPickSame.xxyz, aboveAfter);
+  fxPickEntry = mix(fxPickEntry, newEntry, after);
+  fxPickTau = mix(fxPickTau, newTau, after);
+  fxPickExit = mix(fxPickExit, newExit, after);
+  fxPickSame = mix(fxPickSame, newSame, after);
+}
+
 void main()
 {
   if (texCoord.x < -1.0)
@@ -235,17 +280,18 @@ void main()
   //VTK::FXAVSMResolve::SliceOutput
   return;
 #endif
-  // The texel's segments in order (selection: each round walks the list
-  // for the least segment after the last one taken, and how many share
-  // it, which go in as one); past `rounds` rounds, one last walk sums the
-  // rest into one segment. No local arrays: count^2 reads of the texel's
-  // own list.
+  // The texel's segments in order, by selection: each round walks the
+  // list once and keeps the four least segments after the last one
+  // taken (fxPick; identical ones count as one, with their number), which
+  // then go in in order; past `rounds` rounds, one last walk sums the rest
+  // into one segment. No list in local memory: about count^2 / 4 reads of
+  // the texel's own list.
   uint head = node;
   float lastEntry = -3e38;
   float lastTau = -3e38;
   float lastExit = -3e38;
   int taken = 0;
-  int rounds = min(FX_MAX_LIST, 30000 / max(count, 1) - 1);
+  int rounds = min((FX_MAX_LIST + 3) / 4, 30000 / max(count, 1) - 1);
   for (int round = 0; round <= FX_MAX_LIST; ++round)
   {
     if (taken >= count)
@@ -253,10 +299,10 @@ void main()
       break;
     }
     bool rest = round >= rounds; // the tail: sums instead of the least
-    float entry = 3e38;
-    float tau = 3e38;
-    float exitDepth = 3e38;
-    int same = 0;
+    fxPickEntry = vec4(3e38);
+    fxPickTau = vec4(3e38);
+    fxPickExit = vec4(3e38);
+    fxPickSame = vec4(0.0);
     float restTau = 0.0;
     float restNear = 3e38;
     float restFar = -3e38;
@@ -280,17 +326,9 @@ void main()
         restNear = min(restNear, segment.depth);
         restFar = max(restFar, segment.exitDepth);
       }
-      else if (fxBefore(segment.depth, segment.opticalDepth, segment.exitDepth, entry, tau, exitDepth))
+      else
       {
-        entry = segment.depth;
-        tau = segment.opticalDepth;
-        exitDepth = segment.exitDepth;
-        same = 1;
-      }
-      else if (segment.depth == entry && segment.opticalDepth == tau &&
-        segment.exitDepth == exitDepth)
-      {
-        ++same;
+        fxPick(segment.depth, segment.opticalDepth, segment.exitDepth);
       }
     }
     if (rest)
@@ -301,15 +339,21 @@ void main()
       }
       break;
     }
-    if (same == 0)
+    if (fxPickSame[0] == 0.0)
     {
       break; // the list was shorter than its count (never)
     }
-    fxInsertSegment(entry, exitDepth, min(tau * float(same), 1e4));
-    taken += same;
-    lastEntry = entry;
-    lastTau = tau;
-    lastExit = exitDepth;
+    for (int k = 0; k < 4; ++k)
+    {
+      if (fxPickSame[k] > 0.0)
+      {
+        fxInsertSegment(fxPickEntry[k], fxPickExit[k], min(fxPickTau[k] * fxPickSame[k], 1e4));
+        taken += int(fxPickSame[k]);
+        lastEntry = fxPickEntry[k];
+        lastTau = fxPickTau[k];
+        lastExit = fxPickExit[k];
+      }
+    }
   }
   float total = fxCurveAt(3e38);
   for (int i = 0; i < FX_NODES; ++i)
