@@ -40,51 +40,92 @@ float fxTau[FX_NODES + 2];
 float fxTr[FX_NODES + 2];
 int fxCount = 0;
 
-// The curve's optical depth at z: 0 before the first node, the last
-// node's past the last, linear in between.
-float fxCurveAt(float z)
+// Where depth z falls on the curve: the last node at or before it (low)
+// and the one after (high), read by fxTrack during an ascending walk of
+// the nodes, so that fxValueAt divides once per depth, not once per node.
+struct fxBracket
 {
-  float value = 0.0;
-  for (int i = 0; i < FX_NODES + 2; ++i)
-  {
-    int next = min(i + 1, FX_NODES + 1);
-    if (i < fxCount && fxZ[i] <= z)
-    {
-      value = (i + 1 < fxCount && fxZ[next] > z)
-        ? mix(fxTau[i], fxTau[next], (z - fxZ[i]) / (fxZ[next] - fxZ[i]))
-        : fxTau[i];
-    }
-  }
-  return value;
+  float lowZ;
+  float lowTau;
+  float highZ;
+  float highTau;
+  bool between; // a node after low exists
+};
+
+fxBracket fxNoBracket()
+{
+  return fxBracket(0.0, 0.0, 0.0, 0.0, false);
 }
 
-// A node at depth z, after the nodes at or before z: from the end down,
-// nodes past z move up one, and z takes the place above the first that
-// does not.
-void fxAddNode(float z, float tau)
+void fxTrack(inout fxBracket b, float z, int i, int next)
 {
-  bool placed = false;
-  for (int i = FX_NODES + 1; i >= 0; --i)
+  if (fxZ[i] <= z)
   {
-    int below = max(i - 1, 0);
-    if (i <= fxCount && !placed)
+    b = fxBracket(fxZ[i], fxTau[i], fxZ[next], fxTau[next], i + 1 < fxCount && fxZ[next] > z);
+  }
+}
+
+// The curve's optical depth at z: 0 before the first node, the last
+// node's past the last, linear in between.
+float fxValueAt(fxBracket b, float z)
+{
+  return b.between ? mix(b.lowTau, b.highTau, (z - b.lowZ) / (b.highZ - b.lowZ)) : b.lowTau;
+}
+
+float fxCurveAt(float z)
+{
+  fxBracket b = fxNoBracket();
+  for (int i = 0; i < FX_NODES + 2; ++i)
+  {
+    if (i < fxCount)
     {
-      if (i > 0 && fxZ[below] > z)
-      {
-        fxZ[i] = fxZ[below];
-        fxTau[i] = fxTau[below];
-        fxTr[i] = fxTr[below];
-      }
-      else
-      {
-        fxZ[i] = z;
-        fxTau[i] = tau;
-        fxTr[i] = exp(-tau);
-        placed = true;
-      }
+      fxTrack(b, z, i, min(i + 1, FX_NODES + 1));
     }
   }
-  ++fxCount;
+  return fxValueAt(b, z);
+}
+
+// A segment's two nodes, entry <= exit, each after the nodes at or before
+// its depth, in one pass from the end down: nodes past the exit move up
+// two, nodes between entry and exit one.
+void fxAddNodes(float entry, float entryTau, float exitDepth, float exitTau)
+{
+  float entryTr = exp(-entryTau);
+  float exitTr = exp(-exitTau);
+  bool exitPlaced = false;
+  bool entryPlaced = false;
+  for (int i = FX_NODES + 1; i >= 0; --i)
+  {
+    int from = max(i - 2, 0);
+    bool moves = !entryPlaced && i <= fxCount + 1;
+    if (moves && !exitPlaced && !(i >= 2 && fxZ[from] > exitDepth))
+    {
+      moves = false;
+      fxZ[i] = exitDepth;
+      fxTau[i] = exitTau;
+      fxTr[i] = exitTr;
+      exitPlaced = true;
+    }
+    else if (moves && exitPlaced)
+    {
+      from = max(i - 1, 0);
+      if (!(i >= 1 && fxZ[from] > entry))
+      {
+        moves = false;
+        fxZ[i] = entry;
+        fxTau[i] = entryTau;
+        fxTr[i] = entryTr;
+        entryPlaced = true;
+      }
+    }
+    if (moves)
+    {
+      fxZ[i] = fxZ[from];
+      fxTau[i] = fxTau[from];
+      fxTr[i] = fxTr[from];
+    }
+  }
+  fxCount += 2;
 }
 
 // The interior node whose removal changes the area under the transmittance
@@ -125,26 +166,15 @@ void fxRemoveNode()
 // nodes i and i + 1 are read before node i changes.
 void fxInsertSegment(float entry, float exitDepth, float tau)
 {
-  float atEntry = 0.0;
-  float atExit = 0.0;
+  fxBracket atEntry = fxNoBracket();
+  fxBracket atExit = fxNoBracket();
   for (int i = 0; i < FX_NODES + 2; ++i)
   {
-    int next = min(i + 1, FX_NODES + 1);
     if (i < fxCount)
     {
-      bool last = i + 1 >= fxCount;
-      if (fxZ[i] <= entry)
-      {
-        atEntry = (!last && fxZ[next] > entry)
-          ? mix(fxTau[i], fxTau[next], (entry - fxZ[i]) / (fxZ[next] - fxZ[i]))
-          : fxTau[i];
-      }
-      if (fxZ[i] <= exitDepth)
-      {
-        atExit = (!last && fxZ[next] > exitDepth)
-          ? mix(fxTau[i], fxTau[next], (exitDepth - fxZ[i]) / (fxZ[next] - fxZ[i]))
-          : fxTau[i];
-      }
+      int next = min(i + 1, FX_NODES + 1);
+      fxTrack(atEntry, entry, i, next);
+      fxTrack(atExit, exitDepth, i, next);
       float share = fxSegmentShare(entry, exitDepth, tau, fxZ[i]);
       if (share > 0.0)
       {
@@ -153,8 +183,8 @@ void fxInsertSegment(float entry, float exitDepth, float tau)
       }
     }
   }
-  fxAddNode(entry, atEntry);
-  fxAddNode(exitDepth, min(atExit + tau, 1e4));
+  fxAddNodes(entry, fxValueAt(atEntry, entry), exitDepth,
+    min(fxValueAt(atExit, exitDepth) + tau, 1e4));
   for (int k = 0; k < 2; ++k)
   {
     if (fxCount > FX_NODES)
