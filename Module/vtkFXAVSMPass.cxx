@@ -938,9 +938,9 @@ std::string vtkFXAVSMPass::CurveCode() const
     }
     if (k == 0)
     {
-      // In front of the texel's first node (or an empty texel, most of the
-      // map): unshadowed, after one read instead of nodes / 2.
-      fetch << "  if (!(depth >= curve0.x))\n  {\n    return 0.0;\n  }\n";
+      // At or in front of the texel's first node (or an empty texel, most
+      // of the map): unshadowed, after one read instead of nodes / 2.
+      fetch << "  if (!(depth > curve0.x))\n  {\n    return 0.0;\n  }\n";
     }
   }
   for (int i = 0; i < nodes; ++i)

@@ -74,20 +74,22 @@ float fxOpticalDepth(ivec2 texel, float depth, vec2 sliceRange)
   float z[FX_NODES];
   float tau[FX_NODES];
   //VTK::FXAVSMLookup::Fetch
-  // The last node at or before the receiver decides; its segment to the
-  // next node is interpolated (unused nodes lie at 3e38: their segment
-  // gives the last node's value). Constant indices only.
+  // The last node before the receiver decides; its segment to the next
+  // node is interpolated (unused nodes lie at 3e38: their segment gives
+  // the last node's value). Strictly before: a surface (a step, two nodes
+  // at one depth) exactly at the receiver's depth does not shadow it, as
+  // in the exact mode (fxSegmentShare). Constant indices only.
   float opticalDepth = 0.0;
   for (int j = 0; j + 1 < FX_NODES; ++j)
   {
-    if (z[j] <= depth)
+    if (z[j] < depth)
     {
       float span = z[j + 1] - z[j];
       float f = span > 0.0 ? clamp((depth - z[j]) / span, 0.0, 1.0) : 1.0;
       opticalDepth = mix(tau[j], tau[j + 1], f);
     }
   }
-  return z[FX_NODES - 1] <= depth ? tau[FX_NODES - 1] : opticalDepth;
+  return z[FX_NODES - 1] < depth ? tau[FX_NODES - 1] : opticalDepth;
 #endif
 }
 

@@ -714,6 +714,98 @@ int TestAVSM(int, char*[])
                Visibility(window, MakeAVSM(nodes ? nodes : 8, nodes == 0, true),
                  { Quad(-10, 0, 0, 0.3) }, true),
                1.0, 1e-3) == EXIT_SUCCESS, "");
+    // Without the bias the receiver lies at the slab's nodes up to
+    // rounding (the receiver's light depth is computed, the slab's
+    // rasterised): each pixel is either lit or behind the slab, finite.
+    auto unbiased = MakeAVSM(nodes ? nodes : 8, nodes == 0, true);
+    unbiased->SetBias(0.0);
+    const auto v = Visibility(window, unbiased, { Quad(-10, 0, 0, 0.3) }, true);
+    FX_CHECK(v.size() == static_cast<size_t>(Width) * Height, name << ", no bias: no visibility");
+    // (between the two, only along the slab's edge, where the bilinear
+    // look-up blends)
+    size_t shadowed = 0, other = 0;
+    for (size_t i = 0; i < v.size(); ++i)
+    {
+      const float t = v[i];
+      const int x = static_cast<int>(i % Width);
+      const bool blend = x > Width / 3 && x < 2 * Width / 3;
+      shadowed += std::fabs(t - 0.7f) < 1e-3f ? 1 : 0;
+      const bool defined = std::isfinite(t) &&
+        (blend ? t > 0.699f && t < 1.001f
+               : std::fabs(t - 0.7f) < 1e-3f || std::fabs(t - 1.0f) < 1e-3f);
+      other += defined ? 0 : 1;
+    }
+    std::cout << name << ", no bias, a slab of 0.3 on the ground: " << shadowed
+              << " pixels behind it, " << other << " neither lit nor behind it" << std::endl;
+    FX_CHECK(other == 0, name << ", no bias: " << other << " pixels neither 1 nor 0.7");
+  }
+
+  // Eight surfaces (16 nodes, what AVSM-16 holds exactly), four over the
+  // ground and four under it, so that the receiver lies inside the curve:
+  // AVSM-16 equals the exact lists and both give the product of the four
+  // above.
+  {
+    std::vector<vtkSmartPointer<vtkActor>> eight;
+    double product = 1.0;
+    for (int i = 0; i < 8; ++i)
+    {
+      const double opacity = 0.05 + 0.1 * i;
+      const double height = -1.4 + 0.4 * i;
+      eight.push_back(Quad(-10, 0, height, opacity));
+      product *= height > 0.0 ? 1.0 - opacity : 1.0;
+    }
+    const auto exactEight = Visibility(window, MakeAVSM(8, true, true), eight, true);
+    const auto avsmEight = Visibility(window, MakeAVSM(16, false, true), eight, true);
+    double largest = 0.0;
+    for (size_t i = 0; i < exactEight.size() && i < avsmEight.size(); ++i)
+    {
+      largest = std::max(largest, static_cast<double>(std::fabs(exactEight[i] - avsmEight[i])));
+    }
+    // (AVSM-8 cannot hold them: it must differ, or the scene tests nothing)
+    const auto avsm8Eight = Visibility(window, MakeAVSM(8, false, true), eight, true);
+    double largest8 = 0.0;
+    for (size_t i = 0; i < exactEight.size() && i < avsm8Eight.size(); ++i)
+    {
+      largest8 = std::max(largest8, static_cast<double>(std::fabs(exactEight[i] - avsm8Eight[i])));
+    }
+    std::cout << "eight slabs: AVSM-16 against exact, largest difference " << largest
+              << " (AVSM-8: " << largest8 << ")" << std::endl;
+    FX_CHECK(!exactEight.empty() && exactEight.size() == avsmEight.size() && largest < 1e-5,
+      "eight slabs: AVSM-16 differs from exact by " << largest);
+    FX_CHECK(largest8 > 1e-3, "eight slabs fit in AVSM-8 too (" << largest8 << ")");
+    FX_CHECK(CheckHalves("eight slabs, AVSM-16", avsmEight, product, 1e-3) == EXIT_SUCCESS, "");
+  }
+
+  // No light that can cast (only a headlight, or a casting light switched
+  // off or with ShadowAttenuation 0): the pass is left out, with its
+  // buffers, although a prop is translucent.
+  for (int variant = 0; variant < 3; ++variant)
+  {
+    auto idle = MakeAVSM(8, false, true);
+    vtkRenderer* renderer = GroundScene(window, true);
+    vtkLight* light = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
+    if (variant == 0)
+    {
+      light->SetLightTypeToHeadlight();
+    }
+    else if (variant == 1)
+    {
+      light->SwitchOff();
+    }
+    else
+    {
+      light->SetShadowAttenuation(0.0);
+    }
+    renderer->AddActor(Quad(-10, 0, 1, 0.3));
+    vtkNew<vtkFXPipelinePass> pipeline;
+    pipeline->AddEffect("avsm", idle);
+    renderer->SetPass(pipeline);
+    window->Render();
+    const char* names[] = { "a headlight", "a light switched off", "ShadowAttenuation 0" };
+    std::cout << "translucent slab, " << names[variant] << ": " << idle->GetCapacity()
+              << " nodes allocated" << std::endl;
+    FX_CHECK(idle->GetCapacity() == 0 && !idle->GetOutputTexture("visibility"),
+      "with " << names[variant] << " the AVSM holds " << idle->GetCapacity() << " nodes");
   }
 
   FX_CHECK(CheckTranslucentReceiver(window) == EXIT_SUCCESS, "translucent receiver");
