@@ -67,6 +67,17 @@ bool Contains(const std::string& s, const char* what)
   return s.find(what) != std::string::npos;
 }
 
+// Gives the buffer bound to `target` a store of `bytes` bytes; false when
+// the driver could not (GL_OUT_OF_MEMORY leaves it without one). Read from
+// the buffer's size, so that no other pass's pending GL error is taken.
+bool AllocateBuffer(GLenum target, vtkIdType bytes, GLenum usage)
+{
+  glBufferData(target, static_cast<GLsizeiptr>(bytes), nullptr, usage);
+  GLint64 size = 0;
+  glGetBufferParameteri64v(target, GL_BUFFER_SIZE, &size);
+  return size == static_cast<GLint64>(bytes);
+}
+
 // Lights that cast: not headlights (their shadows hide behind what casts
 // them) and not those whose ShadowAttenuation (VTK's per-light shadow
 // strength) is 0.
@@ -542,26 +553,35 @@ bool vtkFXAVSMPass::EnsureBuffers()
     this->BufferTexels = 0;
     this->Capacity = 0;
   }
+  bool allocated = true;
   if (this->BufferTexels != texels)
   {
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[HeadsBuffer]);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, texels * 4, nullptr, GL_DYNAMIC_DRAW);
+    allocated = AllocateBuffer(GL_SHADER_STORAGE_BUFFER, texels * 4, GL_DYNAMIC_DRAW);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CountsBuffer]);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, texels * 4, nullptr, GL_DYNAMIC_DRAW);
+    allocated = AllocateBuffer(GL_SHADER_STORAGE_BUFFER, texels * 4, GL_DYNAMIC_DRAW) && allocated;
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CounterBuffer]);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, 8, nullptr, GL_DYNAMIC_READ);
-    this->BufferTexels = texels;
+    allocated = AllocateBuffer(GL_SHADER_STORAGE_BUFFER, 8, GL_DYNAMIC_READ) && allocated;
+    this->BufferTexels = allocated ? texels : 0; // retried next frame
   }
   const vtkIdType wanted =
     std::max(this->Capacity, std::min(MaximumCapacity, texels * this->InitialNodesPerTexel));
-  if (wanted != this->Capacity)
+  if (allocated && wanted != this->Capacity)
   {
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[NodesBuffer]);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, wanted * NodeBytes, nullptr, GL_DYNAMIC_DRAW);
-    this->Capacity = wanted;
+    allocated = AllocateBuffer(GL_SHADER_STORAGE_BUFFER, wanted * NodeBytes, GL_DYNAMIC_DRAW);
+    this->Capacity = allocated ? wanted : 0;
   }
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  return true;
+  if (!allocated && !this->ReportedAllocationFailure)
+  {
+    vtkErrorMacro("AVSM: OpenGL could not allocate the fragment lists for "
+      << texels << " texels and " << wanted << " fragments (" << (wanted * NodeBytes) / (1 << 20)
+      << " MiB); no shadows of translucent props until it can (lower ShadowMapSize or "
+         "InitialNodesPerTexel).");
+    this->ReportedAllocationFailure = true;
+  }
+  return allocated;
 }
 
 void vtkFXAVSMPass::BindBuffers(vtkShaderProgram* program)
@@ -829,14 +849,30 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
     GLuint bigger = 0;
     glGenBuffers(1, &bigger);
     glBindBuffer(GL_COPY_WRITE_BUFFER, bigger);
-    glBufferData(GL_COPY_WRITE_BUFFER, grown * NodeBytes, nullptr, GL_DYNAMIC_DRAW);
-    glCopyBufferSubData(GL_SHADER_STORAGE_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, this->Capacity * NodeBytes);
+    this->StoredFragments = this->Capacity; // what this frame's lists hold
+    if (AllocateBuffer(GL_COPY_WRITE_BUFFER, grown * NodeBytes, GL_DYNAMIC_DRAW))
+    {
+      glCopyBufferSubData(
+        GL_SHADER_STORAGE_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, this->Capacity * NodeBytes);
+      glDeleteBuffers(1, &this->Buffers[NodesBuffer]);
+      this->Buffers[NodesBuffer] = bigger;
+      this->Capacity = grown;
+    }
+    else
+    {
+      // The lists keep their size: later frames drop fragments too (their
+      // shadows lighter), never write past the buffer.
+      glDeleteBuffers(1, &bigger);
+      if (!this->ReportedAllocationFailure)
+      {
+        vtkErrorMacro("AVSM: OpenGL could not grow the fragment lists to "
+          << grown << " fragments (" << (grown * NodeBytes) / (1 << 20)
+          << " MiB); fragments beyond " << this->Capacity << " stay left out.");
+        this->ReportedAllocationFailure = true;
+      }
+    }
     glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-    glDeleteBuffers(1, &this->Buffers[NodesBuffer]);
-    this->Buffers[NodesBuffer] = bigger;
-    this->StoredFragments = this->Capacity; // what this frame's lists hold
-    this->Capacity = grown;
   }
 }
 
@@ -1142,7 +1178,11 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
     this->AbandonFrame(window);
     return;
   }
-  this->EnsureBuffers();
+  if (!this->EnsureBuffers())
+  {
+    this->AbandonFrame(window);
+    return;
+  }
   this->StoredFragments = this->Capacity;
   // With Profile on, each phase is finished before the clock reads it.
   vtkNew<vtkTimerLog> clock;

@@ -348,6 +348,7 @@ protected:
   vtkIdType Capacity = 0;
   vtkIdType StoredFragments = 0; // nodes this frame's lists hold
   bool WarnedOverflow = false;
+  bool ReportedAllocationFailure = false;
   bool Profile = false;
   bool TranslucentReceivers = true;
   bool Receiving = false; // between Begin- and EndForwardShading

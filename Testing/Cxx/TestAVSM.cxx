@@ -11,8 +11,10 @@
 // - opacity exactly 0 casts nothing and exactly 1 blocks all;
 // - 1000 stacked layers of opacity 0.9999: finite, >= 0 (and 0), and the
 //   resolved curves' optical depth never decreases along the ray;
-// - a list buffer far too small: the capture counts what it dropped, the
-//   buffer grows, and the next frame is right;
+// - a list buffer far too small: the capture counts what it dropped, warns
+//   once, the frame stays finite and in range, the buffer grows, and the
+//   next frame is right; a second overflow grows it again without a second
+//   warning;
 // - the same under a perspective camera;
 // - a spot light (perspective map) gives the same shadow, and from
 //   between two slabs only the slab below it casts;
@@ -46,6 +48,7 @@
 #include "vtkFXTestUtilities.h"
 
 #include "vtkAppendPolyData.h"
+#include "vtkCallbackCommand.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkPlaneSource.h"
@@ -646,14 +649,27 @@ int TestAVSM(int, char*[])
     auto avsm = MakeAVSM(8, false, true);
     avsm->SetInitialNodesPerTexel(1);
     avsm->SetShadowMapSize(64);
+    int warnings = 0;
+    vtkNew<vtkCallbackCommand> countWarnings;
+    countWarnings->SetClientData(&warnings);
+    countWarnings->SetCallback(
+      [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
+    avsm->AddObserver(vtkCommand::WarningEvent, countWarnings);
     const std::vector<vtkSmartPointer<vtkActor>> slabs = { Quad(-10, 10, 1, 0.3),
       Quad(-10, 10, 2, 0.5), Quad(-10, 0, 3, 0.2) };
-    Visibility(window, avsm, slabs, true, 1);
+    const auto dropped = Visibility(window, avsm, slabs, true, 1);
     const vtkIdType firstCapacity = 64 * 64;
     std::cout << "overflow: " << avsm->GetCapturedFragments() << " fragments, capacity now "
-              << avsm->GetCapacity() << std::endl;
+              << avsm->GetCapacity() << ", " << warnings << " warning(s)" << std::endl;
     FX_CHECK(avsm->GetCapturedFragments() > firstCapacity && avsm->GetCapacity() > firstCapacity,
       "no overflow detected");
+    FX_CHECK(warnings == 1, warnings << " warnings for the overflow, not 1");
+    // The frame that dropped fragments is lighter, not broken.
+    FX_CHECK(dropped.size() == static_cast<size_t>(Width) * Height, "no visibility after overflow");
+    for (float t : dropped)
+    {
+      FX_CHECK(std::isfinite(t) && t >= 0.0f && t <= 1.0f, "after overflow, visibility " << t);
+    }
     const auto v = Visibility(window, avsm, slabs, true, 1);
     FX_CHECK(avsm->GetCapturedFragments() <= avsm->GetCapacity(), "still overflowing");
     // Left: all three slabs; right: the two wide ones.
@@ -664,6 +680,19 @@ int TestAVSM(int, char*[])
       worst = std::max(worst, std::fabs(v[static_cast<size_t>(y) * Width + Width - 10] - 0.35));
     }
     FX_CHECK(worst < 1e-3, "after growing, off by " << worst);
+    // More casters overflow the grown buffer again: it grows again, and the
+    // warning is not repeated.
+    const vtkIdType grown = avsm->GetCapacity();
+    auto more = slabs;
+    for (int i = 0; i < 6; ++i)
+    {
+      more.push_back(Quad(-10, 10, 4 + 0.5 * i, 0.1));
+    }
+    Visibility(window, avsm, more, true, 2);
+    std::cout << "second overflow: capacity " << grown << " -> " << avsm->GetCapacity() << ", "
+              << warnings << " warning(s) in all" << std::endl;
+    FX_CHECK(avsm->GetCapacity() > grown && warnings == 1,
+      "second overflow: capacity " << avsm->GetCapacity() << ", " << warnings << " warnings");
   }
 
   // Opacity exactly 0 casts nothing, exactly 1 blocks all: RGBA colours
