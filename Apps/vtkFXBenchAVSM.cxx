@@ -20,6 +20,7 @@
 // fragments, exact against every curve, as the AVSM demo's debug view).
 #include "vtkFXAVSMPass.h"
 #include "vtkFXBench.h"
+#include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
 
@@ -63,8 +64,10 @@ struct Method
   int Representation; // vtkFXAVSMPass::Representation
   vtkSmartPointer<vtkRenderWindow> Window;
   vtkSmartPointer<vtkFXAVSMPass> AVSM;
+  vtkSmartPointer<vtkFXPipelinePass> Pipeline;
   std::vector<double> FrameMs;
   std::vector<float> Visibility;
+  std::vector<float> LinearDepth; // the G-buffer's: 0 where no receiver is
   std::vector<unsigned char> Image;
 };
 
@@ -267,6 +270,7 @@ int BenchAVSM(const Options& o)
         return 1;
       }
       vtkNew<vtkFXPipelinePass> pipeline;
+      m.Pipeline = pipeline;
       m.AVSM = nullptr;
       if (m.Nodes < 0)
       {
@@ -296,6 +300,8 @@ int BenchAVSM(const Options& o)
       if (m.AVSM)
       {
         m.Visibility = Download(m.Window, m.AVSM->GetOutputTexture("visibility"), 1);
+        m.LinearDepth = Download(m.Window,
+          m.Pipeline->GetGBufferPass()->GetChannelTexture(vtkFXGBufferPass::LinearDepth), 1);
         m.AVSM->ProfileOn(); // one more frame, finished phase by phase
         m.Window->Render();
         m.AVSM->ProfileOff();
@@ -306,11 +312,16 @@ int BenchAVSM(const Options& o)
     std::vector<PlotPoint> points;
     for (auto& m : methods)
     {
-      // Transmittance error at the receivers (1 everywhere without shadows).
+      // Transmittance error at the receivers (1 everywhere without shadows):
+      // the pixels where the G-buffer has a surface, not the background.
       double sum = 0.0;
       size_t count = 0;
       for (size_t i = 0; i < exact.Visibility.size(); ++i)
       {
+        if (i >= exact.LinearDepth.size() || !(exact.LinearDepth[i] > 0.0f))
+        {
+          continue;
+        }
         const double mine = m.Visibility.empty() ? 1.0 : m.Visibility[i];
         sum += (mine - exact.Visibility[i]) * (mine - exact.Visibility[i]);
         ++count;
