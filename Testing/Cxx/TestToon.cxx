@@ -15,11 +15,13 @@
 // - the same image at scene scales 1e-6 and 1e6, translated 1e6 from the
 //   origin, with a near/far ratio of 1e-6, in both projections.
 #include "vtkFXPipelinePass.h"
+#include "vtkFXGBufferPass.h"
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
 #include "vtkFXToonPass.h"
 
 #include "vtkLight.h"
+#include "vtkMath.h"
 #include "vtkOBJReader.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
@@ -27,6 +29,8 @@
 #include "vtkRendererCollection.h"
 #include "vtkSphereSource.h"
 
+#include <algorithm>
+#include <array>
 #include <functional>
 #include <map>
 
@@ -247,9 +251,61 @@ int CheckSphereLines(vtkRenderWindow* window, int height, double& measuredWidth)
   return EXIT_SUCCESS;
 }
 
+// Pixels within 2 px of a crease of what the G-buffer of `renderer`'s
+// pipeline holds: two side-by-side covered pixels whose normals differ by
+// more than 25 degrees (the toon pass's crease angle is 30; the normals
+// are VTK's, split at 30 degrees, so a crease is a jump well above 25).
+std::vector<char> NearCreases(vtkRenderer* renderer, int width, int height,
+  const std::function<bool(int, int)>& background)
+{
+  auto* pipeline = vtkFXPipelinePass::SafeDownCast(renderer->GetPass());
+  const auto encoded = vtkFXTest::Download(
+    pipeline->GetGBufferPass()->GetChannelTexture(vtkFXGBufferPass::Normal), 2);
+  std::vector<char> near(static_cast<size_t>(width) * height, 0);
+  if (encoded.size() < near.size() * 2)
+  {
+    return near;
+  }
+  std::vector<std::array<double, 3>> normals(near.size());
+  for (size_t i = 0; i < near.size(); ++i)
+  {
+    vtkFXTest::DecodeNormal(encoded[2 * i], encoded[2 * i + 1], normals[i].data());
+  }
+  const double cosine = std::cos(vtkMath::RadiansFromDegrees(25.0));
+  for (int y = 0; y + 1 < height; ++y)
+  {
+    for (int x = 0; x + 1 < width; ++x)
+    {
+      const size_t i = static_cast<size_t>(y) * width + x;
+      bool crease = false;
+      for (const size_t j : { i + 1, i + width })
+      {
+        const int xj = static_cast<int>(j % width), yj = static_cast<int>(j / width);
+        crease = crease ||
+          (!background(x, y) && !background(xj, yj) &&
+            vtkMath::Dot(normals[i].data(), normals[j].data()) < cosine);
+      }
+      for (int dy = -2; crease && dy <= 3; ++dy)
+      {
+        for (int dx = -2; dx <= 3; ++dx)
+        {
+          if (x + dx >= 0 && y + dy >= 0 && x + dx < width && y + dy < height)
+          {
+            near[static_cast<size_t>(y + dy) * width + x + dx] = 1;
+          }
+        }
+      }
+    }
+  }
+  return near;
+}
+
 // Fandisk pixels at least 3 px from the background with line coverage
-// above 0.2 (lines are 0.83 px wide here), with creases on or off.
-int InteriorLinePixels(vtkRenderWindow* window, bool creases, int& interior, int& object)
+// above 0.2 (lines are 0.83 px wide here), with creases on or off; with
+// `lines`, which pixels those are, and with `nearCreases`, the pixels near
+// the surface's creases (NearCreases).
+int InteriorLinePixels(vtkRenderWindow* window, bool creases, int& interior, int& object,
+  std::vector<char>* lines = nullptr, std::vector<char>* nearCreases = nullptr)
 {
   const int width = 400, height = 300;
   window->SetSize(width, height);
@@ -297,8 +353,18 @@ int InteriorLinePixels(vtkRenderWindow* window, bool creases, int& interior, int
         }
       }
       object += inside ? 1 : 0;
-      interior += (inside && coverage[y * width + x] > 0.2) ? 1 : 0;
+      const bool line = inside && coverage[y * width + x] > 0.2;
+      interior += line ? 1 : 0;
+      if (lines)
+      {
+        lines->resize(static_cast<size_t>(width) * height, 0);
+        (*lines)[static_cast<size_t>(y) * width + x] = line ? 1 : 0;
+      }
     }
+  }
+  if (nearCreases)
+  {
+    *nearCreases = NearCreases(renderer, width, height, background);
   }
   return EXIT_SUCCESS;
 }
@@ -306,10 +372,26 @@ int InteriorLinePixels(vtkRenderWindow* window, bool creases, int& interior, int
 int CheckFandiskCreases(vtkRenderWindow* window)
 {
   int withCreases = 0, withoutCreases = 0, object = 0;
-  InteriorLinePixels(window, true, withCreases, object);
-  InteriorLinePixels(window, false, withoutCreases, object);
+  std::vector<char> creaseLines, otherLines, nearCreases;
+  InteriorLinePixels(window, true, withCreases, object, &creaseLines, &nearCreases);
+  InteriorLinePixels(window, false, withoutCreases, object, &otherLines);
+  // The lines creases add lie on the surface's creases.
+  int added = 0, addedNearCreases = 0;
+  const long nearArea = std::count(nearCreases.begin(), nearCreases.end(), 1);
+  for (size_t i = 0; i < creaseLines.size() && i < otherLines.size() && i < nearCreases.size(); ++i)
+  {
+    const bool isAdded = creaseLines[i] && !otherLines[i];
+    added += isAdded ? 1 : 0;
+    addedNearCreases += isAdded && nearCreases[i] ? 1 : 0;
+  }
   std::cout << "fandisk: " << object << " interior pixels, " << withCreases
-            << " on lines with creases, " << withoutCreases << " without" << std::endl;
+            << " on lines with creases, " << withoutCreases << " without; of the " << added
+            << " the creases add, " << addedNearCreases << " within 2 px of a crease (a zone of "
+            << nearArea << " pixels, " << 100.0 * nearArea / std::max(object, 1)
+            << "% of the interior's size)" << std::endl;
+  FX_CHECK(nearArea < object / 2, "the crease zone covers " << nearArea << " pixels: no test");
+  FX_CHECK(added > 300 && addedNearCreases >= 0.95 * added,
+    "crease lines off the creases: " << addedNearCreases << " of " << added << " near one");
   FX_CHECK(object > 10000, "the fandisk covers " << object << " interior pixels");
   FX_CHECK(withCreases > 300 && withCreases > 2 * withoutCreases + 100,
     "creases add too few lines: " << withCreases << " against " << withoutCreases);
@@ -429,10 +511,12 @@ int CheckScaleInvariance(vtkRenderWindow* window)
       const double psnr = vtkFXScenes::PSNR(base, image);
       std::cout << "toon bunny " << (parallel ? "parallel" : "perspective") << ", " << v.Name
                 << ": PSNR " << psnr << " dB" << std::endl;
-      failures += psnr >= 35.0 ? 0 : 1;
+      // The same image up to rounding: measured identical (inf) scaled
+      // and translated, 54.8 dB with near/far 1e-6 in perspective.
+      failures += psnr >= 50.0 ? 0 : 1;
     }
   }
-  FX_CHECK(failures == 0, failures << " variant(s) below 35 dB");
+  FX_CHECK(failures == 0, failures << " variant(s) below 50 dB");
   return EXIT_SUCCESS;
 }
 }
