@@ -3,16 +3,17 @@
 // vtkFXCompositePass::MaximumUniformLights) and VTK's forward render of
 // the same lights (one block of shader code per light).
 //
-// The scene is INPUT (default scene:spheres) on its ground, lit only by N
+// Each scene is an INPUT (default scene:spheres) on its ground, lit only by N
 // point lights over the ground (vtkFXScenes::AddPointLights: VTK's
 // attenuation scaled so that each point of the ground is reached by about
 // the same few lights whatever N: pi on average). Each N is rendered in a vtkFX window and
 // a VTK window, frames interleaved. VTK is rendered up to --max-vtk-lights
 // (default 256): its shader grows with N and its frames take seconds
 // beyond. Writes DIR/lights.csv (scene, method, setting, ms, rmse, psnr;
-// rmse and psnr of vtkFX against VTK where VTK rendered), DIR/lights.png
-// (frame time against N) and DIR/lights-strip.png (vtkFX at 16, 256 and
-// 1024 lights, VTK at 256).
+// rmse and psnr of vtkFX against VTK where VTK rendered; rows for every
+// scene), DIR/lights.png (frame time against N) and DIR/lights-strip.png
+// (vtkFX at 16, 256 and 1024 lights, VTK at 256); with several INPUTs,
+// lights-TAG.png and lights-strip-TAG.png per scene.
 #include "vtkFXBench.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXPipelinePass.h"
@@ -38,19 +39,14 @@ const double Reach = 1.0;
 
 namespace vtkFXBench
 {
-int BenchLights(const Options& o)
+// One scene: N = 1 .. 1024 lights, rows into `csv`, its plot and strip
+// (named after the scene when there are several, `suffix`).
+int BenchLightsScene(const Options& o, const std::string& input, const std::string& suffix,
+  std::ofstream& csv, vtkTimerLog* timer)
 {
-  std::ofstream csv;
-  std::string csvPath;
-  if (!OpenReport(o, "lights", csv, csvPath))
-  {
-    return 1;
-  }
-  const std::string input = o.Inputs.empty() ? "scene:spheres" : o.Inputs.front();
   const int counts[] = { 1, 16, 64, 256, 1024 };
   auto fxWindow = MakeWindow(o);
   auto vtkWindow = MakeWindow(o);
-  vtkNew<vtkTimerLog> timer;
   std::vector<PlotPoint> points;
   std::map<std::string, std::vector<unsigned char>> strip;
   double oneLight = 0.0;
@@ -125,7 +121,7 @@ int BenchLights(const Options& o)
                     { "VTK forward", 30, 80, 200, vtkPlotPoints::SQUARE } },
     points, FileTag(input) + ": frame time against point lights (" + std::to_string(o.Width) +
       "x" + std::to_string(o.Height) + ")",
-    "point lights", "frame (ms)", o.Out + "/lights.png");
+    "point lights", "frame (ms)", o.Out + "/lights" + suffix + ".png");
   std::vector<const std::vector<unsigned char>*> panels;
   for (const char* key : { "fx16", "fx256", "fx1024", "vtk256" })
   {
@@ -134,7 +130,30 @@ int BenchLights(const Options& o)
       panels.push_back(&strip[key]);
     }
   }
-  WriteRGBStrip(panels, o.Width, o.Height, o.Out + "/lights-strip.png");
+  WriteRGBStrip(panels, o.Width, o.Height, o.Out + "/lights-strip" + suffix + ".png");
+  return 0;
+}
+
+int BenchLights(const Options& o)
+{
+  std::ofstream csv;
+  std::string csvPath;
+  if (!OpenReport(o, "lights", csv, csvPath))
+  {
+    return 1;
+  }
+  const std::vector<std::string> inputs =
+    o.Inputs.empty() ? std::vector<std::string>{ "scene:spheres" } : o.Inputs;
+  vtkNew<vtkTimerLog> timer;
+  for (const std::string& input : inputs)
+  {
+    // One scene keeps the plain names; several get theirs.
+    const std::string suffix = inputs.size() > 1 ? "-" + FileTag(input) : std::string();
+    if (BenchLightsScene(o, input, suffix, csv, timer) != 0)
+    {
+      return 1;
+    }
+  }
   std::cout << "wrote " << csvPath << " (" << o.Width << "x" << o.Height << ", median of up to "
             << o.Frames << " interleaved frames)\n";
   return 0;
