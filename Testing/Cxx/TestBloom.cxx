@@ -29,6 +29,7 @@
 #include "vtkRenderState.h"
 #include "vtkRendererCollection.h"
 #include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 #include "vtkOpenGLState.h"
 #include "vtk_glew.h"
@@ -85,19 +86,17 @@ vtkStandardNewMacro(PaintProbe);
 
 // A black scene (no light, black background) with a sphere whose only
 // light is its EMISSIVE_COLOR, or no emission at all.
-vtkRenderer* MakeScene(vtkRenderWindow* window, const double emission[3])
+// A black sphere (no highlight), emitting `emission` if given.
+vtkSmartPointer<vtkActor> Sphere(double x, double radius, const double emission[3])
 {
-  window->GetRenderers()->RemoveAllItems();
-  vtkNew<vtkRenderer> renderer;
-  window->AddRenderer(renderer);
-  renderer->SetBackground(0.0, 0.0, 0.0);
   vtkNew<vtkSphereSource> source;
-  source->SetRadius(0.3);
+  source->SetCenter(x, 0.0, 0.0);
+  source->SetRadius(radius);
   source->SetThetaResolution(64);
   source->SetPhiResolution(64);
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputConnection(source->GetOutputPort());
-  vtkNew<vtkActor> actor;
+  auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
   actor->GetProperty()->SetColor(0.0, 0.0, 0.0);
   actor->GetProperty()->SetSpecular(0.0);
@@ -107,7 +106,16 @@ vtkRenderer* MakeScene(vtkRenderWindow* window, const double emission[3])
     keys->Set(GB::EMISSIVE_COLOR(), emission, 3);
     actor->SetPropertyKeys(keys);
   }
-  renderer->AddActor(actor);
+  return actor;
+}
+
+vtkRenderer* MakeScene(vtkRenderWindow* window, const double emission[3])
+{
+  window->GetRenderers()->RemoveAllItems();
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  renderer->AddActor(Sphere(0.0, 0.3, emission));
   renderer->ResetCamera();
   return renderer;
 }
@@ -249,18 +257,7 @@ int CheckHotEmission(vtkRenderWindow* window)
   const double hot[2][3] = { { 1e30, 1e30, 1e30 }, { nan, nan, nan } };
   for (int k = 0; k < 2; ++k)
   {
-    vtkNew<vtkSphereSource> speck;
-    speck->SetCenter(k ? 0.45 : -0.45, 0.0, 0.0);
-    speck->SetRadius(0.002);
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(speck->GetOutputPort());
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    actor->GetProperty()->SetColor(0.0, 0.0, 0.0);
-    vtkNew<vtkInformation> keys;
-    keys->Set(GB::EMISSIVE_COLOR(), hot[k], 3);
-    actor->SetPropertyKeys(keys);
-    renderer->AddActor(actor);
+    renderer->AddActor(Sphere(k ? 0.45 : -0.45, 0.002, hot[k]));
   }
   vtkNew<vtkFXPipelinePass> pipeline;
   renderer->SetPass(pipeline);
