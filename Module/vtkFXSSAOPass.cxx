@@ -110,8 +110,10 @@ std::string vtkFXSSAOPass::GetCompositeCode(int hook)
       // Sampled bilinearly: a depth-aware upsample here cost a third more
       // composite time at 1280x720 for no measurable gain against the
       // ray-traced reference (vtkfx-bench ao).
-      return "    ambientVisibility *= clamp(texture(@occlusion, texCoord * @scale + @offset).r, "
-             "0.0, 1.0);";
+      return "    {\n"
+             "      float ao = texture(@occlusion, texCoord * @scale + @offset).r;\n"
+             "      ambientVisibility *= clamp(isnan(ao) ? 1.0 : ao, 0.0, 1.0);\n"
+             "    }";
     default:
       return std::string();
   }
@@ -189,9 +191,12 @@ int vtkFXSSAOPass::GetOcclusionFormat() const
 
 double vtkFXSSAOPass::ComputeRadius(vtkRenderer* ren) const
 {
+  // Within what a float holds with room to square and divide (a radius
+  // that rounds to 0 or inf in the shaders would make NaN).
+  const auto representable = [](double r) { return std::min(std::max(r, 1e-30), 1e30); };
   if (this->Radius > 0.0)
   {
-    return this->Radius;
+    return representable(this->Radius);
   }
   double bounds[6];
   ren->ComputeVisiblePropBounds(bounds);
@@ -202,7 +207,7 @@ double vtkFXSSAOPass::ComputeRadius(vtkRenderer* ren) const
   const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
     (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
     (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-  return diagonal > 0.0 ? this->RadiusFraction * diagonal : 1.0;
+  return diagonal > 0.0 ? representable(this->RadiusFraction * diagonal) : 1.0;
 }
 
 void vtkFXSSAOPass::SetHemisphereKernel(vtkShaderProgram* program) const
