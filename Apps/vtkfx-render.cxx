@@ -516,6 +516,19 @@ int main(int argc, char* argv[])
                        : std::string("no blur"))
               << "\n";
   }
+  if (!args.PlainVTK && pipeline->GetDirectionalOcclusion())
+  {
+    vtkFXDirectionalOcclusionPass* directional = pipeline->GetDirectionalOcclusionPass();
+    vtkFXBilateralBlurPass* blur = pipeline->GetDirectionalOcclusionBlurPass();
+    std::cout << "directional occlusion: "
+              << (directional->GetFalloff() == vtkFXSSAOPass::Binary ? "binary" : "cuberoot")
+              << " falloff, radius " << directional->GetEffectiveRadius() << ", "
+              << directional->GetEffectiveNumberOfSamples() << " samples, "
+              << (directional->GetHalfResolution() ? "half" : "full") << " resolution, "
+              << (blur && blur->GetEnabled() ? "blur radius " + std::to_string(blur->GetRadius())
+                                             : std::string("no blur"))
+              << ", bleeding " << directional->GetBleeding() << "\n";
+  }
   auto* toon = args.PlainVTK ? nullptr : vtkFXToonPass::SafeDownCast(pipeline->GetEffect("toon"));
   if (toon)
   {
