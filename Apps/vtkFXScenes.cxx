@@ -325,6 +325,49 @@ void SceneBumps(vtkRenderer* renderer)
   renderer->AddActor(MakeActor(box->GetOutput(), 0.9, 0.6, 0.3));
 }
 
+void SceneTerrain(vtkRenderer* renderer)
+{
+  // A scalar-bumped terrain: smooth hills as geometry (y up), and a finer
+  // "detail" elevation field, gullies a few hundredths deep, that is not in
+  // the mesh but shades it through vtkFXGBufferPass::SetBump, as a
+  // high-resolution elevation over a coarse grid would.
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-3, 0, -3);
+  plane->SetPoint1(-3, 0, 3); // (normal +y)
+  plane->SetPoint2(3, 0, -3);
+  plane->SetResolution(240, 240);
+  plane->Update();
+  vtkSmartPointer<vtkPolyData> land = plane->GetOutput();
+  const auto hill = [](double x, double z, double cx, double cz, double height, double width) {
+    return height * std::exp(-((x - cx) * (x - cx) + (z - cz) * (z - cz)) / width);
+  };
+  vtkPoints* points = land->GetPoints();
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    p[1] = hill(p[0], p[2], 1.0, 0.5, 0.9, 0.9) + hill(p[0], p[2], -1.2, -1.0, 0.6, 0.5) +
+      hill(p[0], p[2], -0.6, 1.6, 0.5, 0.4);
+    points->SetPoint(i, p);
+  }
+  land = WithNormals(land);
+  AddHeight(land, "detail", [](const double p[3]) {
+    const double a = std::sin(9.0 * p[0] + 2.0 * std::sin(5.0 * p[2]));
+    const double b = std::sin(7.0 * p[2] + 2.0 * std::sin(4.0 * p[0]));
+    return -0.02 * (1.0 - std::fabs(a)) * (1.0 - std::fabs(b));
+  });
+  auto actor = MakeActor(land, 0.72, 0.66, 0.55);
+  vtkFXGBufferPass::SetBump(actor, "detail", 1.0);
+  renderer->AddActor(actor);
+  // The block it tops, as a relief model stands on a table (a sheet
+  // floating over the ground would cast an overhang shadow no screen-space
+  // estimator sees, which is not what this scene is for).
+  vtkNew<vtkCubeSource> block;
+  block->SetBounds(-3, 3, -0.6, -0.005, -3, 3);
+  block->Update();
+  renderer->AddActor(MakeActor(block->GetOutput(), 0.55, 0.5, 0.42));
+}
+
 void SceneScalars(vtkRenderer* renderer)
 {
   vtkNew<vtkSphereSource> source;
@@ -799,6 +842,8 @@ bool PopulateBuiltIn(vtkRenderer* renderer, const std::string& name, std::string
     SceneBumps(renderer);
   else if (name == "scene:normalmap")
     return SceneNormalMap(renderer, error);
+  else if (name == "scene:terrain")
+    SceneTerrain(renderer);
   else if (name == "scene:scalars")
     SceneScalars(renderer);
   else if (name == "scene:textured")
@@ -853,7 +898,7 @@ std::vector<std::string> vtkFXScenes::BuiltInSceneNames()
   return { "scene:spheres", "scene:corner", "scene:scalars", "scene:textured", "scene:glyphs",
     "scene:composite", "scene:splats", "scene:lights", "scene:mixed", "scene:volume", "scene:edges",
     "scene:molecule", "scene:glow", "scene:pointlights", "scene:isoshadow", "scene:cloud",
-    "scene:particles", "scene:bumps", "scene:normalmap" };
+    "scene:particles", "scene:bumps", "scene:normalmap", "scene:terrain" };
 }
 
 bool vtkFXScenes::Populate(vtkRenderer* renderer, const std::string& input,

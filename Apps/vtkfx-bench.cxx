@@ -163,7 +163,7 @@ void Usage(std::ostream& os)
         "          near-weighted 1 - (t/R)^(1/3) (--falloff cuberoot)\n"
         "do:       directional occlusion against a reference traced with the shading\n"
         "          normals, beside vtkFX's plain AO and VTK's (default: scene:bumps,\n"
-        "          scene:normalmap, bunny, 640x480)\n"
+        "          scene:terrain, scene:normalmap, bunny, scene:corner, 640x480)\n"
         "bloom:    vtkFX's glow and the seed's direct 21x21 Gaussian against the exact\n"
         "          glow computed on the CPU (default: scene:glow, 1280x720)\n"
         "avsm:     shadows of translucent props, AVSM-4/8/16 against the exact deep shadow\n"
@@ -242,10 +242,11 @@ int main(int argc, char* argv[])
     }
     if (o.Inputs.empty())
     {
-      // Bumped and normal-mapped scenes, a mesh with neither, and coloured
-      // props by white walls (the bleeding).
-      o.Inputs = { "scene:bumps", "scene:normalmap", data + "/stanford-bunny.obj",
-        "scene:corner" };
+      // Bumped (rivets and ridges; a terrain's fine elevation) and
+      // normal-mapped scenes, a mesh with neither, and coloured props by
+      // white walls (the bleeding).
+      o.Inputs = { "scene:bumps", "scene:terrain", "scene:normalmap",
+        data + "/stanford-bunny.obj", "scene:corner" };
     }
     if (!o.SizeGiven)
     {

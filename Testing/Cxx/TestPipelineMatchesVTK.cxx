@@ -74,9 +74,13 @@ int TestPipelineMatchesVTK(int argc, char* argv[])
   // scene:glow's emission (vtkFXGBufferPass::EMISSIVE_COLOR) is vtkFX's own:
   // VTK's forward render has nothing to compare it with.
   inputs.erase(std::remove(inputs.begin(), inputs.end(), "scene:glow"), inputs.end());
-  // So are scene:bumps' scalar bumps (vtkFXGBufferPass::SetBump), which VTK
-  // does not draw. (scene:normalmap's normal texture is VTK's: kept.)
-  inputs.erase(std::remove(inputs.begin(), inputs.end(), "scene:bumps"), inputs.end());
+  // So are scene:bumps' and scene:terrain's scalar bumps
+  // (vtkFXGBufferPass::SetBump), which VTK does not draw. (scene:normalmap's
+  // normal texture is VTK's: kept.)
+  for (const char* bumped : { "scene:bumps", "scene:terrain" })
+  {
+    inputs.erase(std::remove(inputs.begin(), inputs.end(), bumped), inputs.end());
+  }
   const std::string data = vtkFXScenes::DataDirectory();
   inputs.push_back(data + "/stanford-bunny.obj");
   inputs.push_back(data + "/fandisk.obj");
