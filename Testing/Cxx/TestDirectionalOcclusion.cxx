@@ -596,9 +596,11 @@ int TestDirectionalOcclusion(int, char*[])
               << std::endl;
     FX_CHECK(bins >= 4, "bands near the crease");
     // The blocked fraction is the estimate of 1 - A that the channels' mean
-    // is held to (0.03 per bin); the albedo's 8 bits add 1/255 relative to
-    // the smallest component (0.1): 0.04.
-    FX_CHECK(worst <= 0.03 + 0.04, "the floor receives the wall's light times 1 - A(h)");
+    // is held to (0.03 per bin); the wall's albedo in 8 bits is off by at
+    // most half a level, 0.002, which relative to its smallest component
+    // (0.1) is 2% of a value below 1 - A <= 0.44 here: 0.01 more (measured
+    // worst 0.019 in all).
+    FX_CHECK(worst <= 0.03 + 0.01, "the floor receives the wall's light times 1 - A(h)");
     FX_CHECK(far <= 1e-3, "no bleeding beyond R from the wall");
     // Off again: the texture goes.
     dop->SetBleeding(0.0);
