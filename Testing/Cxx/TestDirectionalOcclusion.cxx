@@ -8,16 +8,21 @@
 //    channels against the crease's closed form, as TestSSAO checks plain
 //    AO; the channel facing the wall darker than the one facing away;
 // 2. with no bump the composite's ambient visibility is the channels' mean
-//    (the resolve with weights 1/3), within 8-bit rounding;
-// 3. a floor bumped by a ramp of slope s (height s z): its shading normal
+//    (the resolve with weights 1/3), within 8-bit rounding, and what plain
+//    AO (the same samples, radius, resolution and blur) shows, within 0.06
+//    per band;
+// 3. a floor bumped by a ramp of slope s (height s z), as a scalar bump and
+//    as VTK's normal texture (tangents along +z): its shading normal
 //    (the Normal channel) is the analytic (0, 1, -s) / |.|, its geometric
 //    normal stays +y, and the composite shows sum_k c_k(n_s) channel_k
 //    exactly; turned towards the wall it reads darker than the mean, away
 //    from it lighter;
 // 4. the geometric-normal channel is allocated only while an occlusion
 //    effect runs and a visible prop has a bump; a prop without a bump
-//    beside one with it has the same normal in both channels, bit for bit;
-// 5. the bumped crease under scale 1e-6 / 1e6, translated by 1e6, parallel
+//    beside one with it (bump or normal texture) has the same normal in
+//    both channels, bit for bit;
+// 5. the bumped crease (scalar bump and normal texture) under scale 1e-6 /
+//    1e6, translated by 1e6, parallel
 //    projection and near/far 1e-6: channels finite in [0, 1], both normals
 //    finite and of unit length;
 // 6. diffuse bleeding off by default (no texture, no pass); on, with a red
@@ -30,6 +35,8 @@
 #include "vtkFXOcclusionTestUtilities.h"
 
 #include "vtkFloatArray.h"
+#include "vtkTexture.h"
+#include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkProperty.h"
 #include "vtkPointData.h"
@@ -157,12 +164,62 @@ std::vector<unsigned char> Grab(vtkRenderWindow* window)
   return red;
 }
 
-// The floor (with a ramp height s z when s != 0, as a bump) and the wall;
-// as vtkFXOcclusionTest::AddCrease sets them up.
-vtkActor* BuildCrease(Setup& s, double slope)
+// The floor's ramp as VTK's normal texture instead of a scalar bump: a
+// 2 x 2 texture of the tangent-space normal (-s, 0, 1) / |.|, with
+// tangents along +z (so that the bitangent, normal x tangent, is +x): the
+// shading normal is the ramp's, (0, 1, -s) / |.|, up to the texture's 8
+// bits.
+void UseNormalTexture(vtkActor* floor, double slope)
+{
+  auto* mapper = vtkPolyDataMapper::SafeDownCast(floor->GetMapper());
+  mapper->Update();
+  vtkNew<vtkPolyData> data;
+  data->DeepCopy(mapper->GetInput());
+  const vtkIdType points = data->GetNumberOfPoints();
+  vtkNew<vtkFloatArray> tangents, tcoords;
+  tangents->SetNumberOfComponents(3);
+  tangents->SetName("Tangents");
+  tcoords->SetNumberOfComponents(2);
+  tcoords->SetName("TCoords");
+  for (vtkIdType i = 0; i < points; ++i)
+  {
+    const double* p = data->GetPoint(i);
+    tangents->InsertNextTuple3(0.0, 0.0, 1.0);
+    tcoords->InsertNextTuple2(p[2], p[0]); // u along the tangent
+  }
+  data->GetPointData()->SetTangents(tangents);
+  data->GetPointData()->SetTCoords(tcoords);
+  mapper->SetInputData(data);
+  const double length = std::sqrt(1.0 + slope * slope);
+  const double normal[3] = { -slope / length, 0.0, 1.0 / length };
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(2, 2, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* texels = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int t = 0; t < 4; ++t)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      texels[3 * t + c] = static_cast<unsigned char>(std::lround(255.0 * (0.5 + 0.5 * normal[c])));
+    }
+  }
+  vtkNew<vtkTexture> texture;
+  texture->SetInputData(image);
+  texture->InterpolateOn();
+  floor->GetProperty()->SetNormalTexture(texture);
+}
+
+// The floor (with a ramp height s z when s != 0, as a bump or, with
+// `normalTexture`, as VTK's normal texture) and the wall; as
+// vtkFXOcclusionTest::AddCrease sets them up.
+vtkActor* BuildCrease(Setup& s, double slope, bool normalTexture = false)
 {
   vtkActor* floor = AddCrease(s);
-  if (slope != 0.0)
+  if (slope != 0.0 && normalTexture)
+  {
+    UseNormalTexture(floor, slope);
+  }
+  else if (slope != 0.0)
   {
     auto* mapper = vtkPolyDataMapper::SafeDownCast(floor->GetMapper());
     mapper->Update();
@@ -388,12 +445,13 @@ int TestDirectionalOcclusion(int, char*[])
         << worstPlain);
   }
 
-  // 3. A floor bumped by ramps of slope +-0.5: shading normals and their
-  // resolve.
+  // 3. A floor bumped by ramps of slope +-0.5, by a scalar bump and by
+  // VTK's normal texture: shading normals and their resolve.
+  for (bool normalTexture : { false, true })
   for (double slope : { 0.5, -0.5 })
   {
     Setup s = MakeDOSetup(window, 63);
-    BuildCrease(s, slope);
+    BuildCrease(s, slope, normalTexture);
     window->Render();
     FX_CHECK(s.Pipeline->GetGBufferChannels() & GB::ChannelBit(GB::GeometricNormal),
       "a bump: the geometric-normal channel is allocated");
@@ -446,14 +504,19 @@ int TestDirectionalOcclusion(int, char*[])
       meanSum += (channel[0][i] + channel[1][i] + channel[2][i]) / 3.0;
       ++n;
     }
-    std::cout << "ramp " << slope << ": " << n << " floor pixels, shading normal off by "
+    std::cout << (normalTexture ? "normal-texture ramp " : "ramp ") << slope << ": " << n
+              << " floor pixels, shading normal off by "
               << worstAngle << " rad at most (geometric " << worstGeometric
               << "), weights " << c[0] << " " << c[1] << " " << c[2] << ", resolved mean "
               << resolvedSum / n << " against the channels' mean " << meanSum / n
               << ", composite off by " << worstResolve << " levels" << std::endl;
     FX_CHECK(n > 500, "floor pixels near the wall");
-    // Octahedral normals in two half floats: 1e-3 rad (vtkFXNormalCoding).
-    FX_CHECK(worstAngle <= 2e-3, "the shading normal is the ramp's normal");
+    // Octahedral normals in two half floats: 1e-3 rad (vtkFXNormalCoding);
+    // an 8-bit normal texture adds up to half a level per component, 1/255
+    // after the map to [-1, 1]: 5.5e-3 rad for two components (measured
+    // 3.9e-3).
+    FX_CHECK(worstAngle <= (normalTexture ? 2e-3 + 5.5e-3 : 2e-3),
+      "the shading normal is the ramp's normal");
     FX_CHECK(worstGeometric <= 2e-3, "the geometric normal is the floor's");
     FX_CHECK(worstResolve <= 0.5 + 0.13, "the composite shows the weighted channels");
     if (slope > 0.0)
@@ -467,9 +530,10 @@ int TestDirectionalOcclusion(int, char*[])
   }
 
   // 4. What is allocated; a prop without a bump beside one with it.
+  for (bool normalTexture : { true, false }) // the bump's case goes on below
   {
     Setup s = MakeDOSetup(window, 15);
-    vtkActor* floor = BuildCrease(s, 0.5);
+    vtkActor* floor = BuildCrease(s, 0.5, normalTexture);
     window->Render();
     vtkFXGBufferPass* gbuffer = s.Pipeline->GetGBufferPass();
     const auto shading = vtkFXTest::Download(gbuffer->GetChannelTexture(GB::Normal), 2);
@@ -491,6 +555,13 @@ int TestDirectionalOcclusion(int, char*[])
       }
     }
     FX_CHECK(wallPixels > 1000 && floorPixels > 1000, "both props seen, the floor bumped");
+    std::cout << (normalTexture ? "normal texture" : "bump") << " on the floor only: " << wallPixels
+              << " wall pixels keep their normal, " << floorPixels << " floor pixels tilted"
+              << std::endl;
+    if (normalTexture)
+    {
+      continue;
+    }
     // Ambient occlusion instead samples around the geometric normal too.
     s.Pipeline->AmbientOcclusionOn();
     FX_CHECK(!s.Pipeline->GetDirectionalOcclusion(), "ambient occlusion replaced the directional");
@@ -510,7 +581,8 @@ int TestDirectionalOcclusion(int, char*[])
       "no bump left: the channel is released");
   }
 
-  // 5. The bumped crease under extreme scales, offsets and projections.
+  // 5. The bumped crease (scalar bump and normal texture) under extreme
+  // scales, offsets and projections.
   struct Case
   {
     const char* Name;
@@ -521,12 +593,13 @@ int TestDirectionalOcclusion(int, char*[])
   const Case cases[] = { { "scale 1e-6", 1e-6, 0.0, false, 0.0 }, { "scale 1e6", 1e6, 0.0, false, 0.0 },
     { "translated 1e6", 1.0, 1e6, false, 0.0 }, { "parallel", 1.0, 0.0, true, 0.0 },
     { "near/far 1e-6", 1.0, 0.0, false, 1e-6 } };
+  for (bool normalTexture : { false, true })
   for (const Case& c : cases)
   {
     Setup s = MakeDOSetup(window, 15);
     s.Pipeline->GetDirectionalOcclusionPass()->SetRadius(0.0); // a fraction of the bounds
     s.Pipeline->GetDirectionalOcclusionPass()->SetHalfResolution(true);
-    BuildCrease(s, 0.5);
+    BuildCrease(s, 0.5, normalTexture);
     vtkFXTest::MoveScene(s.Renderer, c.Scale, c.Offset, c.Parallel, c.NearRatio);
     window->Render();
     vtkFXGBufferPass* gbuffer = s.Pipeline->GetGBufferPass();
@@ -555,7 +628,8 @@ int TestDirectionalOcclusion(int, char*[])
         surface += channel == GB::Normal;
       }
     }
-    std::cout << c.Name << ": " << surface << " surface pixels, channels in range" << std::endl;
+    std::cout << c.Name << (normalTexture ? ", normal texture" : ", scalar bump") << ": " << surface
+              << " surface pixels, channels in range" << std::endl;
     FX_CHECK(surface > 1000, c.Name << ": the crease is seen");
   }
 
