@@ -61,7 +61,9 @@
  * Cost, per view: the translucent props drawn once more at
  * ShadowMapSize^2, 16 bytes per captured fragment plus 8 per texel (list
  * head and count); the resolve, one pass over the atlas (NumberOfNodes x 8
- * bytes per texel kept); the look-up, one full-resolution pass of 1 (4
+ * bytes per texel kept) that reads each texel's list about n^2 / 4 times
+ * for n segments (in order, four per walk; at most 64 inserted exactly)
+ * and inserts each segment into the curve; the look-up, one full-resolution pass of 1 (4
  * bilinear) curve reads per casting light, or a walk of the lists (Exact).
  * A positional light without a cone costs six views.
  */
