@@ -536,7 +536,10 @@ std::string vtkFXGBufferPass::ChannelWritesGLSL(bool lit, const char* linearDept
         code << (lit ? "vec4(fxDiffuse, fxColor.a);\n" : "fxColor;\n");
         break;
       case Specular:
-        code << (lit ? "vec4(fxSpecular, fxSpecularPower / 128.0);\n" : "vec4(0.0);\n");
+        // The power (VTK's 0..128) as sqrt(power / 128) in 8 bits: small
+        // powers keep two digits (0.2 comes back 0.197; linear, it was 0).
+        code << (lit ? "vec4(fxSpecular, sqrt(clamp(fxSpecularPower / 128.0, 0.0, 1.0)));\n"
+                     : "vec4(0.0);\n");
         break;
       case Ambient:
         code << (lit ? "vec4(fxAmbient, 1.0);\n" : "vec4(0.0, 0.0, 0.0, 1.0);\n");

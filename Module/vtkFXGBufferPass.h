@@ -21,7 +21,7 @@
  *                        unlit fragments and uncovered pixels carry a
  *                        sentinel outside [-1,1].
  * - LinearDepth  R32F    -z in view coordinates (world units), 0 = no surface.
- * - Specular     RGBA8   specular colour x intensity; alpha = power / 128.
+ * - Specular     RGBA8   specular colour x intensity; alpha = sqrt(power / 128).
  * - Ambient      RGBA8   VTK's ambient term (ambient intensity x colour).
  * - Emission     RGBA8   light-independent colour: the colour of unlit
  *                        fragments; for lit ones the prop's EMISSIVE_COLOR

@@ -143,7 +143,9 @@ void main()
 #if FX_HAS_SPECULAR
     vec4 specularTexel = texture(fxSpecular, texCoord);
     vec3 specularColor = specularTexel.rgb;
-    float specularPower = specularTexel.a * 128.0;
+    // (stored as sqrt(power / 128), vtkFXGBufferPass; at least 1e-3, so
+    // that pow(0, power) is 0, never the undefined pow(0, 0))
+    float specularPower = max(specularTexel.a * specularTexel.a * 128.0, 1e-3);
 #else
     vec3 specularColor = vec3(0.0);
     float specularPower = 1.0;

@@ -19,6 +19,7 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
 #include "vtkSphereSource.h"
 
 #include <limits>
@@ -166,5 +167,32 @@ int TestRobustness(int, char*[])
   std::cout << "no lights: PSNR " << psnr << " dB against VTK" << std::endl;
   FX_CHECK(pipeline->GetLastSceneInfo().LightingComplexity == 0, "no lighting");
   FX_CHECK(psnr >= 40.0, "unlit rendering matches VTK");
+
+  // A specular power below 8-bit resolution of power / 128 (0.2; vtkProperty
+  // allows 0..128): it came back 0 and pow(0, 0) blackened the pixels
+  // whose reflection points away from the viewer (39 dB against VTK, whole
+  // pixels black). As VTK within 50 dB and 8 levels.
+  {
+    window->GetRenderers()->RemoveAllItems();
+    vtkNew<vtkRenderer> shiny;
+    window->AddRenderer(shiny);
+    vtkNew<vtkActor> ball;
+    ball->SetMapper(sphereMapper);
+    ball->GetProperty()->SetSpecular(0.3);
+    ball->GetProperty()->SetSpecularPower(0.2);
+    shiny->AddActor(ball);
+    shiny->ResetCamera();
+    window->Render();
+    const auto lowPowerForward = vtkFXScenes::Capture(window);
+    vtkNew<vtkFXPipelinePass> lowPowerPipeline;
+    shiny->SetPass(lowPowerPipeline);
+    window->Render();
+    const auto lowPowerDeferred = vtkFXScenes::Capture(window);
+    const double lowPower = vtkFXScenes::PSNR(lowPowerForward, lowPowerDeferred);
+    const int largest = vtkFXScenes::MaxDifference(lowPowerForward, lowPowerDeferred);
+    std::cout << "specular power 0.2: PSNR " << lowPower << " dB against VTK, largest difference "
+              << largest << " levels" << std::endl;
+    FX_CHECK(lowPower >= 50.0 && largest <= 8, "a small specular power renders as in VTK");
+  }
   return EXIT_SUCCESS;
 }
