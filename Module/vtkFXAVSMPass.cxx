@@ -1125,6 +1125,8 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
     vtkFXRenderUtilities::ReadyQuad(this->LookUpQuad, window, fs);
   if (!program)
   {
+    const float unshadowed[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
+    vtkFXRenderUtilities::ClearTargets(1, unshadowed);
     return;
   }
   depth->Activate();

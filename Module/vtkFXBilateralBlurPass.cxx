@@ -60,7 +60,7 @@ int vtkFXBilateralBlurPass::OutputFormat() const
   }
 }
 
-void vtkFXBilateralBlurPass::RunStage(int mode, vtkRenderer* renderer,
+bool vtkFXBilateralBlurPass::RunStage(int mode, vtkRenderer* renderer,
   vtkTextureObject* input, vtkTextureObject* output, int step, bool packed)
 {
   // (packed: the input carries its guide; one value with its depth, or
@@ -86,7 +86,7 @@ void vtkFXBilateralBlurPass::RunStage(int mode, vtkRenderer* renderer,
     vtkFXRenderUtilities::ReadyQuad(this->Quads[mode], window, fs);
   if (!program)
   {
-    return;
+    return false;
   }
   vtkTextureObject* depth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
   vtkTextureObject* normal = this->GBuffer->GetGeometricNormalTexture();
@@ -118,6 +118,7 @@ void vtkFXBilateralBlurPass::RunStage(int mode, vtkRenderer* renderer,
   {
     this->GuideTexture->Deactivate();
   }
+  return true;
 }
 
 void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
@@ -150,6 +151,14 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   // fetch. One value with its depth (vtkFXSSAOPass), or three with their
   // normal and depth (vtkFXDirectionalOcclusionPass's packing: on llvmpipe
   // at 640x480 about 2 ms against 10 for the guide texture's way).
+  if (source.Packing == 1 && this->NumberOfComponents != source.Components)
+  {
+    // Packed values blurred as plain ones overflow and turn to NaN.
+    vtkErrorMacro("vtkFXBilateralBlurPass: the source packs "
+      << source.Components << " values per texel; NumberOfComponents is "
+      << this->NumberOfComponents << ". Nothing blurred this frame.");
+    return;
+  }
   const bool packed = (this->NumberOfComponents == 1 && source.DepthComponent == 1) ||
     (this->NumberOfComponents == 3 && source.Packing == 1);
   // Intermediate stages keep full precision and values above 1 (the
@@ -168,10 +177,16 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   {
     vtkFXRenderUtilities::EnsureTexture(
       this->GuideTexture, window, width, height, vtkFXRenderUtilities::RGBA32F);
-    this->RunStage(Guide, s->GetRenderer(), input, this->GuideTexture, step, packed);
+    if (!this->RunStage(Guide, s->GetRenderer(), input, this->GuideTexture, step, packed))
+    {
+      return; // no result: consumers read the unblurred source
+    }
   }
-  this->RunStage(HorizontalPass, s->GetRenderer(), input, this->Horizontal, step, packed);
-  this->RunStage(VerticalPass, s->GetRenderer(), this->Horizontal, this->Blurred, step, packed);
+  if (!this->RunStage(HorizontalPass, s->GetRenderer(), input, this->Horizontal, step, packed) ||
+    !this->RunStage(VerticalPass, s->GetRenderer(), this->Horizontal, this->Blurred, step, packed))
+  {
+    return;
+  }
   // Consumers that upsample inline blend neighbours with the hardware.
   this->Blurred->SetMinificationFilter(vtkTextureObject::Linear);
   this->Blurred->SetMagnificationFilter(vtkTextureObject::Linear);
@@ -180,7 +195,11 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   {
     const int format = this->OutputFormat();
     vtkFXRenderUtilities::EnsureTexture(this->Upsampled, window, fullWidth, fullHeight, format);
-    this->RunStage(UpsamplePass, s->GetRenderer(), this->Blurred, this->Upsampled, step, packed);
+    if (!this->RunStage(UpsamplePass, s->GetRenderer(), this->Blurred, this->Upsampled, step, packed))
+    {
+      this->Result = Output();
+      return;
+    }
     this->Result.Texture = this->Upsampled;
     this->Result.Format = format;
   }

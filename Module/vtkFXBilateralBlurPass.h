@@ -123,7 +123,7 @@ protected:
   vtkFXBilateralBlurPass();
   ~vtkFXBilateralBlurPass() override;
 
-  void RunStage(int mode, vtkRenderer* renderer, vtkTextureObject* input,
+  bool RunStage(int mode, vtkRenderer* renderer, vtkTextureObject* input,
     vtkTextureObject* output, int step, bool packed);
   int OutputFormat() const;
 

@@ -203,7 +203,8 @@ std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
   {
     case Declarations:
       // The occlusion texture's layout is vtkFXSSAOPass's (see there).
-      return std::string("uniform sampler2D @occlusion;\nuniform vec2 @scale;\nuniform vec2 @offset;\n") +
+      return std::string("uniform sampler2D @occlusion;\nuniform vec2 @scale;\nuniform vec2 @offset;\n"
+                         "uniform int @written;\n") +
         this->ChannelsReadCode() + (geometric ? "uniform sampler2D @geometric;\n" : "") +
         (bleeding ? "uniform sampler2D @bleeding;\nuniform float @bleedingStrength;\n"
                     "uniform vec2 @bleedingScale;\nuniform vec2 @bleedingOffset;\n"
@@ -222,14 +223,17 @@ std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
     {
       if (this->ShowChannels)
       {
-        return "    ambientVisibility *= clamp(@channels(), "
-               "0.0, 1.0);";
+        return "    if (@written != 0)\n"
+               "    {\n"
+               "      ambientVisibility *= clamp(@channels(), 0.0, 1.0);\n"
+               "    }";
       }
       // The seed's resolve: the channels weighted by the shading normal n's
       // squared clamped cosines with the basis of the geometric normal g.
       // Without a GeometricNormal channel no prop perturbs its normal: g = n
       // and the weights are 1/3 (the channels' mean).
-      std::string code = "    {\n"
+      std::string code = "    if (@written != 0)\n"
+                         "    {\n"
                          "      vec3 channels = @channels();\n"
                          "      vec3 g = n;\n";
       if (geometric)

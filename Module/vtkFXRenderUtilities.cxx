@@ -102,6 +102,17 @@ bool vtkFXRenderUtilities::EnsureTexture(vtkSmartPointer<vtkTextureObject>& text
   return true;
 }
 
+void vtkFXRenderUtilities::ClearTargets(int targets, const float value[4])
+{
+  // (glClearBuffer ignores the clear colour, so vtkOpenGLState's copy of
+  // it stays right)
+  const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  for (int i = 0; i < targets; ++i)
+  {
+    glClearBufferfv(GL_COLOR, i, i == 0 ? value : zero);
+  }
+}
+
 vtkShaderProgram* vtkFXRenderUtilities::ReadyQuad(
   FullScreenQuad& quad, vtkOpenGLRenderWindow* window, const std::string& fragmentSource)
 {

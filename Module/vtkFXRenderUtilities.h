@@ -95,6 +95,13 @@ public:
     FullScreenQuad& quad, vtkOpenGLRenderWindow* window, const std::string& fragmentSource);
 
   /**
+   * Fills the bound framebuffer's first colour target with `value` and its
+   * other `targets - 1` with 0: what a pass writes when its shader failed,
+   * so that consumers read a defined "no effect" instead of old texels.
+   */
+  static void ClearTargets(int targets, const float value[4]);
+
+  /**
    * Releases a quad made by ReadyQuad and forgets its source, so that the
    * next ReadyQuad builds it again.
    */

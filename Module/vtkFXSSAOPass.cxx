@@ -105,12 +105,16 @@ std::string vtkFXSSAOPass::GetCompositeCode(int hook)
       // Texel i of a reduced-resolution occlusion holds G-buffer pixel
       // i * step (not the centre of a step x step block): pixel p reads
       // texture coordinate (p / step + 0.5) / size = texCoord * scale + offset.
-      return "uniform sampler2D @occlusion;\nuniform vec2 @scale;\nuniform vec2 @offset;\n";
+      // (@written: 0 when no occlusion texture was written this frame, see
+      // BindCompositeResources)
+      return "uniform sampler2D @occlusion;\nuniform vec2 @scale;\nuniform vec2 @offset;\n"
+             "uniform int @written;\n";
     case Ambient:
       // Sampled bilinearly: a depth-aware upsample here cost a third more
       // composite time at 1280x720 for no measurable gain against the
       // ray-traced reference (vtkfx-bench ao).
-      return "    {\n"
+      return "    if (@written != 0)\n"
+             "    {\n"
              "      float ao = texture(@occlusion, texCoord * @scale + @offset).r;\n"
              "      ambientVisibility *= clamp(isnan(ao) ? 1.0 : ao, 0.0, 1.0);\n"
              "    }";
@@ -125,6 +129,13 @@ void vtkFXSSAOPass::BindCompositeResources(vtkShaderProgram* program, const std:
   if (!source.Texture)
   {
     source = this->GetOutput("occlusion");
+  }
+  // Nothing written (the pass did not run, say in another stage): the
+  // composite's code reads no occlusion rather than whatever unit 0 holds.
+  const std::string written = prefix + "written";
+  if (program->IsUniformUsed(written.c_str()))
+  {
+    program->SetUniformi(written.c_str(), source.Texture ? 1 : 0);
   }
   if (!source.Texture)
   {
@@ -311,6 +322,13 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
     vtkFXRenderUtilities::ReadyQuad(this->Quad, window, fs);
   if (!program)
   {
+    // Open everywhere (what the shader writes where there is no surface),
+    // so that the composite shows no occlusion rather than old texels.
+    const float pack12Ones = 4095.0f * 4096.0f + 4095.0f, pack12Halves = 2048.0f * 4096.0f + 2048.0f;
+    const float open1[4] = { 1.0f, 0.0f, 0.0f, 1.0f };
+    const float open3[4] = { pack12Ones, 1.0f, pack12Halves, 0.0f };
+    vtkFXRenderUtilities::ClearTargets(
+      static_cast<int>(targets.size()), this->Channels == 3 ? open3 : open1);
     return;
   }
   depth->Activate();

@@ -344,6 +344,25 @@ int TestSSAO(int, char*[])
         EXIT_SUCCESS, "");
   }
 
+  // 2c. An occlusion pass that wrote nothing this frame (moved to the
+  // Composite stage, where it does not run): the composite reads no
+  // occlusion, not whatever texture unit 0 holds: the image is the one
+  // without occlusion.
+  {
+    Setup s = MakeSetup(window);
+    AddCrease(s);
+    s.Pipeline->AmbientOcclusionOff();
+    window->Render();
+    const auto without = vtkFXScenes::Capture(window);
+    s.Pipeline->AmbientOcclusionOn();
+    s.Pipeline->GetSSAOPass()->SetStage(vtkFXEffectPass::Composite);
+    window->Render();
+    const int largest = vtkFXScenes::MaxDifference(without, vtkFXScenes::Capture(window));
+    std::cout << "occlusion pass that did not run: image off the one without occlusion by "
+              << largest << " levels" << std::endl;
+    FX_CHECK(largest <= 1, "an occlusion texture nobody wrote was read");
+  }
+
   // 3. The horizon-based estimator (GTAO, the default), for each falloff:
   // a flat plane seen from 70 to 4 degrees reads at least 0.92 (see below). Its raw per-pixel values average to
   // the visibility only over slice directions (they exceed 1 on tilted open
