@@ -77,6 +77,11 @@ vtkFXSSAOPass::vtkFXSSAOPass()
 
 vtkFXSSAOPass::~vtkFXSSAOPass() = default;
 
+bool vtkFXSSAOPass::HasWork(const vtkFXSceneInfo& scene)
+{
+  return scene.LightingComplexity > 0 && this->Superclass::HasWork(scene);
+}
+
 unsigned int vtkFXSSAOPass::GetRequiredChannels()
 {
   return GB::ChannelBit(GB::Normal) | GB::ChannelBit(GB::LinearDepth);

@@ -153,6 +153,12 @@ public:
   vtkGetMacro(EffectiveRadius, double);
 
   unsigned int GetRequiredChannels() override;
+  /**
+   * Some opaque prop and some light on: the occlusion darkens light (the
+   * ambient and, by a strength, the diffuse term), so without any there is
+   * nothing to darken and the pass, its blur and its channels are left out.
+   */
+  bool HasWork(const vtkFXSceneInfo& scene) override;
   bool GetReadsGeometricNormal() override { return true; }
   Output GetOutput(const char* name) override;
   std::string GetCompositeCode(int hook) override;

@@ -131,7 +131,9 @@ vtkTextureObject* vtkFXToonPass::GetEdgeTexture()
 
 bool vtkFXToonPass::HasWork(const vtkFXSceneInfo& scene)
 {
-  return (this->Bands || this->FeatureLines) && this->Superclass::HasWork(scene);
+  // Bands quantise light: with no light on there is none to band.
+  const bool bands = this->Bands && scene.LightingComplexity > 0;
+  return (bands || this->FeatureLines) && this->Superclass::HasWork(scene);
 }
 
 unsigned int vtkFXToonPass::GetRequiredChannels()

@@ -7,6 +7,7 @@
 // invisible and a scene with no light at all matches VTK's forward render.
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
+#include "vtkFXToonPass.h"
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
 
@@ -167,6 +168,32 @@ int TestRobustness(int, char*[])
   std::cout << "no lights: PSNR " << psnr << " dB against VTK" << std::endl;
   FX_CHECK(pipeline->GetLastSceneInfo().LightingComplexity == 0, "no lighting");
   FX_CHECK(psnr >= 40.0, "unlit rendering matches VTK");
+  // Occlusion darkens light and toon bands quantise it: with none on, both
+  // are left out with the channels they would read (lines alone would stay).
+  for (bool directional : { false, true })
+  {
+    vtkNew<vtkFXPipelinePass> withEffects;
+    if (directional)
+    {
+      withEffects->DirectionalOcclusionOn();
+    }
+    else
+    {
+      withEffects->AmbientOcclusionOn();
+    }
+    vtkNew<vtkFXToonPass> bands;
+    bands->FeatureLinesOff();
+    withEffects->AddEffect("toon", bands);
+    renderer->SetPass(withEffects);
+    window->Render();
+    const std::string passes = vtkFXTest::Passes(withEffects);
+    std::cout << "no lights, " << (directional ? "directional occlusion" : "ambient occlusion")
+              << " and toon bands: passes " << passes << std::endl;
+    FX_CHECK(passes.find("ssao") == std::string::npos && passes.find("do") == std::string::npos &&
+        passes.find("toon") == std::string::npos &&
+        !(withEffects->GetGBufferChannels() & vtkFXGBufferPass::ChannelBit(vtkFXGBufferPass::LinearDepth)),
+      "effects without light to act on ran: " << passes);
+  }
 
   // A specular power below 8-bit resolution of power / 128 (0.2; vtkProperty
   // allows 0..128): it came back 0 and pow(0, 0) blackened the pixels
