@@ -95,13 +95,16 @@ bool vtkFXBloomPass::HasWork(const vtkFXSceneInfo& scene)
     }
   }
   emissive.GetBounds(this->EmissiveBounds); // uninitialized when none has bounds
-  const bool source = (this->UseEmission && !scene.EmissiveProps.empty()) || this->Threshold >= 0.0;
+  // The emission channel only when something emits: a threshold alone
+  // reads the lit image.
+  this->ReadsEmission = this->UseEmission && !scene.EmissiveProps.empty();
+  const bool source = this->ReadsEmission || this->Threshold >= 0.0;
   return source && this->Intensity > 0.0 && this->Superclass::HasWork(scene);
 }
 
 unsigned int vtkFXBloomPass::GetRequiredChannels()
 {
-  return this->UseEmission ? GB::ChannelBit(GB::Emission) : 0u;
+  return this->ReadsEmission ? GB::ChannelBit(GB::Emission) : 0u;
 }
 
 int vtkFXBloomPass::GetNumberOfLevels(int width, int height) const
@@ -200,7 +203,7 @@ vtkShaderProgram* vtkFXBloomPass::ReadyProgram(
 bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject* color, int levels)
 {
   vtkTextureObject* emission =
-    this->UseEmission && this->GBuffer ? this->GBuffer->GetChannelTexture(GB::Emission) : nullptr;
+    this->ReadsEmission && this->GBuffer ? this->GBuffer->GetChannelTexture(GB::Emission) : nullptr;
   const bool threshold = this->Threshold >= 0.0 && color;
   if (!emission && !threshold)
   {
@@ -365,7 +368,8 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
     vtkWarningMacro("vtkFXBloomPass's threshold reads the lit image of an HDR target "
                     "(vtkFXPipelinePass provides one); only emission glows.");
   }
-  vtkTextureObject* emission = this->GBuffer ? this->GBuffer->GetChannelTexture(GB::Emission) : nullptr;
+  vtkTextureObject* emission =
+    this->ReadsEmission && this->GBuffer ? this->GBuffer->GetChannelTexture(GB::Emission) : nullptr;
   vtkTextureObject* full = emission ? emission : color;
   if (!full)
   {

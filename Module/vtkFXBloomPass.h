@@ -27,7 +27,9 @@
  * with a threshold (GetNeedsHDRTarget).
  * Work: when a visible prop is emissive (vtkFXSceneInfo::EmissiveProps) or
  * a threshold is set; otherwise the pass, its textures and the emission
- * channel are left out and the image is exactly the one without bloom.
+ * channel are left out and the image is exactly the one without bloom. The
+ * emission channel is read (and allocated) only while some visible prop
+ * emits.
  * Cost: one pass per level down and up, drawn only over the part of the
  * image the glow can reach (the emissive props' screen rectangle widened by
  * 4 deviations of the widest level; the whole image with a threshold), the first at half resolution with
@@ -167,6 +169,7 @@ protected:
   double Threshold = -1.0;
   double Knee = 0.5;
   bool FireflySuppression = true;
+  bool ReadsEmission = true; // this frame: UseEmission and some prop emits (HasWork)
 
   std::vector<std::unique_ptr<Level>> Levels;
   // World bounds of the emissive props (from HasWork), and the pixels of

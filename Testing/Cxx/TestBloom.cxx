@@ -324,6 +324,10 @@ int CheckThreshold(vtkRenderWindow* window)
   window->Render();
   const std::string passes = vtkFXTest::Passes(pipeline);
   FX_CHECK(passes.find("hdr-target") != std::string::npos, passes);
+  // Nothing emits: the threshold reads the lit image, and no emission
+  // channel is allocated for it.
+  FX_CHECK(!(pipeline->GetGBufferChannels() & GB::ChannelBit(GB::Emission)),
+    "an emission channel for a threshold alone");
   const double glow = 4.0 * Sum(vtkFXTest::Download(bloom->GetGlowTexture(), 4), 4, 3);
   const double expected = 3.0 * 40.0 * 40.0 * (1.0 + 0.045);
   std::cout << "threshold: glow " << glow << ", expected " << expected << " (ratio "
