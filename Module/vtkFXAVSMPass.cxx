@@ -18,6 +18,7 @@
 #include "vtkProp.h"
 #include "vtkPropCollection.h"
 #include "vtkOpenGLFramebufferObject.h"
+#include "vtkPixelBufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
@@ -262,9 +263,16 @@ bool vtkFXAVSMPass::GetTexelCurve(
   const bool slices = this->Representation == RegularSlices;
   for (size_t k = 0; k < this->Curves.size(); ++k)
   {
-    float texel[4];
-    glGetTextureSubImage(this->Curves[k]->GetHandle(), 0, x, y, 0, 1, 1, 1, GL_RGBA, GL_FLOAT,
-      sizeof(texel), texel);
+    float texel[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+    if (glGetTextureSubImage) // GL 4.5 / ARB_get_texture_sub_image: one texel
+    {
+      glGetTextureSubImage(this->Curves[k]->GetHandle(), 0, x, y, 0, 1, 1, 1, GL_RGBA, GL_FLOAT,
+        sizeof(texel), texel);
+    }
+    else if (!this->ReadTexel(this->Curves[k], x, y, texel)) // the whole texture
+    {
+      return false;
+    }
     const bool depthTexture = !slices && k < this->Curves.size() / 2;
     for (float v : texel)
     {
@@ -272,6 +280,25 @@ bool vtkFXAVSMPass::GetTexelCurve(
     }
   }
   return true;
+}
+
+bool vtkFXAVSMPass::ReadTexel(vtkTextureObject* texture, int x, int y, float texel[4])
+{
+  vtkPixelBufferObject* pbo = texture->Download();
+  if (!pbo)
+  {
+    return false;
+  }
+  const bool floats = pbo->GetType() == VTK_FLOAT;
+  if (floats)
+  {
+    const auto* values = static_cast<const float*>(pbo->MapPackedBuffer());
+    const size_t first = 4 * (static_cast<size_t>(y) * texture->GetWidth() + x);
+    std::copy_n(values + first, 4, texel);
+    pbo->UnmapPackedBuffer();
+  }
+  pbo->Delete();
+  return floats;
 }
 
 bool vtkFXAVSMPass::GetLongestListTexel(int& x, int& y)

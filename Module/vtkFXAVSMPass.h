@@ -322,6 +322,9 @@ protected:
     bool perspective, const double nearFar[2]);
   void ComputeCasterDepthRange(LightView& view) const; // its SliceRange
   bool EnsureBuffers();
+  // Texel (x, y) of an RGBA32F texture, by downloading it (GetTexelCurve's
+  // way without GL 4.5's glGetTextureSubImage).
+  static bool ReadTexel(vtkTextureObject* texture, int x, int y, float texel[4]);
   void BindBuffers(vtkShaderProgram* program);
   void Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
   void Resolve(vtkOpenGLRenderWindow* window);

@@ -371,6 +371,21 @@ int CheckArrivalOrder(vtkRenderWindow* window)
       {
         results[order].push_back(vtkFXTest::Download(avsm->GetCurveTexture(k), 4));
       }
+      // GetTexelCurve (vtkfx-bench's ray plot) reads the same curve as the
+      // textures hold, at the texel with the longest list.
+      int x = 0, y = 0;
+      std::vector<double> depths, tau;
+      FX_CHECK(avsm->GetLongestListTexel(x, y) && avsm->GetTexelCurve(x, y, depths, tau) &&
+          static_cast<int>(depths.size()) == nodes && static_cast<int>(tau.size()) == nodes,
+        "AVSM-" << nodes << ": no curve at the longest list's texel");
+      const size_t texel = static_cast<size_t>(y) * avsm->GetCurveTexture(0)->GetWidth() + x;
+      for (int i = 0; i < nodes; ++i)
+      {
+        const auto& depthTexture = results[order][1 + i / 4];
+        const auto& tauTexture = results[order][1 + nodes / 4 + i / 4];
+        FX_CHECK(depths[i] == depthTexture[4 * texel + i % 4] && tau[i] == tauTexture[4 * texel + i % 4],
+          "AVSM-" << nodes << ": GetTexelCurve node " << i << " differs from the texture");
+      }
     }
     // Texels whose curve uses every node (at least nodes / 2 segments).
     const std::vector<float>& lastDepths = results[0][results[0].size() / 2];
