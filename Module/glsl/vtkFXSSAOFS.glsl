@@ -201,12 +201,15 @@ float fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec4 tile)
   // bright by up to 0.08 in a band, the step by about half that; the step
   // also measured 0.5 to 1.3 dB closer to the ray-traced reference on three
   // of the four bench scenes).
+  // Distances are measured in units of R (a sample's offset divided by R
+  // before it is squared): the same numbers at any scene scale, where
+  // world-unit squares underflow below 1e-15 units and overflow above 1e19.
 #if FX_FALLOFF == 1
-  float falloffRange = 0.615 * fxRadius;
-  float falloffMul = -1.0 / falloffRange;
-  float falloffAdd = (fxRadius - falloffRange) / falloffRange + 1.0;
+  const float falloffRange = 0.615;
+  const float falloffMul = -1.0 / falloffRange;
+  const float falloffAdd = (1.0 - falloffRange) / falloffRange + 1.0;
 #endif
-  float radiusSquared = fxRadius * fxRadius;
+  float inverseRadius = 1.0 / fxRadius;
   // The tile entry: the first slice's direction, at (jitter / FX_SLICES) x pi
   // for the entry's jitter within its stratum, and the steps' offset (both
   // computed once on the CPU, vtkFXSSAOPass::SetKernelUniforms). The offset
@@ -264,7 +267,7 @@ float fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec4 tile)
         }
         vec3 o, d;
         fxTexelRay(q, o, d);
-        vec3 delta = o + sampleDepth * d - p;
+        vec3 delta = (o + sampleDepth * d - p) * inverseRadius;
         float distanceSquared = dot(delta, delta);
         // The texel is off the slice by up to half a texel: measure its
         // elevation within the slice plane, or a flat receiver's own
@@ -274,7 +277,7 @@ float fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec4 tile)
         float offSlice = dot(delta, axis);
         float c = dot(delta, view) * inversesqrt(max(distanceSquared - offSlice * offSlice, 1e-30));
 #if FX_FALLOFF == 0
-        float weight = distanceSquared < radiusSquared ? 1.0 : 0.0;
+        float weight = distanceSquared < 1.0 ? 1.0 : 0.0;
 #else
         float weight = clamp(sqrt(distanceSquared) * falloffMul + falloffAdd, 0.0, 1.0);
 #endif

@@ -1,7 +1,9 @@
 // Scale invariance of the occlusion, for both falloffs (each with its
 // default preset: the horizon estimator for Binary and CubeRoot, with 16
 // and 8 fetches): scene:corner and the bunny scaled by
-// 1e-6 and by 1e6, translated 1e6 units from the origin (camera following),
+// 1e-6, 1e6, 1e-15 and 1e18 (below 1e-14 world-unit squares of the horizon
+// search underflowed: 14-25 dB before its distances were taken in units of
+// R), translated 1e6 units from the origin (camera following),
 // seen in parallel projection, and with a near/far ratio of 1e-6, give an
 // occlusion image (the pipeline's occlusion view) within PSNR >= 40 dB of the
 // unchanged one over the pixels that show data. Radii, biases and blur
@@ -56,6 +58,8 @@ int TestSSAOScale(int, char*[])
   const Variant variants[] = {
     { "scaled 1e-6", 1e-6, 0.0, 0.0 },
     { "scaled 1e6", 1e6, 0.0, 0.0 },
+    { "scaled 1e-15", 1e-15, 0.0, 0.0 },
+    { "scaled 1e18", 1e18, 0.0, 0.0 },
     { "scaled 2^-20", std::ldexp(1.0, -20), 0.0, 0.0 },
     { "scaled 2^20", std::ldexp(1.0, 20), 0.0, 0.0 },
     { "translated 1e6", 1.0, 1e6, 0.0 },
