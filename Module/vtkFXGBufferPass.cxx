@@ -159,6 +159,10 @@ int vtkFXGBufferPass::GetChannelFormat(int channel) const
   {
     return vtkFXRenderUtilities::RGBA16F;
   }
+  if ((channel == Albedo || channel == Specular || channel == Ambient) && this->HDRMaterial)
+  {
+    return vtkFXRenderUtilities::RGBA16F;
+  }
   return (channel >= 0 && channel < NumberOfChannels) ? ChannelFormats[channel] : -1;
 }
 
@@ -690,6 +694,7 @@ void vtkFXGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RequiredChannels: " << this->RequiredChannels << "\n";
   os << indent << "HDREmission: " << this->HDREmission << "\n";
+  os << indent << "HDRMaterial: " << this->HDRMaterial << "\n";
   os << indent << "AllocatedChannels: " << this->AllocatedChannels << "\n";
   os << indent << "BytesPerPixel: " << this->GetBytesPerPixel() << "\n";
   os << indent << "DelegatePass: " << this->DelegatePass << "\n";

@@ -23,6 +23,8 @@
  * - LinearDepth  R32F    -z in view coordinates (world units), 0 = no surface.
  * - Specular     RGBA8   specular colour x intensity; alpha = sqrt(power / 128).
  * - Ambient      RGBA8   VTK's ambient term (ambient intensity x colour).
+ *                        Albedo, Specular and Ambient are RGBA16F with
+ *                        HDRMaterial on, for colours above 1.
  * - Emission     RGBA8   light-independent colour: the colour of unlit
  *                        fragments; for lit ones the prop's EMISSIVE_COLOR
  *                        (0 without). RGBA16F with HDREmission on, so that
@@ -158,6 +160,16 @@ public:
   vtkBooleanMacro(HDREmission, bool);
 
   /**
+   * Keep the material channels (Albedo, Specular, Ambient) in 16-bit floats
+   * (RGBA16F, 8 bytes each) instead of RGBA8, for colours above 1 (default
+   * off; vtkProperty does not clamp them and VTK's shaders use them as
+   * given). vtkFXPipelinePass turns it on while some visible prop has one.
+   */
+  vtkSetMacro(HDRMaterial, bool);
+  vtkGetMacro(HDRMaterial, bool);
+  vtkBooleanMacro(HDRMaterial, bool);
+
+  /**
    * Light a prop emits of its own, linear RGB (may exceed 1), set in the
    * prop's property keys (vtkProp::SetPropertyKeys): written to the
    * emission channel for its lit fragments and added to its lit colour by
@@ -249,6 +261,7 @@ protected:
 
   vtkRenderPass* DelegatePass = nullptr;
   bool HDREmission = false;
+  bool HDRMaterial = false;
   unsigned int RequiredChannels;
   unsigned int AllocatedChannels = 0;
   unsigned int NumberOfTargets = 0;

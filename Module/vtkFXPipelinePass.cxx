@@ -51,6 +51,12 @@ void AddMaterialTerms(vtkActor* actor, vtkFXSceneInfo& scene, bool& emissive)
     {
       continue;
     }
+    // vtkProperty does not clamp colours, and VTK's shaders use them as
+    // given: above 1 the G-buffer's 8 bits would clamp them.
+    for (const double* c : { p->GetDiffuseColor(), p->GetAmbientColor(), p->GetSpecularColor() })
+    {
+      scene.AnyColorAboveOne = scene.AnyColorAboveOne || c[0] > 1.0 || c[1] > 1.0 || c[2] > 1.0;
+    }
     if (!p->GetLighting())
     {
       emissive = true; // an unlit colour is light-independent
@@ -573,6 +579,7 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
     }
     this->GBufferPass->SetRequiredChannels(channels);
     this->GBufferPass->SetHDREmission(scene.AnyEmissionAboveOne);
+    this->GBufferPass->SetHDRMaterial(scene.AnyColorAboveOne);
     this->Sequence->AddPass("gbuffer", this->GBufferPass);
     this->AddEffectPasses(this->Sequence, order, E::AfterGBuffer);
   }
