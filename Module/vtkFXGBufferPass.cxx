@@ -582,7 +582,7 @@ bool vtkFXGBufferPass::PostReplaceShaderValues(std::string&, std::string&,
   const bool impostor = Contains(fragmentShader, "ZCalcR");
   const char* linearDepth = impostor ? "fxLinearDepthFromWindow(gl_FragDepth)"
     : Contains(fragmentShader, "vec4 vertexVC =") ? "-vertexVC.z"
-                                                   : "fxLinearDepthFromWindow(gl_FragCoord.z)";
+                                                   : "fxLinearDepthOfFragment()";
 
   // VTK 9.1 applies actor textures after lighting: lit RGBA * texel, with no
   // clamp, so texel x (ambient + diffuse + specular) distributes exactly over

@@ -15,6 +15,21 @@ float fxLinearDepthFromWindow(float windowDepth)
   return -z;
 }
 
+// The fragment's own linear depth, for unlit primitives drawn where they
+// are: in perspective from its clip w = P32 z + P33 (gl_FragCoord.w is
+// 1 / w, interpolated exactly), since inverting the window depth cancels
+// catastrophically once near/far is below about 1e-7 (the window depth
+// rounds to 1); in parallel projection (P32 = 0) the inversion is linear
+// and exact enough.
+float fxLinearDepthOfFragment()
+{
+  if (fxProjectionZ.z != 0.0)
+  {
+    return (fxProjectionZ.w - 1.0 / gl_FragCoord.w) / fxProjectionZ.z;
+  }
+  return fxLinearDepthFromWindow(gl_FragCoord.z);
+}
+
 // Light the prop emits of its own (vtkFXGBufferPass::EMISSIVE_COLOR), for
 // its lit fragments' emission channel.
 uniform vec3 fxEmissive;

@@ -235,10 +235,12 @@ int TestGBufferGeometry(int, char*[])
     { "plane", false, 1.0, 0.0, 0.0, true, false },
     { "plane far from origin 1e6", false, 1.0, 1e6, 0.0, true, false },
     { "parallel plane far from origin 1e6", true, 1.0, 1e6, 0.0, true, false },
-    // Unlit: depth from inverting the projection of the 32-bit float window
-    // depth, relative error ~ 6e-8 * far / near, within 1e-4 for VTK's
-    // automatic clipping range.
+    // Unlit: no view-space position in VTK's shader; in perspective the
+    // fragment's clip w (exact at any near/far: inverting the window depth
+    // gave infinite or negative depths beyond about 1e-7), in parallel
+    // projection the window depth inverted (linear).
     { "unlit plane", false, 1.0, 0.0, 0.0, true, true },
+    { "unlit plane, near/far 1e-8", false, 1.0, 0.0, 1e-8, true, true },
     { "unlit parallel plane", true, 1.0, 0.0, 0.0, true, true },
   };
   // One window for all cases: each window is an X connection.
