@@ -282,6 +282,14 @@ bool vtkFXAVSMPass::GetTexelCurve(
   return true;
 }
 
+int vtkFXAVSMPass::VisibilityFormat() const
+{
+  const int channels = this->VisibilityChannels();
+  return channels == 1 ? vtkFXRenderUtilities::R32F
+    : channels == 2    ? vtkFXRenderUtilities::RG32F
+                       : vtkFXRenderUtilities::RGBA32F;
+}
+
 bool vtkFXAVSMPass::ReadTexel(vtkTextureObject* texture, int x, int y, float texel[4])
 {
   vtkPixelBufferObject* pbo = texture->Download();
@@ -354,7 +362,7 @@ vtkFXEffectPass::Output vtkFXAVSMPass::GetOutput(const char* name)
   {
     out.Texture = this->Visibility;
     out.Components = this->VisibilityChannels();
-    out.Format = out.Components == 1 ? vtkFXRenderUtilities::R32F : vtkFXRenderUtilities::RGBA32F;
+    out.Format = this->VisibilityFormat();
   }
   return out;
 }
@@ -1125,7 +1133,7 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
   vtkTextureObject* depth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
   vtkFXRenderUtilities::EnsureTexture(this->Visibility, window, static_cast<int>(depth->GetWidth()),
     static_cast<int>(depth->GetHeight()),
-    this->VisibilityChannels() == 1 ? vtkFXRenderUtilities::R32F : vtkFXRenderUtilities::RGBA32F);
+    this->VisibilityFormat());
   std::string fs = vtkFXAVSMLookupFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
     (this->Exact ? StorageExtension : std::string("//VTK::System::Dec\n")) +

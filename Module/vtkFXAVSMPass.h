@@ -334,7 +334,13 @@ protected:
   void SetCurveUniforms(vtkShaderProgram* program);
   void SetCaptureViewUniforms(vtkShaderProgram* program);
   void SetViewUniforms(vtkShaderProgram* program);
-  int VisibilityChannels() const { return this->CastingLights.size() > 1 ? 4 : 1; }
+  // One channel per casting light (1, 2 or 4: R32F, RG32F, RGBA32F).
+  int VisibilityChannels() const
+  {
+    const size_t lights = this->CastingLights.size();
+    return lights <= 1 ? 1 : lights == 2 ? 2 : 4;
+  }
+  int VisibilityFormat() const;
   static double LightDepthFromNDC(const LightView& view, double ndcZ); // vtkFXAVSMLightDepth.glsl
   void ReleaseCurveUnits();
   void AbandonFrame(vtkOpenGLRenderWindow* window); // no shadows this frame

@@ -463,9 +463,13 @@ int CheckTwoLights(vtkRenderWindow* window)
   FX_CHECK(avsm->GetNumberOfCastingLights() == 2 && avsm->GetCastingLightIndex(0) == 0 &&
       avsm->GetCastingLightIndex(1) == 1,
     "two casting lights expected, brightest first");
-  const auto v = vtkFXTest::Download(avsm->GetOutputTexture("visibility"), 4);
+  // One channel per casting light: two lights, two channels (RG32F).
+  vtkTextureObject* visibility = avsm->GetOutputTexture("visibility");
+  FX_CHECK(visibility && visibility->GetComponents() == 2,
+    "two casting lights: a two-channel visibility");
+  const auto v = vtkFXTest::Download(visibility, 2);
   std::vector<float> channel[2];
-  for (size_t i = 0; i + 3 < v.size(); i += 4)
+  for (size_t i = 0; i + 1 < v.size(); i += 2)
   {
     channel[0].push_back(v[i]);
     channel[1].push_back(v[i + 1]);
