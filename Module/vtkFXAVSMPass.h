@@ -37,8 +37,8 @@
  * The look-up runs per G-buffer pixel (Bilinear: four texels blended, or
  * the nearest, in the view that sees the receiver) and writes each casting
  * light's visibility at the receiver, the output "visibility" (full
- * resolution; R32F for one casting light, RGBA32F with a channel per light
- * for more); in the composite it scales that light's contribution
+ * resolution, a channel per casting light: R32F for one, RG32F for two,
+ * RGBA32F for three or four); in the composite it scales that light's contribution
  * (LightVisibility hook).
  *
  * Work: some prop is translucent, some is opaque (a receiver) and a light
