@@ -124,6 +124,22 @@ float LowestOnPlane(const std::vector<float>& ao,
 
 }
 
+namespace
+{
+// The crease of AddCrease in `s`, its occlusion pass set to `method`,
+// `falloff` and `radius`.
+vtkFXSSAOPass* CreaseOcclusion(Setup& s, int method, int falloff, double radius)
+{
+  AddCrease(s);
+  vtkFXSSAOPass* ssao = s.Pipeline->GetSSAOPass();
+  ssao->SetMethod(method);
+  ssao->SetFalloff(falloff);
+  ssao->SetRadius(radius);
+  return ssao;
+}
+
+}
+
 int TestSSAO(int, char*[])
 {
   auto window = vtkFXTest::MakeWindow(Width, Height);
@@ -175,11 +191,7 @@ int TestSSAO(int, char*[])
   {
     const bool horizon = method == vtkFXSSAOPass::Horizon;
     Setup s = MakeSetup(window);
-    AddCrease(s);
-    vtkFXSSAOPass* ssao = s.Pipeline->GetSSAOPass();
-    ssao->SetMethod(method);
-    ssao->SetFalloff(falloff);
-    ssao->SetRadius(radius);
+    vtkFXSSAOPass* ssao = CreaseOcclusion(s, method, falloff, radius);
     ssao->SetNumberOfSamples(horizon ? (falloff == vtkFXSSAOPass::Binary ? 16 : 8) : 64);
     ssao->SetHalfResolution(half);
     // The pipeline's own configuration first: the blur leaves the result at
@@ -329,11 +341,7 @@ int TestSSAO(int, char*[])
   for (double extreme : { 1e-35, 1e35 })
   {
     Setup s = MakeSetup(window);
-    AddCrease(s);
-    vtkFXSSAOPass* ssao = s.Pipeline->GetSSAOPass();
-    ssao->SetMethod(method);
-    ssao->SetFalloff(falloff);
-    ssao->SetRadius(extreme);
+    vtkFXSSAOPass* ssao = CreaseOcclusion(s, method, falloff, extreme);
     window->Render();
     const bool horizon = method == vtkFXSSAOPass::Horizon;
     std::cout << (horizon ? "horizon" : "hemisphere") << ", " << falloffName(falloff)
