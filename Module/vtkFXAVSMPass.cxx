@@ -826,13 +826,30 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
   glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 8, zeros);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 
-  vtkFXRenderUtilities::EnsureTexture(this->CaptureTarget, window, this->AtlasSize[0],
-    this->AtlasSize[1], vtkFXRenderUtilities::R8);
   {
     // Every fragment counts: no depth test, no culling by depth; nothing
-    // is drawn (the capture discards). Each view renders into its square
+    // is drawn (the capture discards), so the framebuffer has no
+    // attachment, only the atlas's size (GL 4.3's default width and
+    // height): no texture nobody reads. Each view renders into its square
     // of the atlas (the viewport), from its camera.
-    vtkFXRenderUtilities::RenderTargetScope target(window, this->CaptureFrameBuffer, this->CaptureTarget);
+    vtkOpenGLState* glState = window->GetState();
+    glState->PushFramebufferBindings();
+    if (!this->CaptureFrameBuffer)
+    {
+      this->CaptureFrameBuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      this->CaptureFrameBuffer->SetContext(window);
+    }
+    this->CaptureFrameBuffer->Bind();
+    glFramebufferParameteri(GL_DRAW_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_WIDTH, this->AtlasSize[0]);
+    glFramebufferParameteri(GL_DRAW_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_HEIGHT, this->AtlasSize[1]);
+    this->CaptureFrameBuffer->ActivateDrawBuffers(0u);
+    vtkOpenGLState::ScopedglViewport viewport(glState);
+    vtkOpenGLState::ScopedglEnableDisable depthTest(glState, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable blend(glState, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable scissor(glState, GL_SCISSOR_TEST);
+    glState->vtkglDisable(GL_DEPTH_TEST);
+    glState->vtkglDisable(GL_BLEND);
+    glState->vtkglDisable(GL_SCISSOR_TEST);
     vtkOpenGLState::ScopedglDepthMask depthMask(window->GetState());
     window->GetState()->vtkglDepthMask(GL_FALSE);
     vtkCamera* viewer = ren->GetActiveCamera();
@@ -853,6 +870,7 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
     this->PostRender(&state);
     ren->SetActiveCamera(viewer);
     viewer->UnRegister(this);
+    glState->PopFramebufferBindings();
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 
@@ -1291,7 +1309,6 @@ void vtkFXAVSMPass::ReleaseGraphicsResources(vtkWindow* w)
     vtkFXRenderUtilities::Release(t, w);
   }
   this->Curves.clear();
-  vtkFXRenderUtilities::Release(this->CaptureTarget, w);
   vtkFXRenderUtilities::Release(this->Visibility, w);
   vtkFXRenderUtilities::Release(this->CaptureFrameBuffer, w);
   vtkFXRenderUtilities::Release(this->ResolveFrameBuffer, w);

@@ -381,7 +381,6 @@ protected:
   unsigned int Buffers[4] = { 0, 0, 0, 0 }; // heads, nodes, counter, counts per texel
   vtkIdType LongestList = 0;                // of the last capture
   vtkIdType BufferTexels = 0;
-  vtkSmartPointer<vtkTextureObject> CaptureTarget;
   vtkSmartPointer<vtkOpenGLFramebufferObject> CaptureFrameBuffer;
   std::vector<vtkSmartPointer<vtkTextureObject>> Curves; // depths then optical depths
   vtkSmartPointer<vtkOpenGLFramebufferObject> ResolveFrameBuffer;
