@@ -168,11 +168,8 @@ void vtkFXHDRTargetPass::Render(const vtkRenderState* s)
     this->Color, window, width, height, vtkFXRenderUtilities::RGBA16F);
   vtkFXRenderUtilities::EnsureTexture(this->Depth, window, width, height, depthFormat);
   this->DepthFormat = depthFormat;
-  if (!this->FrameBuffer)
-  {
-    this->FrameBuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    this->FrameBuffer->SetContext(window);
-  }
+  // (its recorded size is what VTK's translucent passes draw at)
+  vtkFXRenderUtilities::FitFramebuffer(this->FrameBuffer, window, width, height);
 
   state->PushFramebufferBindings();
   this->FrameBuffer->Bind();

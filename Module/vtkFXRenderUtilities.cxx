@@ -102,6 +102,25 @@ bool vtkFXRenderUtilities::EnsureTexture(vtkSmartPointer<vtkTextureObject>& text
   return true;
 }
 
+void vtkFXRenderUtilities::FitFramebuffer(vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
+  vtkOpenGLRenderWindow* window, int width, int height)
+{
+  if (framebuffer)
+  {
+    int last[2] = { -1, -1 };
+    framebuffer->GetLastSize(last[0], last[1]);
+    if (last[0] >= 0 && (last[0] != width || last[1] != height))
+    {
+      Release(framebuffer, window);
+    }
+  }
+  if (!framebuffer)
+  {
+    framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    framebuffer->SetContext(window);
+  }
+}
+
 void vtkFXRenderUtilities::ClearTargets(int targets, const float value[4])
 {
   // (glClearBuffer ignores the clear colour, so vtkOpenGLState's copy of
@@ -177,11 +196,8 @@ vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow
   , Scissor(window->GetState(), GL_SCISSOR_TEST)
 {
   this->State->PushFramebufferBindings();
-  if (!framebuffer)
-  {
-    framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    framebuffer->SetContext(window);
-  }
+  FitFramebuffer(framebuffer, window, static_cast<int>(targets[0]->GetWidth()),
+    static_cast<int>(targets[0]->GetHeight()));
   framebuffer->Bind();
   for (size_t i = 0; i < targets.size(); ++i)
   {

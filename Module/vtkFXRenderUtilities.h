@@ -95,6 +95,16 @@ public:
     FullScreenQuad& quad, vtkOpenGLRenderWindow* window, const std::string& fragmentSource);
 
   /**
+   * Makes `framebuffer` (created for `window` if there is none) one whose
+   * recorded size is width x height: VTK's framebuffer object records its
+   * size with its first attachment only, and VTK's own passes (the
+   * translucent ones) size their buffers from it, so after a resize the
+   * framebuffer is made anew.
+   */
+  static void FitFramebuffer(vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
+    vtkOpenGLRenderWindow* window, int width, int height);
+
+  /**
    * Fills the bound framebuffer's first colour target with `value` and its
    * other `targets - 1` with 0: what a pass writes when its shader failed,
    * so that consumers read a defined "no effect" instead of old texels.

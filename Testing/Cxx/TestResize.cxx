@@ -1,12 +1,16 @@
 // The window changes size between frames: the G-buffer textures follow the
 // viewport and the image still matches VTK's forward render. A 1x1 window
 // and a renderer that covers only part of the window work too.
+#include "vtkFXBloomPass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
 
 #include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
+
+#include <array>
 
 namespace
 {
@@ -68,5 +72,37 @@ int TestResize(int, char*[])
   FX_CHECK(static_cast<int>(gbuffer->GetChannelTexture(vtkFXGBufferPass::Albedo)->GetWidth()) == 200,
     "G-buffer has the renderer's viewport size, not the window's");
   FX_CHECK(psnr >= 40.0, "side-by-side renderers match VTK");
+
+  // The HDR target (here for a bloom threshold nothing reaches) through a
+  // resize, with translucent props: VTK's translucent pass draws at the
+  // size the target's framebuffer records, which must follow the window
+  // (it kept the first size, and the translucent props went to the old
+  // corner).
+  {
+    window->GetRenderers()->RemoveAllItems();
+    vtkNew<vtkRenderer> translucent;
+    window->AddRenderer(translucent);
+    FX_CHECK(vtkFXScenes::Populate(translucent, "scene:cloud", vtkFXScenes::Options(), error), error);
+    vtkNew<vtkFXPipelinePass> hdrPipeline;
+    vtkNew<vtkFXBloomPass> bloom;
+    bloom->SetThreshold(60000.0);
+    hdrPipeline->AddEffect("bloom", bloom);
+    vtkNew<vtkFXPipelinePass> plainPipeline;
+    for (const auto& size : { std::array<int, 2>{ 300, 200 }, std::array<int, 2>{ 600, 400 } })
+    {
+      window->SetSize(size[0], size[1]);
+      translucent->SetPass(plainPipeline);
+      window->Render();
+      const auto plain = vtkFXScenes::Capture(window);
+      translucent->SetPass(hdrPipeline);
+      window->Render();
+      const std::string passes = vtkFXTest::Passes(hdrPipeline);
+      const int largest = vtkFXScenes::MaxDifference(plain, vtkFXScenes::Capture(window));
+      std::cout << size[0] << "x" << size[1] << " through the HDR target with translucent props: "
+                << largest << " levels off the image without it (" << passes << ")" << std::endl;
+      FX_CHECK(passes.find("hdr-target") != std::string::npos, "no HDR target: " << passes);
+      FX_CHECK(largest <= 2, "the HDR target after a resize");
+    }
+  }
   return EXIT_SUCCESS;
 }
