@@ -29,7 +29,12 @@ double vtkFXLightTiles::Range(double intensity, const double attenuation[3], dou
   }
   if (a2 > 0.0)
   {
-    return (-a1 + std::sqrt(a1 * a1 + 4.0 * a2 * (target - a0))) / (2.0 * a2);
+    // The root as 2c / (a1 + sqrt(a1^2 + 4 a2 c)), c = target - a0: the
+    // textbook (-a1 + sqrt(...)) / (2 a2) cancels to 0 when a2 is tiny
+    // against a1 (attenuation (1, 1, 1e-20) gave range 0 instead of ~1e3).
+    const double c = target - a0;
+    const double root = std::sqrt(a1 * a1 + 4.0 * a2 * c);
+    return a1 >= 0.0 ? 2.0 * c / (a1 + root) : (-a1 + root) / (2.0 * a2);
   }
   return a1 > 0.0 ? (target - a0) / a1 : infinity;
 }

@@ -49,10 +49,15 @@ void fxPositionalLight(vec3 n, vec3 position, vec3 view, int positional,
   {
     toSurface = position - lightPosition;
     float distanceVC = length(toSurface);
-    toSurface = normalize(toSurface);
-    attenuation = 1.0 /
+    // (a surface exactly at the light: lit along the light's direction,
+    // where normalize(0) would be NaN)
+    toSurface = distanceVC > 0.0 ? toSurface / distanceVC : lightDirection;
+    // At most the largest half float: zero attenuation coefficients make
+    // VTK's 1 / 0 = inf, and inf x 0 (a back face's specular) NaN, which
+    // would blacken the pixel; capped, such a light saturates instead.
+    attenuation = min(1.0 /
       (lightAttenuation.x + lightAttenuation.y * distanceVC +
-        lightAttenuation.z * distanceVC * distanceVC);
+        lightAttenuation.z * distanceVC * distanceVC), 65504.0);
     if (coneAngle < 90.0)
     {
       float coneDot = dot(toSurface, lightDirection);

@@ -16,6 +16,11 @@
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
 
+#include "vtkActor.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkRendererCollection.h"
@@ -110,6 +115,12 @@ int TestLights(int, char*[])
   FX_CHECK(std::isinf(vtkFXLightTiles::Range(1.0, flat, 1.0 / 512.0)), "VTK's default never fades");
   const double dim[3] = { 2000.0, 0.0, 0.0 };
   FX_CHECK(vtkFXLightTiles::Range(1.0, dim, 1.0 / 512.0) < 0.0, "a light under the cutoff");
+  // A quadratic term tiny against the linear one: the range of the linear
+  // term (1023), not 0 from cancellation.
+  const double nearlyLinear[3] = { 1.0, 1.0, 1e-20 };
+  const double linearRange = vtkFXLightTiles::Range(1.0, nearlyLinear, 1.0 / 512.0);
+  std::cout << "attenuation (1, 1, 1e-20): range " << linearRange << std::endl;
+  FX_CHECK(std::fabs(linearRange - 1023.0) < 1e-6, "range " << linearRange << " for (1, 1, 1e-20)");
 
   // Lists past 2^24 entries (17 lights over every tile of a 16384^2
   // viewport: 17.8 million) would lose exactness in their float offsets:
@@ -156,5 +167,49 @@ int TestLights(int, char*[])
   FX_CHECK(culled.LightsPerTile < 64 / 2, "culling left out too little");
   FX_CHECK(all.LightsPerTile == 0.0, "tiles without a cutoff");
   FX_CHECK(Check("culled against all lights", culled.FX, all.FX, 40.0) == EXIT_SUCCESS, "");
+
+  // A positional light with all attenuation coefficients 0 (VTK: 1 / 0 =
+  // inf, and a back face's specular inf x 0 = NaN) over a shiny sphere with
+  // an ambient term: no pixel of the sphere is black (NaN was made 0, the
+  // ambient and every other light with it).
+  {
+    window->GetRenderers()->RemoveAllItems();
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    renderer->AutomaticLightCreationOff();
+    renderer->SetBackground(0.2, 0.3, 0.4);
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetThetaResolution(48);
+    sphere->SetPhiResolution(48);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(sphere->GetOutputPort());
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetAmbient(0.2);
+    actor->GetProperty()->SetSpecular(0.5);
+    renderer->AddActor(actor);
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->PositionalOn();
+    light->SetConeAngle(180.0);
+    light->SetPosition(2.0, 0.0, 0.0);
+    light->SetFocalPoint(0.0, 0.0, 0.0);
+    light->SetAttenuationValues(0.0, 0.0, 0.0);
+    renderer->AddLight(light);
+    renderer->ResetCamera();
+    vtkNew<vtkFXPipelinePass> pipeline;
+    renderer->SetPass(pipeline);
+    window->Render();
+    // (neither the background nor any lit point is black)
+    const auto image = vtkFXScenes::Capture(window);
+    int black = 0;
+    for (size_t i = 0; i + 2 < image.size(); i += 3)
+    {
+      black += (image[i] == 0 && image[i + 1] == 0 && image[i + 2] == 0) ? 1 : 0;
+    }
+    std::cout << "zero attenuation: " << black << " black pixels of " << image.size() / 3
+              << std::endl;
+    FX_CHECK(!image.empty() && black == 0, black << " black pixels under a zero-attenuation light");
+  }
   return EXIT_SUCCESS;
 }
