@@ -133,13 +133,18 @@ bool vtkFXToonPass::HasWork(const vtkFXSceneInfo& scene)
 {
   // Bands quantise light: with no light on there is none to band.
   const bool bands = this->Bands && scene.LightingComplexity > 0;
-  return (bands || this->FeatureLines) && this->Superclass::HasWork(scene);
+  return (bands || this->DrawsLines()) && this->Superclass::HasWork(scene);
+}
+
+bool vtkFXToonPass::DrawsLines() const
+{
+  return this->FeatureLines && (this->Silhouettes || this->Creases);
 }
 
 unsigned int vtkFXToonPass::GetRequiredChannels()
 {
   unsigned int channels = GB::ChannelBit(GB::Normal);
-  if (this->FeatureLines)
+  if (this->DrawsLines())
   {
     channels |= GB::ChannelBit(GB::LinearDepth);
   }
@@ -254,6 +259,10 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   if (flag)
   {
     this->ClearTileMask(window, size);
+  }
+  else
+  {
+    vtkFXRenderUtilities::Release(this->TileMask, window); // culling off: no flags kept
   }
   depth->Activate();
   normal->Activate();
@@ -430,9 +439,14 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
 void vtkFXToonPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
-  if (!this->FeatureLines)
+  if (!this->DrawsLines())
   {
-    return; // bands are composite code
+    // Bands are composite code; the lines' textures go with the lines.
+    vtkRenderWindow* window = s->GetRenderer()->GetRenderWindow();
+    vtkFXRenderUtilities::Release(this->TileMask, window);
+    vtkFXRenderUtilities::Release(this->Edges, window);
+    vtkFXRenderUtilities::Release(this->EdgeFrameBuffer, window);
+    return;
   }
   if (!this->GBuffer || !this->GBuffer->GetChannelTexture(GB::LinearDepth) ||
     !this->GBuffer->GetChannelTexture(GB::Normal))

@@ -184,6 +184,11 @@ public:
   /**
    * Work when bands or lines are on and some prop is in the G-buffer.
    */
+  /**
+   * Some opaque prop, and bands with a light on or feature lines of some
+   * kind (silhouettes or creases); the lines' textures and the linear-depth
+   * channel only with lines.
+   */
   bool HasWork(const vtkFXSceneInfo& scene) override;
   unsigned int GetRequiredChannels() override;
   /** Lines blend displayable colours: no HDR target needed. */
@@ -194,6 +199,7 @@ public:
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
 protected:
+  bool DrawsLines() const; // FeatureLines with silhouettes or creases
   vtkFXToonPass();
   ~vtkFXToonPass() override;
 

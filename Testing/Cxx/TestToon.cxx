@@ -542,5 +542,33 @@ int TestToon(int, char*[])
   FX_CHECK(CheckFandiskCreases(window) == EXIT_SUCCESS, "fandisk creases");
   FX_CHECK(CheckTileCulling(window) == EXIT_SUCCESS, "tile culling");
   FX_CHECK(CheckScaleInvariance(window) == EXIT_SUCCESS, "scale invariance");
+
+  // What a configuration needs and no more: bands alone read no linear
+  // depth; lines of no kind (silhouettes and creases off) are no work.
+  {
+    vtkNew<vtkSphereSource> source;
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(source->GetOutputPort());
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    vtkFXToonPass* configured = MakeScene(window, actor, false);
+    auto* pipeline =
+      vtkFXPipelinePass::SafeDownCast(window->GetRenderers()->GetFirstRenderer()->GetPass());
+    const unsigned int depthBit = vtkFXGBufferPass::ChannelBit(vtkFXGBufferPass::LinearDepth);
+    window->Render();
+    FX_CHECK(pipeline->GetGBufferChannels() & depthBit, "lines read linear depth");
+    configured->FeatureLinesOff();
+    window->Render();
+    FX_CHECK(!(pipeline->GetGBufferChannels() & depthBit), "bands alone allocate linear depth");
+    configured->FeatureLinesOn();
+    configured->BandsOff();
+    configured->SilhouettesOff();
+    configured->CreasesOff();
+    window->Render();
+    const std::string passes = vtkFXTest::Passes(pipeline);
+    std::cout << "lines of no kind: passes " << passes << std::endl;
+    FX_CHECK(passes.find("toon") == std::string::npos && !(pipeline->GetGBufferChannels() & depthBit),
+      "lines of no kind still ran: " << passes);
+  }
   return EXIT_SUCCESS;
 }
