@@ -18,6 +18,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkRenderState.h"
+#include "vtkCamera.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -271,6 +272,12 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   program->SetUniform2i("fxGBufferSize", size);
   vtkFXRenderUtilities::SetFrustumRayUniforms(program, s->GetRenderer());
   program->SetUniformf("fxSilhouetteThreshold", static_cast<float>(this->SilhouetteThreshold));
+  vtkCamera* camera = s->GetRenderer()->GetActiveCamera();
+  const double halfAngle = vtkMath::RadiansFromDegrees(0.5 * camera->GetViewAngle());
+  program->SetUniformf("fxParallelDepth",
+    camera->GetParallelProjection()
+      ? static_cast<float>(camera->GetParallelScale() / std::max(std::tan(halfAngle), 1e-6))
+      : 0.0f);
   program->SetUniformf(
     "fxCreaseCosine", static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(this->CreaseAngle))));
   if (this->TilesFlagged)

@@ -16,8 +16,10 @@
  * the 2D overlay): between two neighbouring G-buffer pixels there is
  * - a silhouette where one is background and the other is not, or where
  *   either pixel's view-space position lies off the other's tangent plane by
- *   more than SilhouetteThreshold times the nearer depth: a test relative
- *   to depth, so it does not depend on the scene's scale, and exact for
+ *   more than SilhouetteThreshold times the nearer depth (in parallel
+ *   projection, times the distance at which the view angle spans the
+ *   parallel view, so that moving the camera back changes nothing): a test
+ *   relative to depth, so it does not depend on the scene's scale, and exact for
  *   planes at any angle, so a plane seen at a grazing angle is not taken
  *   for an edge;
  * - a crease where the two normals differ by more than CreaseAngle.
@@ -110,8 +112,9 @@ public:
 
   /**
    * Smallest gap between a pixel's position and its neighbour's tangent
-   * plane that makes a silhouette, as a fraction of the nearer depth
-   * (1e-5..10, default 0.02).
+   * plane that makes a silhouette, as a fraction of the nearer depth (in
+   * parallel projection of ParallelScale / tan(ViewAngle / 2)) (1e-5..10,
+   * default 0.02).
    */
   vtkSetClampMacro(SilhouetteThreshold, double, 1e-5, 10.0);
   vtkGetMacro(SilhouetteThreshold, double);

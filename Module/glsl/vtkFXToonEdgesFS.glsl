@@ -30,6 +30,11 @@ uniform sampler2D fxLinearDepth;
 uniform sampler2D fxNormal;
 uniform ivec2 fxGBufferSize;
 uniform float fxSilhouetteThreshold; // fraction of the depth
+// In parallel projection the depth the threshold is a fraction of: the
+// distance at which the camera's view angle spans what the parallel view
+// shows (the image does not change as the camera moves back, so neither
+// may the lines); 0 in perspective (each pixel's own depth).
+uniform float fxParallelDepth;
 uniform float fxCreaseCosine;
 #if FX_TILE_MASK
 layout(r8) uniform writeonly image2D fxTileMask;
@@ -88,7 +93,8 @@ float fxSeparated(fxSurface a, fxSurface b)
   {
     gap = max(a.lit ? abs(dot(a.normal, d)) : 0.0, b.lit ? abs(dot(b.normal, d)) : 0.0);
   }
-  if (gap > fxSilhouetteThreshold * min(a.depth, b.depth))
+  float scale = fxParallelDepth > 0.0 ? fxParallelDepth : min(a.depth, b.depth);
+  if (gap > fxSilhouetteThreshold * scale)
   {
     return 1.0;
   }

@@ -20,6 +20,7 @@
 #include "vtkFXTestUtilities.h"
 #include "vtkFXToonPass.h"
 
+#include "vtkCamera.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkOBJReader.h"
@@ -517,6 +518,20 @@ int CheckScaleInvariance(vtkRenderWindow* window)
     }
   }
   FX_CHECK(failures == 0, failures << " variant(s) below 50 dB");
+
+  // In parallel projection, the camera moved 1000 times as far back (its
+  // parallel scale kept) shows the same image, lines included.
+  const auto near = RenderMoved(window, 1.0, 0.0, true, 0.0);
+  vtkNew<vtkFXToonPass> farToon;
+  const auto far = RenderBunny(window, farToon, [&](vtkRenderer* renderer) {
+    vtkFXTest::MoveScene(renderer, 1.0, 0.0, true, 0.0);
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->Dolly(1e-3); // (VTK's dolly: the distance divided by the factor)
+    renderer->ResetCameraClippingRange();
+  });
+  const double farPSNR = vtkFXScenes::PSNR(near, far);
+  std::cout << "toon bunny parallel, camera 1000 times as far: PSNR " << farPSNR << " dB" << std::endl;
+  FX_CHECK(farPSNR >= 50.0, "parallel lines depend on the camera's distance");
   return EXIT_SUCCESS;
 }
 }
