@@ -329,8 +329,23 @@ int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
       light->GetPositional() ? vtkFXLightTiles::Range(brightest, attenuation, this->LightCutoff)
                              : std::numeric_limits<double>::infinity() });
   }
-  const int count = static_cast<int>(texels.size() / (LightTexels * 4));
+  int count = static_cast<int>(texels.size() / (LightTexels * 4));
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  // One row per light: no more lights than the texture can have rows.
+  GLint maxRows = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxRows);
+  if (maxRows > 0 && count > maxRows)
+  {
+    if (!this->ReportedTooManyLights)
+    {
+      vtkErrorMacro(<< count << " lights are on; this OpenGL's textures hold " << maxRows
+                    << " rows, one per light: the lights past that are left out.");
+      this->ReportedTooManyLights = true;
+    }
+    count = maxRows;
+    texels.resize(static_cast<size_t>(count) * LightTexels * 4);
+    spheres.resize(static_cast<size_t>(count));
+  }
   vtkFXRenderUtilities::EnsureTexture(
     this->LightTexture, window, LightTexels, std::max(count, 1), vtkFXRenderUtilities::RGBA32F);
   // Its own texture unit first: binding on whatever unit is active would

@@ -198,6 +198,7 @@ protected:
   // Each misconfiguration is reported once.
   bool WarnedSpecularWithoutDepth = false;
   bool ReportedPositionalWithoutDepth = false;
+  bool ReportedTooManyLights = false;
   std::vector<vtkSmartPointer<vtkFXEffectPass>> Contributors;
   vtkSmartPointer<vtkTextureObject> LightTexture;
   std::unique_ptr<vtkFXLightTiles> LightTiles;
