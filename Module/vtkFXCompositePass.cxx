@@ -297,6 +297,14 @@ int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
   vtkTransform* user = ren->GetUserLightTransform();
   std::vector<float> texels;
   std::vector<vtkFXLightTiles::Light> spheres; // for the tiles
+  // A diffuse response that raises small factors (toon bands) makes a
+  // light count wherever its factor reaches the smallest raised one.
+  double raised = 0.0;
+  for (const auto& contributor : this->Contributors)
+  {
+    const double smallest = contributor->GetSmallestRaisedDiffuse();
+    raised = smallest > 0.0 && (raised == 0.0 || smallest < raised) ? smallest : raised;
+  }
   vtkLightCollection* lights = ren->GetLights();
   vtkCollectionSimpleIterator it;
   lights->InitTraversal(it);
@@ -325,9 +333,17 @@ int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
       positionVC[2], light->GetExponent(), attenuation[0], attenuation[1], attenuation[2], 0.0 };
     texels.insert(texels.end(), row, row + LightTexels * 4);
     const double brightest = intensity * std::max(color[0], std::max(color[1], color[2]));
-    spheres.push_back({ { positionVC[0], positionVC[1], positionVC[2] },
-      light->GetPositional() ? vtkFXLightTiles::Range(brightest, attenuation, this->LightCutoff)
-                             : std::numeric_limits<double>::infinity() });
+    double range = std::numeric_limits<double>::infinity();
+    if (light->GetPositional())
+    {
+      range = vtkFXLightTiles::Range(brightest, attenuation, this->LightCutoff);
+      if (raised > 0.0)
+      {
+        // (Range(1, a, 2 f) is where 1 / attenuation falls to f)
+        range = std::max(range, vtkFXLightTiles::Range(1.0, attenuation, 2.0 * raised));
+      }
+    }
+    spheres.push_back({ { positionVC[0], positionVC[1], positionVC[2] }, range });
   }
   int count = static_cast<int>(texels.size() / (LightTexels * 4));
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());

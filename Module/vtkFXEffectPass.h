@@ -120,6 +120,16 @@ public:
   virtual bool GetReadsGeometricNormal() { return false; }
 
   /**
+   * For an effect whose DiffuseResponse hook raises a light's diffuse
+   * factor (attenuation x cosine) to a level above it, as toon bands do:
+   * the smallest factor it raises, from which on a light adds a whole
+   * level however dim it is. The composite's light tiles then reach every
+   * point where a light's factor can get there, not only where its light
+   * exceeds the cutoff. Default 0: the hook (if any) never raises light.
+   */
+  virtual double GetSmallestRaisedDiffuse() { return 0.0; }
+
+  /**
    * Whether the effect has work in this frame. Default: any prop the
    * G-buffer captures.
    */

@@ -137,6 +137,11 @@ bool vtkFXToonPass::HasWork(const vtkFXSceneInfo& scene)
   return (bands || this->DrawsLines()) && this->Superclass::HasWork(scene);
 }
 
+double vtkFXToonPass::GetSmallestRaisedDiffuse()
+{
+  return this->Bands && !this->BandThresholds.empty() ? this->BandThresholds.front() : 0.0;
+}
+
 bool vtkFXToonPass::DrawsLines() const
 {
   return this->FeatureLines && (this->Silhouettes || this->Creases);

@@ -193,6 +193,8 @@ public:
    * channel only with lines.
    */
   bool HasWork(const vtkFXSceneInfo& scene) override;
+  /** The first band threshold, with bands on: factors from it on are raised. */
+  double GetSmallestRaisedDiffuse() override;
   unsigned int GetRequiredChannels() override;
   /** Lines blend displayable colours: no HDR target needed. */
   bool GetNeedsHDRTarget() override { return false; }

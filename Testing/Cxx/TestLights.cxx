@@ -14,6 +14,7 @@
 #include "vtkFXLightTiles.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
+#include "vtkFXToonPass.h"
 #include "vtkFXTestUtilities.h"
 
 #include "vtkActor.h"
@@ -167,6 +168,48 @@ int TestLights(int, char*[])
   FX_CHECK(culled.LightsPerTile < 64 / 2, "culling left out too little");
   FX_CHECK(all.LightsPerTile == 0.0, "tiles without a cutoff");
   FX_CHECK(Check("culled against all lights", culled.FX, all.FX, 40.0) == EXIT_SUCCESS, "");
+
+  // Toon bands raise a light's diffuse factor from the first threshold on
+  // (here 0.001) to a whole band (0.5) however dim the light is: the tiles
+  // must reach wherever the factor gets to 0.001, not only where the light
+  // exceeds the cutoff. Culled and unculled images agree.
+  {
+    std::vector<unsigned char> images[2];
+    for (bool culling : { true, false })
+    {
+      window->GetRenderers()->RemoveAllItems();
+      vtkNew<vtkRenderer> renderer;
+      window->AddRenderer(renderer);
+      std::string error;
+      double bounds[6];
+      FX_CHECK(vtkFXScenes::Populate(renderer, "scene:spheres", vtkFXScenes::Options(), error, bounds),
+        error);
+      vtkFXScenes::AddPointLights(renderer, 64, bounds);
+      // dim lights: their cutoff ranges end well before their factors
+      // fall to 0.001
+      vtkCollectionSimpleIterator it;
+      renderer->GetLights()->InitTraversal(it);
+      while (vtkLight* light = renderer->GetLights()->GetNextLight(it))
+      {
+        light->SetIntensity(0.05 * light->GetIntensity());
+      }
+      vtkNew<vtkFXPipelinePass> pipeline;
+      vtkNew<vtkFXToonPass> bands;
+      bands->FeatureLinesOff();
+      bands->RemoveAllBandThresholds();
+      bands->AddBandThreshold(0.001);
+      bands->AddBandThreshold(0.5);
+      pipeline->AddEffect("toon", bands);
+      pipeline->GetCompositePass()->SetLightCutoff(culling ? 1.0 / 512.0 : 0.0);
+      renderer->SetPass(pipeline);
+      window->Render();
+      images[culling ? 0 : 1] = vtkFXScenes::Capture(window);
+    }
+    const int largest = vtkFXScenes::MaxDifference(images[0], images[1]);
+    std::cout << "toon bands from 0.001 over 64 culled lights: " << largest
+              << " levels off the unculled image" << std::endl;
+    FX_CHECK(largest <= 1, "culled lights cut banded light at tile edges");
+  }
 
   // A positional light with all attenuation coefficients 0 (VTK: 1 / 0 =
   // inf, and a back face's specular inf x 0 = NaN) over a shiny sphere with
