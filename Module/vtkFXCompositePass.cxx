@@ -332,7 +332,8 @@ int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
       directionVC[1], directionVC[2], light->GetConeAngle(), positionVC[0], positionVC[1],
       positionVC[2], light->GetExponent(), attenuation[0], attenuation[1], attenuation[2], 0.0 };
     texels.insert(texels.end(), row, row + LightTexels * 4);
-    const double brightest = intensity * std::max(color[0], std::max(color[1], color[2]));
+    const double brightest = this->MaterialColorScale * intensity *
+      std::max(color[0], std::max(color[1], color[2]));
     double range = std::numeric_limits<double>::infinity();
     if (light->GetPositional())
     {

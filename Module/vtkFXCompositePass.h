@@ -136,6 +136,16 @@ public:
   vtkGetMacro(LightCutoff, double);
 
   /**
+   * The largest material colour component of the visible props (at least
+   * 1, default 1): a light adds its light times that, so the culling range
+   * is taken for a light that much brighter. vtkFXPipelinePass sets it
+   * from the scene (colours above 1 are allowed, see
+   * vtkFXGBufferPass::SetHDRMaterial).
+   */
+  vtkSetClampMacro(MaterialColorScale, double, 1.0, 65504.0);
+  vtkGetMacro(MaterialColorScale, double);
+
+  /**
    * Mean number of lights per tile in the last frame on the light-texture
    * path (0 otherwise): what each pixel loops over.
    */
@@ -190,6 +200,7 @@ protected:
   int DebugChannel = -1;
   int MaximumUniformLights = 8;
   double LightCutoff = 1.0 / 512.0;
+  double MaterialColorScale = 1.0;
   bool DebugOcclusion = false;
   bool UseSpecular = true;
   bool UseAmbient = true;

@@ -32,6 +32,7 @@
 #include "vtkVolumetricPass.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 vtkStandardNewMacro(vtkFXPipelinePass);
@@ -56,6 +57,7 @@ void AddMaterialTerms(vtkActor* actor, vtkFXSceneInfo& scene, bool& emissive)
     for (const double* c : { p->GetDiffuseColor(), p->GetAmbientColor(), p->GetSpecularColor() })
     {
       scene.AnyColorAboveOne = scene.AnyColorAboveOne || c[0] > 1.0 || c[1] > 1.0 || c[2] > 1.0;
+      scene.LargestColor = std::max({ scene.LargestColor, c[0], c[1], c[2] });
     }
     if (!p->GetLighting())
     {
@@ -580,6 +582,7 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
     this->GBufferPass->SetRequiredChannels(channels);
     this->GBufferPass->SetHDREmission(scene.AnyEmissionAboveOne);
     this->GBufferPass->SetHDRMaterial(scene.AnyColorAboveOne);
+    composite->SetMaterialColorScale(std::isfinite(scene.LargestColor) ? scene.LargestColor : 65504.0);
     this->Sequence->AddPass("gbuffer", this->GBufferPass);
     this->AddEffectPasses(this->Sequence, order, E::AfterGBuffer);
   }

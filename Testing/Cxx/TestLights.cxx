@@ -18,6 +18,7 @@
 #include "vtkFXTestUtilities.h"
 
 #include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
@@ -172,7 +173,9 @@ int TestLights(int, char*[])
   // Toon bands raise a light's diffuse factor from the first threshold on
   // (here 0.001) to a whole band (0.5) however dim the light is: the tiles
   // must reach wherever the factor gets to 0.001, not only where the light
-  // exceeds the cutoff. Culled and unculled images agree.
+  // exceeds the cutoff. Likewise a diffuse colour of 40 multiplies what a
+  // light adds. Culled and unculled images agree.
+  for (bool toon : { true, false })
   {
     std::vector<unsigned char> images[2];
     for (bool culling : { true, false })
@@ -187,9 +190,10 @@ int TestLights(int, char*[])
       vtkFXScenes::AddPointLights(renderer, 64, bounds);
       // dim lights: their cutoff ranges end well before their factors
       // fall to 0.001
+      vtkLightCollection* lights = renderer->GetLights();
       vtkCollectionSimpleIterator it;
-      renderer->GetLights()->InitTraversal(it);
-      while (vtkLight* light = renderer->GetLights()->GetNextLight(it))
+      lights->InitTraversal(it);
+      while (vtkLight* light = lights->GetNextLight(it))
       {
         light->SetIntensity(0.05 * light->GetIntensity());
       }
@@ -199,16 +203,30 @@ int TestLights(int, char*[])
       bands->RemoveAllBandThresholds();
       bands->AddBandThreshold(0.001);
       bands->AddBandThreshold(0.5);
-      pipeline->AddEffect("toon", bands);
+      if (toon)
+      {
+        pipeline->AddEffect("toon", bands);
+      }
+      else
+      {
+        // (GetActors rebuilds its collection on every call: once)
+        vtkActorCollection* actors = renderer->GetActors();
+        vtkCollectionSimpleIterator it;
+        actors->InitTraversal(it);
+        while (vtkActor* actor = actors->GetNextActor(it))
+        {
+          actor->GetProperty()->SetDiffuseColor(40.0, 40.0, 40.0);
+        }
+      }
       pipeline->GetCompositePass()->SetLightCutoff(culling ? 1.0 / 512.0 : 0.0);
       renderer->SetPass(pipeline);
       window->Render();
       images[culling ? 0 : 1] = vtkFXScenes::Capture(window);
     }
     const int largest = vtkFXScenes::MaxDifference(images[0], images[1]);
-    std::cout << "toon bands from 0.001 over 64 culled lights: " << largest
-              << " levels off the unculled image" << std::endl;
-    FX_CHECK(largest <= 1, "culled lights cut banded light at tile edges");
+    std::cout << (toon ? "toon bands from 0.001" : "diffuse colour 40") << " over 64 culled lights: "
+              << largest << " levels off the unculled image" << std::endl;
+    FX_CHECK(largest <= 1, "culled lights cut light at tile edges");
   }
 
   // A positional light with all attenuation coefficients 0 (VTK: 1 / 0 =
