@@ -32,7 +32,6 @@
 #include "vtkVolumetricPass.h"
 
 #include <algorithm>
-#include <cmath>
 #include <sstream>
 
 vtkStandardNewMacro(vtkFXPipelinePass);
@@ -56,7 +55,6 @@ void AddMaterialTerms(vtkActor* actor, vtkFXSceneInfo& scene, bool& emissive)
     // given: above 1 the G-buffer's 8 bits would clamp them.
     for (const double* c : { p->GetDiffuseColor(), p->GetAmbientColor(), p->GetSpecularColor() })
     {
-      scene.AnyColorAboveOne = scene.AnyColorAboveOne || c[0] > 1.0 || c[1] > 1.0 || c[2] > 1.0;
       scene.LargestColor = std::max({ scene.LargestColor, c[0], c[1], c[2] });
     }
     if (!p->GetLighting())
@@ -581,8 +579,8 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
     }
     this->GBufferPass->SetRequiredChannels(channels);
     this->GBufferPass->SetHDREmission(scene.AnyEmissionAboveOne);
-    this->GBufferPass->SetHDRMaterial(scene.AnyColorAboveOne);
-    composite->SetMaterialColorScale(std::isfinite(scene.LargestColor) ? scene.LargestColor : 65504.0);
+    this->GBufferPass->SetHDRMaterial(scene.LargestColor > 1.0);
+    composite->SetMaterialColorScale(scene.LargestColor); // (clamped: inf becomes 65504)
     this->Sequence->AddPass("gbuffer", this->GBufferPass);
     this->AddEffectPasses(this->Sequence, order, E::AfterGBuffer);
   }

@@ -34,8 +34,7 @@ struct vtkFXSceneInfo
   bool AnySpecular = false;      // a lit captured prop with a specular term
   bool AnyEmissiveColor = false;    // an opaque prop has an EMISSIVE_COLOR
   bool AnyEmissionAboveOne = false; // an EMISSIVE_COLOR component exceeds 1
-  bool AnyColorAboveOne = false;    // a material colour (diffuse, ambient, specular) exceeds 1
-  double LargestColor = 1.0;        // the largest such component, at least 1
+  double LargestColor = 1.0; // largest material colour component (diffuse, ambient, specular), at least 1
   bool AnyPerturbedNormal = false; // an opaque prop's shading normal is not its mesh normal
                                    // (vtkFXGBufferPass::PerturbsNormal)
   int LightingComplexity = 0;    // vtkOpenGLRenderer's, 0 when no light is on
