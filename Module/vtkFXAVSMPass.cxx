@@ -832,24 +832,8 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
     // attachment, only the atlas's size (GL 4.3's default width and
     // height): no texture nobody reads. Each view renders into its square
     // of the atlas (the viewport), from its camera.
-    vtkOpenGLState* glState = window->GetState();
-    glState->PushFramebufferBindings();
-    if (!this->CaptureFrameBuffer)
-    {
-      this->CaptureFrameBuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-      this->CaptureFrameBuffer->SetContext(window);
-    }
-    this->CaptureFrameBuffer->Bind();
-    glFramebufferParameteri(GL_DRAW_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_WIDTH, this->AtlasSize[0]);
-    glFramebufferParameteri(GL_DRAW_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_HEIGHT, this->AtlasSize[1]);
-    this->CaptureFrameBuffer->ActivateDrawBuffers(0u);
-    vtkOpenGLState::ScopedglViewport viewport(glState);
-    vtkOpenGLState::ScopedglEnableDisable depthTest(glState, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglEnableDisable blend(glState, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable scissor(glState, GL_SCISSOR_TEST);
-    glState->vtkglDisable(GL_DEPTH_TEST);
-    glState->vtkglDisable(GL_BLEND);
-    glState->vtkglDisable(GL_SCISSOR_TEST);
+    vtkFXRenderUtilities::RenderTargetScope target(
+      window, this->CaptureFrameBuffer, this->AtlasSize[0], this->AtlasSize[1]);
     vtkOpenGLState::ScopedglDepthMask depthMask(window->GetState());
     window->GetState()->vtkglDepthMask(GL_FALSE);
     vtkCamera* viewer = ren->GetActiveCamera();
@@ -870,7 +854,6 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
     this->PostRender(&state);
     ren->SetActiveCamera(viewer);
     viewer->UnRegister(this);
-    glState->PopFramebufferBindings();
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 

@@ -189,6 +189,20 @@ vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow
 vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow* window,
   vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
   const std::vector<vtkTextureObject*>& targets)
+  : RenderTargetScope(window, framebuffer, targets, static_cast<int>(targets[0]->GetWidth()),
+      static_cast<int>(targets[0]->GetHeight()))
+{
+}
+
+vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow* window,
+  vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer, int width, int height)
+  : RenderTargetScope(window, framebuffer, std::vector<vtkTextureObject*>(), width, height)
+{
+}
+
+vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow* window,
+  vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
+  const std::vector<vtkTextureObject*>& targets, int width, int height)
   : State(window->GetState())
   , Viewport(window->GetState())
   , DepthTest(window->GetState(), GL_DEPTH_TEST)
@@ -196,15 +210,19 @@ vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow
   , Scissor(window->GetState(), GL_SCISSOR_TEST)
 {
   this->State->PushFramebufferBindings();
-  FitFramebuffer(framebuffer, window, static_cast<int>(targets[0]->GetWidth()),
-    static_cast<int>(targets[0]->GetHeight()));
+  FitFramebuffer(framebuffer, window, width, height);
   framebuffer->Bind();
+  if (targets.empty())
+  {
+    glFramebufferParameteri(GL_DRAW_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_WIDTH, width);
+    glFramebufferParameteri(GL_DRAW_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_HEIGHT, height);
+  }
   for (size_t i = 0; i < targets.size(); ++i)
   {
     framebuffer->AddColorAttachment(static_cast<unsigned int>(i), targets[i]);
   }
   framebuffer->ActivateDrawBuffers(static_cast<unsigned int>(targets.size()));
-  this->State->vtkglViewport(0, 0, targets[0]->GetWidth(), targets[0]->GetHeight());
+  this->State->vtkglViewport(0, 0, width, height);
   this->State->vtkglDisable(GL_DEPTH_TEST);
   this->State->vtkglDisable(GL_BLEND);
   this->State->vtkglDisable(GL_SCISSOR_TEST);

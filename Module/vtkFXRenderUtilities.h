@@ -184,9 +184,19 @@ public:
     RenderTargetScope(vtkOpenGLRenderWindow* window,
       vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
       const std::vector<vtkTextureObject*>& targets);
+    /**
+     * No attachment at all, only a size (GL 4.3's framebuffer default width
+     * and height): for draws whose shaders write buffers, not pixels.
+     */
+    RenderTargetScope(vtkOpenGLRenderWindow* window,
+      vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer, int width, int height);
     ~RenderTargetScope();
 
   private:
+    RenderTargetScope(vtkOpenGLRenderWindow* window,
+      vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
+      const std::vector<vtkTextureObject*>& targets, int width, int height);
+
     vtkOpenGLState* State;
     vtkOpenGLState::ScopedglViewport Viewport;
     vtkOpenGLState::ScopedglEnableDisable DepthTest;
