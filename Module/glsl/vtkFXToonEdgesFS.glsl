@@ -51,20 +51,18 @@ struct fxSurface
 {
   bool covered;
   bool lit;
-  vec3 position; // view space
-  vec3 normal;
+  vec3 normal; // 0 where unlit
   float depth;
 };
 
-fxSurface fxSurfaceOf(ivec2 texel, float depth, vec2 encoded)
+fxSurface fxSurfaceOf(float depth, vec2 encoded)
 {
   fxSurface s;
   s.depth = depth;
   // Background is cleared to depth 0; NaN depth counts as background too.
   s.covered = s.depth > 0.0;
   s.lit = s.covered && !fxIsUnlit(encoded);
-  s.normal = s.lit ? fxDecodeNormal(encoded) : vec3(0.0, 0.0, 1.0);
-  s.position = fxViewPosition(2.0 * (vec2(texel) + 0.5) / vec2(fxGBufferSize) - 1.0, s.depth);
+  s.normal = s.lit ? fxDecodeNormal(encoded) : vec3(0.0);
   return s;
 }
 
@@ -72,40 +70,28 @@ fxSurface fxSurfaceOf(ivec2 texel, float depth, vec2 encoded)
 fxSurface fxSurfaceAt(ivec2 texel)
 {
   ivec2 t = min(texel, fxGBufferSize - 1);
-  return fxSurfaceOf(texel, texelFetch(fxLinearDepth, t, 0).r, texelFetch(fxNormal, t, 0).rg);
+  return fxSurfaceOf(texelFetch(fxLinearDepth, t, 0).r, texelFetch(fxNormal, t, 0).rg);
 }
 #endif
 
-float fxSeparated(fxSurface a, fxSurface b)
+// `d`: from a's position to b's (view space).
+float fxSeparated(fxSurface a, fxSurface b, vec3 d)
 {
-  if (!a.covered && !b.covered)
-  {
-    return 0.0;
-  }
+  // Selects, not branches: a software rasteriser runs every branch any
+  // pixel of a block takes.
+  float separated = 0.0;
 #if FX_SILHOUETTES
-  if (a.covered != b.covered)
-  {
-    return 1.0;
-  }
-  vec3 d = b.position - a.position;
-  float gap = abs(b.depth - a.depth);
-  if (a.lit || b.lit)
-  {
-    gap = max(a.lit ? abs(dot(a.normal, d)) : 0.0, b.lit ? abs(dot(b.normal, d)) : 0.0);
-  }
+  // Unlit normals are 0, so only lit sides count in the gap.
+  float gap = (a.lit || b.lit) ? max(abs(dot(a.normal, d)), abs(dot(b.normal, d)))
+                               : abs(b.depth - a.depth);
   float scale = fxParallelDepth > 0.0 ? fxParallelDepth : min(a.depth, b.depth);
-  if (gap > fxSilhouetteThreshold * scale)
-  {
-    return 1.0;
-  }
+  bool apart = a.covered && gap > fxSilhouetteThreshold * scale;
+  separated = (a.covered != b.covered || apart) ? 1.0 : 0.0;
 #endif
 #if FX_CREASES
-  if (a.lit && b.lit && dot(a.normal, b.normal) < fxCreaseCosine)
-  {
-    return 1.0;
-  }
+  separated = (a.lit && b.lit && dot(a.normal, b.normal) < fxCreaseCosine) ? 1.0 : separated;
 #endif
-  return 0.0;
+  return separated;
 }
 
 void main()
@@ -123,16 +109,26 @@ void main()
   vec4 depths = textureGather(fxLinearDepth, corner, 0);
   vec4 normalX = textureGather(fxNormal, corner, 0);
   vec4 normalY = textureGather(fxNormal, corner, 1);
-  fxSurface here = fxSurfaceOf(texel, depths.w, vec2(normalX.w, normalY.w));
-  fxSurface right = fxSurfaceOf(texel + ivec2(1, 0), depths.z, vec2(normalX.z, normalY.z));
-  fxSurface above = fxSurfaceOf(texel + ivec2(0, 1), depths.x, vec2(normalX.x, normalY.x));
+  fxSurface here = fxSurfaceOf(depths.w, vec2(normalX.w, normalY.w));
+  fxSurface right = fxSurfaceOf(depths.z, vec2(normalX.z, normalY.z));
+  fxSurface above = fxSurfaceOf(depths.x, vec2(normalX.x, normalY.x));
 #else
   fxSurface here = fxSurfaceAt(texel);
   fxSurface right = fxSurfaceAt(texel + ivec2(1, 0));
   fxSurface above = fxSurfaceAt(texel + ivec2(0, 1));
 #endif
-  float r = texel.x + 1 < fxGBufferSize.x ? fxSeparated(here, right) : 0.0;
-  float g = texel.y + 1 < fxGBufferSize.y ? fxSeparated(here, above) : 0.0;
+  // The neighbours' positions relative to this one's, from one frustum
+  // ray (fxViewPosition is affine in the image point): P(x + h) - P(x) =
+  // (z' - z) direction(x) + h (origin'(x) + z' direction'(x)).
+  vec2 ndcStep = 2.0 / vec2(fxGBufferSize);
+  vec3 origin, direction;
+  fxRay(ndcStep * (vec2(texel) + 0.5) - 1.0, origin, direction);
+  vec3 toRight = (right.depth - here.depth) * direction +
+    ndcStep.x * (fxRayOrigin[1] + right.depth * fxRayDirection[1]);
+  vec3 toAbove = (above.depth - here.depth) * direction +
+    ndcStep.y * (fxRayOrigin[2] + above.depth * fxRayDirection[2]);
+  float r = texel.x + 1 < fxGBufferSize.x ? fxSeparated(here, right, toRight) : 0.0;
+  float g = texel.y + 1 < fxGBufferSize.y ? fxSeparated(here, above, toAbove) : 0.0;
   // Both marks in one byte (0, 1/3, 2/3, 1), so one gather reads four
   // pixels' marks in vtkFXToonLinesFS.
   gl_FragData[0] = vec4((r + 2.0 * g) / 3.0, 0.0, 0.0, 1.0);
