@@ -42,15 +42,16 @@ int vtkFXHDRTargetPass::GetBytesPerPixel() const
     (this->Depth ? vtkFXRenderUtilities::GetBytesPerTexel(this->DepthFormat) : 0);
 }
 
-int vtkFXHDRTargetPass::MatchingDepthFormat()
+int vtkFXHDRTargetPass::MatchingDepthFormat(vtkOpenGLRenderWindow* window)
 {
   // A depth blit needs the same depth format on both sides: read what the
   // framebuffer being read keeps (VTK 9.1's window framebuffer: 32-bit
-  // fixed point; others: 24-bit fixed or 32-bit float).
+  // fixed point; others: 24-bit fixed, with or without stencil, or 32-bit
+  // float). A multisampled source is fine: the blit resolves it.
   GLint readFramebuffer = 0;
   glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
   const GLenum attachment = readFramebuffer ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
-  GLint bits = 0, type = GL_NONE, stencil = 0, samples = 0;
+  GLint bits = 0, type = GL_NONE, stencil = 0;
   glGetFramebufferAttachmentParameteriv(
     GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
   glGetFramebufferAttachmentParameteriv(
@@ -58,28 +59,28 @@ int vtkFXHDRTargetPass::MatchingDepthFormat()
   glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER,
     readFramebuffer ? GL_STENCIL_ATTACHMENT : GL_STENCIL, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
     &stencil);
-  glGetIntegerv(GL_SAMPLES, &samples);
-  if (stencil != 0 || samples > 1)
-  {
-    return -1; // a packed depth-stencil or multisampled source: no depth blit
-  }
-  if (bits == 32 && type == GL_FLOAT)
+  if (bits == 32 && type == GL_FLOAT && stencil == 0)
   {
     return vtkFXRenderUtilities::Depth32F;
   }
-  if (bits == 32 && type == GL_UNSIGNED_NORMALIZED)
+  if (bits == 32 && type == GL_UNSIGNED_NORMALIZED && stencil == 0)
   {
     return vtkFXRenderUtilities::Depth32;
   }
   if (bits == 24)
   {
-    return vtkFXRenderUtilities::Depth24;
+    return stencil == 8 ? vtkFXRenderUtilities::Depth24Stencil8 : vtkFXRenderUtilities::Depth24;
   }
-  vtkDebugMacro("depth attachment: " << bits << " bits, type " << type);
-  return -1;
+  vtkDebugMacro("depth attachment: " << bits << " bits, type " << type << ", stencil " << stencil);
+  // Not one to copy: the one VTK 9.1's translucent pass allocates for this
+  // window (vtkOrderIndependentTranslucentPass), which copies the target's
+  // depth into it.
+  return window->GetStencilCapable() ? vtkFXRenderUtilities::Depth24Stencil8
+    : window->GetDepthBufferSize() == 32 ? vtkFXRenderUtilities::Depth32
+                                          : vtkFXRenderUtilities::Depth24;
 }
 
-void vtkFXHDRTargetPass::CopyIn(vtkOpenGLState* state, int x, int y, int width, int height, bool depth)
+bool vtkFXHDRTargetPass::CopyIn(vtkOpenGLState* state, int x, int y, int width, int height, bool depth)
 {
   // The current read framebuffer is what the renderer drew into so far.
   // Colour and depth blit separately: a refused depth blit must not cost
@@ -104,6 +105,7 @@ void vtkFXHDRTargetPass::CopyIn(vtkOpenGLState* state, int x, int y, int width, 
     const GLfloat far = 1.0f;
     glClearBufferfv(GL_DEPTH, 0, &far);
   }
+  return copied;
 }
 
 void vtkFXHDRTargetPass::WriteBack(vtkOpenGLRenderWindow* window)
@@ -152,22 +154,10 @@ void vtkFXHDRTargetPass::Render(const vtkRenderState* s)
   const int height = std::max(viewport[3], 1);
 
   const bool keepDepth = ren->GetPreserveDepthBuffer() || !ren->GetErase();
-  const int sourceDepthFormat = this->MatchingDepthFormat();
-  int depthFormat = sourceDepthFormat;
-  if (depthFormat < 0)
-  {
-    if (keepDepth && !this->WarnedDepthFormat)
-    {
-      vtkWarningMacro("The framebuffer's depth format cannot be copied; the depth of the "
-                      "layers below is not kept in the HDR target.");
-      this->WarnedDepthFormat = true;
-    }
-    depthFormat = vtkFXRenderUtilities::Depth32F;
-  }
+  this->DepthFormat = this->MatchingDepthFormat(window);
   vtkFXRenderUtilities::EnsureTexture(
     this->Color, window, width, height, vtkFXRenderUtilities::RGBA16F);
-  vtkFXRenderUtilities::EnsureTexture(this->Depth, window, width, height, depthFormat);
-  this->DepthFormat = depthFormat;
+  vtkFXRenderUtilities::EnsureTexture(this->Depth, window, width, height, this->DepthFormat);
   // (its recorded size is what VTK's translucent passes draw at)
   vtkFXRenderUtilities::FitFramebuffer(this->FrameBuffer, window, width, height);
 
@@ -181,8 +171,13 @@ void vtkFXHDRTargetPass::Render(const vtkRenderState* s)
     vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
     state->vtkglDisable(GL_SCISSOR_TEST);
     state->PushDrawFramebufferBinding();
-    this->CopyIn(state, viewport[0], viewport[1], width, height,
-      keepDepth && this->DepthFormat == sourceDepthFormat);
+    if (!this->CopyIn(state, viewport[0], viewport[1], width, height, keepDepth) && keepDepth &&
+      !this->WarnedDepthFormat)
+    {
+      vtkWarningMacro("The framebuffer's depth cannot be copied; the depth of the layers below "
+                      "is not kept in the HDR target.");
+      this->WarnedDepthFormat = true;
+    }
     state->PopDrawFramebufferBinding();
   }
 

@@ -20,9 +20,13 @@
  * pass out; the depth is copied in only when the renderer keeps the depth of
  * the layers below (PreserveDepthBuffer, or Erase off), otherwise cleared.
  *
+ * The depth texture has the format of the window's depth buffer, so that
+ * both blits (the copy in, and VTK's translucent pass copying the target's
+ * depth into its own texture, of the format it picks from the window) find
+ * the formats they need equal; a multisampled window's depth is resolved.
+ *
  * Limitations: the depth of the layers below is kept only when the window's
- * depth buffer has no stencil and one sample (a warning says when it is
- * not); the target covers the renderer's viewport from (0, 0), so a volume
+ * depth buffer can be copied (a warning says when it cannot); the target covers the renderer's viewport from (0, 0), so a volume
  * in a renderer whose viewport does not start at the window's corner is
  * placed as VTK 9.1's own image-processing passes place it (wrongly).
  */
@@ -73,8 +77,9 @@ protected:
   vtkFXHDRTargetPass();
   ~vtkFXHDRTargetPass() override;
 
-  int MatchingDepthFormat();
-  void CopyIn(vtkOpenGLState* state, int x, int y, int width, int height, bool depth);
+  int MatchingDepthFormat(vtkOpenGLRenderWindow* window);
+  // Returns whether the depth was copied (else it is cleared to far).
+  bool CopyIn(vtkOpenGLState* state, int x, int y, int width, int height, bool depth);
   void WriteBack(vtkOpenGLRenderWindow* window);
 
   vtkRenderPass* DelegatePass = nullptr;

@@ -42,6 +42,7 @@ const FormatInfo& Info(int format)
     { GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, 1, VTK_FLOAT, 4 },
     { GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, 1, VTK_UNSIGNED_INT, 4 },
     { GL_DEPTH_COMPONENT32, GL_DEPTH_COMPONENT, 1, VTK_UNSIGNED_INT, 4 },
+    { GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL, 1, VTK_UNSIGNED_INT, 4 },
   };
   return table[format];
 }
@@ -88,6 +89,11 @@ bool vtkFXRenderUtilities::EnsureTexture(vtkSmartPointer<vtkTextureObject>& text
   texture->SetWrapT(vtkTextureObject::ClampToEdge);
   texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  if (format == Depth24Stencil8)
+  {
+    texture->AllocateDepthStencil(width, height);
+    return true;
+  }
   if (format == Depth32F || format == Depth24 || format == Depth32)
   {
     texture->AllocateDepth(width, height,

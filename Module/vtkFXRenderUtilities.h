@@ -51,6 +51,7 @@ public:
     Depth32F,  // 4 bytes: hardware depth
     Depth24,   // 4 bytes: hardware depth, as some window framebuffers keep it
     Depth32,   // 4 bytes: 32-bit fixed-point hardware depth (VTK's window framebuffer)
+    Depth24Stencil8, // 4 bytes: packed depth and stencil (stencil-capable windows)
     NumberOfTextureFormats
   };
 

@@ -104,5 +104,39 @@ int TestResize(int, char*[])
       FX_CHECK(largest <= 2, "the HDR target after a resize");
     }
   }
+  // Stencil-capable and multisampled windows: VTK's translucent pass
+  // copies the depth of the HDR target into its own texture, whose format
+  // it picks from the window (a packed depth-stencil when stencil-capable).
+  for (const int variant : { 0, 1 })
+  {
+    auto special = vtkFXTest::MakeWindow(300, 200);
+    if (variant == 0)
+    {
+      special->SetStencilCapable(1);
+    }
+    else
+    {
+      special->SetMultiSamples(4);
+    }
+    vtkNew<vtkRenderer> translucent;
+    special->AddRenderer(translucent);
+    FX_CHECK(vtkFXScenes::Populate(translucent, "scene:cloud", vtkFXScenes::Options(), error), error);
+    vtkNew<vtkFXPipelinePass> hdrPipeline;
+    vtkNew<vtkFXBloomPass> bloom;
+    bloom->SetThreshold(60000.0);
+    hdrPipeline->AddEffect("bloom", bloom);
+    vtkNew<vtkFXPipelinePass> plainPipeline;
+    translucent->SetPass(plainPipeline);
+    special->Render();
+    const auto plain = vtkFXScenes::Capture(special);
+    translucent->SetPass(hdrPipeline);
+    special->Render();
+    const int largest = vtkFXScenes::MaxDifference(plain, vtkFXScenes::Capture(special));
+    std::cout << (variant == 0 ? "stencil-capable" : "multisampled")
+              << " window through the HDR target with translucent props: " << largest
+              << " levels off the image without it (" << vtkFXTest::Passes(hdrPipeline) << ")"
+              << std::endl;
+    FX_CHECK(largest <= 2, "the HDR target in a special window");
+  }
   return EXIT_SUCCESS;
 }
