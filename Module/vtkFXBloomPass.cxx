@@ -97,14 +97,32 @@ bool vtkFXBloomPass::HasWork(const vtkFXSceneInfo& scene)
   emissive.GetBounds(this->EmissiveBounds); // uninitialized when none has bounds
   // The emission channel only when something emits: a threshold alone
   // reads the lit image.
-  this->ReadsEmission = this->UseEmission && !scene.EmissiveProps.empty();
+  this->ReadsEmission = this->UseEmission && !scene.EmissiveProps.empty() &&
+    this->Superclass::HasWork(scene); // (the channel comes with the G-buffer)
+  // A threshold reads the lit image, whatever drew it (translucent props
+  // and volumes too, with no opaque prop).
   const bool source = this->ReadsEmission || this->Threshold >= 0.0;
-  return source && this->Intensity > 0.0 && this->Superclass::HasWork(scene);
+  return source && this->Intensity > 0.0;
 }
 
 unsigned int vtkFXBloomPass::GetRequiredChannels()
 {
   return this->ReadsEmission ? GB::ChannelBit(GB::Emission) : 0u;
+}
+
+void vtkFXBloomPass::SetKnee(double knee)
+{
+  if (std::isnan(knee))
+  {
+    vtkErrorMacro("Bloom knee NaN refused; keeping " << this->Knee << ".");
+    return;
+  }
+  knee = std::min(std::max(knee, 0.0), 1.0);
+  if (knee != this->Knee)
+  {
+    this->Knee = knee;
+    this->Modified();
+  }
 }
 
 int vtkFXBloomPass::GetNumberOfLevels(int width, int height) const

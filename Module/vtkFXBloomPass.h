@@ -87,7 +87,9 @@ public:
   /**
    * Glow also from lit light brighter than Threshold (linear units, as in
    * the HDR image; 0..65504). A negative value (default -1) turns this
-   * off.
+   * off. The threshold applies to the light the surfaces reflect: the
+   * emission channel's light is taken out of the lit image first, as it
+   * glows in full anyway (counted once).
    */
   vtkSetClampMacro(Threshold, double, -1.0, 65504.0);
   vtkGetMacro(Threshold, double);
@@ -95,9 +97,9 @@ public:
   /**
    * Width of the soft knee below the threshold, as a fraction of it
    * (0..1, default 0.5): light from Threshold x (1 - Knee) up glows
-   * partly.
+   * partly. NaN is refused with an error.
    */
-  vtkSetClampMacro(Knee, double, 0.0, 1.0);
+  virtual void SetKnee(double knee);
   vtkGetMacro(Knee, double);
 
   /**

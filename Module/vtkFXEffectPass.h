@@ -105,7 +105,8 @@ public:
   /**
    * G-buffer channels the effect reads, as a mask of
    * vtkFXGBufferPass::ChannelBit(). An effect that reads any runs only when
-   * the G-buffer does (some prop is opaque).
+   * the G-buffer does (some prop is opaque). vtkFXPipelinePass asks after
+   * HasWork in the same frame, so the mask may follow the scene.
    */
   virtual unsigned int GetRequiredChannels() = 0;
 

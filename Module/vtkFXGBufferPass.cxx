@@ -549,7 +549,7 @@ std::string vtkFXGBufferPass::ChannelWritesGLSL(bool lit, const char* linearDept
         code << (lit ? "vec4(fxAmbient, 1.0);\n" : "vec4(0.0, 0.0, 0.0, 1.0);\n");
         break;
       case Emission:
-        code << (lit ? "vec4(fxEmissive, 1.0);\n" : "fxColor;\n");
+        code << (lit ? "vec4(fxEmissive, 1.0);\n" : "fxFiniteEmission(fxColor);\n");
         break;
       case GeometricNormal:
         code << (lit ? "vec4(fxEncodeNormal(fxGeometricNormal), 0.0, 1.0);\n"

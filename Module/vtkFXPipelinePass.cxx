@@ -312,13 +312,17 @@ std::vector<size_t> vtkFXPipelinePass::OrderEffects(const vtkFXSceneInfo& scene,
   for (size_t i = 0; i < n; ++i)
   {
     vtkFXEffectPass* e = this->Effects[i].Effect;
-    // Effects that read G-buffer channels, run between the G-buffer and
-    // the composite or only add composite code need the G-buffer.
+    if (!e->GetEnabled() || !e->HasWork(scene))
+    {
+      continue;
+    }
+    // (after HasWork, from which the channels may follow) Effects that read
+    // G-buffer channels, run between the G-buffer and the composite or only
+    // add composite code need the G-buffer.
     const bool needsGBuffer = e->GetRequiredChannels() != 0 ||
       e->GetStage() == vtkFXEffectPass::AfterGBuffer ||
       e->GetStage() == vtkFXEffectPass::Composite;
-    candidate[i] = e->GetEnabled() && (deferred || !needsGBuffer) && e->HasWork(scene) &&
-      this->ResolveInputs(i, inputs[i]);
+    candidate[i] = (deferred || !needsGBuffer) && this->ResolveInputs(i, inputs[i]);
   }
   // Leave out consumers of producers that do not run (silently: no work is
   // no fault), and report inputs that come from a later stage, until

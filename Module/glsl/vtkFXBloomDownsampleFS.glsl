@@ -11,9 +11,14 @@
 // component), threshold t and knee k,
 //   weight = max(b - t, min(max(b - t + k, 0), 2k)^2 / (4k)) / b,
 // per texel (36 texel reads), before the taps average them.
-// Every source value is made finite first: NaN counts as 0 and anything
-// above 65504 (the largest half float, +inf included) as 65504, so no
-// pixel spreads NaN. With FX_KARIS (firefly suppression, first step only)
+// Every source texel is finite before any filter averages it: NaN counts
+// as 0 and anything above 65504 (the largest half float, +inf included) as
+// 65504, so no pixel spreads NaN and none weighs more than it is. The
+// emission channel is written so (vtkFXGBufferPass: fxFiniteEmission), and
+// the lit colour is made so per texel here. With both sources, the
+// threshold applies to the lit colour minus the emission (the light the
+// surface reflects; its emission, part of the lit colour too, glows in
+// full from the channel: counted once). With FX_KARIS (firefly suppression, first step only)
 // each tap is weighted by 1 / (1 + luma) (Karis 2013; see fxAccumulate),
 // so one very bright pixel adds about as much as one pixel of value 1,
 // not a square of its own value.
@@ -39,9 +44,9 @@ vec3 fxFinite(vec3 c)
 // The light above the threshold, per texel: thresholding is not linear, so
 // it comes before any averaging (a bilinear tap across an edge between 2
 // and 0 would read 1 and lose what the 2 had above the threshold).
+// (`lit`: finite)
 vec3 fxAboveThreshold(vec3 lit)
 {
-  lit = fxFinite(lit);
   float brightness = max(lit.r, max(lit.g, lit.b));
   float soft = clamp(brightness - fxThreshold + fxKnee, 0.0, 2.0 * fxKnee);
   soft = soft * soft / (4.0 * fxKnee + 1e-5);
@@ -60,7 +65,11 @@ void fxThresholdTexels()
     for (int x = 0; x < 6; ++x)
     {
       ivec2 t = clamp(first + ivec2(x, y), ivec2(0), size - 1);
-      fxLight[6 * y + x] = fxAboveThreshold(texelFetch(fxColor, t, 0).rgb);
+      vec3 lit = fxFinite(texelFetch(fxColor, t, 0).rgb);
+#if FX_EMISSION
+      lit = max(lit - texelFetch(fxEmission, t, 0).rgb, 0.0);
+#endif
+      fxLight[6 * y + x] = fxAboveThreshold(lit);
     }
   }
 }
@@ -73,7 +82,7 @@ vec3 fxTap(ivec2 o)
 #if FX_FIRST
   vec3 value = vec3(0.0);
 #if FX_EMISSION
-  value += fxFinite(texture(fxEmission, uv).rgb);
+  value += texture(fxEmission, uv).rgb; // finite per texel: see the top
 #endif
 #if FX_THRESHOLD
   int i = 6 * (o.y + 2) + o.x + 2;

@@ -33,3 +33,13 @@ float fxLinearDepthOfFragment()
 // Light the prop emits of its own (vtkFXGBufferPass::EMISSIVE_COLOR), for
 // its lit fragments' emission channel.
 uniform vec3 fxEmissive;
+
+// An unlit fragment's colour as emission: finite and in half-float range
+// (NaN 0, above 65504 65504), so that a filter reading the channel
+// bilinearly (vtkFXBloomPass) weighs each texel as what it is and no NaN
+// or inf spreads.
+vec4 fxFiniteEmission(vec4 c)
+{
+  c.rgb = mix(c.rgb, vec3(0.0), bvec3(isnan(c.r), isnan(c.g), isnan(c.b)));
+  return vec4(clamp(c.rgb, 0.0, 65504.0), c.a);
+}

@@ -13,6 +13,8 @@
 //   adds at most about what one pixel of value 1 adds (no bright square);
 // - light above a threshold glows by the soft knee's weights.
 #include "vtkFXBloomPass.h"
+#include "vtkLight.h"
+#include "vtkActorCollection.h"
 #include "vtkFXEffectPass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
@@ -335,6 +337,85 @@ int CheckThreshold(vtkRenderWindow* window)
   FX_CHECK(std::fabs(glow / expected - 1.0) < 0.02, "glow " << glow << " for " << expected);
   return EXIT_SUCCESS;
 }
+
+// The glow's total (firefly suppression off), with the bloom given.
+double GlowTotal(vtkFXBloomPass* bloom)
+{
+  return 4.0 * Sum(vtkFXTest::Download(bloom->GetGlowTexture(), 4), 4, 3);
+}
+
+// An emissive prop under a threshold of 0 without knee: its lit colour is
+// all emission, which glows from the channel; the threshold takes the
+// reflected light only (none here), so the glow is the emission's alone,
+// not twice it.
+int CheckEmissionAndThreshold(vtkRenderWindow* window)
+{
+  window->SetSize(400, 300);
+  const double emission[3] = { 0.5, 0.4, 0.3 };
+  vtkNew<vtkFXPipelinePass> pipeline;
+  vtkNew<vtkFXBloomPass> bloom;
+  bloom->FireflySuppressionOff();
+  std::vector<unsigned char> without, with;
+  RenderWithoutAndWith(window, emission, pipeline, bloom, without, with);
+  const double emissionOnly = GlowTotal(bloom);
+  bloom->SetThreshold(0.0);
+  bloom->SetKnee(0.0);
+  window->Render();
+  const std::string passes = vtkFXTest::Passes(pipeline);
+  const double both = GlowTotal(bloom);
+  std::cout << "emission " << emissionOnly << " glows, with a threshold of 0 as well " << both
+            << " (" << passes << ")" << std::endl;
+  FX_CHECK(passes.find("hdr-target") != std::string::npos, passes);
+  FX_CHECK(emissionOnly > 1000.0, "no glow from the emission");
+  FX_CHECK(std::fabs(both / emissionOnly - 1.0) < 0.02, "emission counted twice: " << both);
+  return EXIT_SUCCESS;
+}
+
+// No opaque prop: a translucent sphere lit brighter than 1 glows under a
+// threshold (the lit image is the HDR target's, whatever drew it).
+int CheckThresholdWithoutOpaqueProps(vtkRenderWindow* window)
+{
+  window->SetSize(200, 150);
+  vtkRenderer* renderer = MakeScene(window, nullptr);
+  vtkActor* sphere = vtkActor::SafeDownCast(renderer->GetActors()->GetItemAsObject(0));
+  sphere->GetProperty()->SetColor(1.0, 1.0, 1.0);
+  sphere->GetProperty()->SetOpacity(0.5);
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToHeadlight();
+  light->SetIntensity(8.0);
+  renderer->AddLight(light);
+  vtkNew<vtkFXPipelinePass> pipeline;
+  vtkNew<vtkFXBloomPass> bloom;
+  bloom->SetThreshold(1.0);
+  bloom->FireflySuppressionOff();
+  pipeline->AddEffect("bloom", bloom);
+  renderer->SetPass(pipeline);
+  window->Render();
+  const std::string passes = vtkFXTest::Passes(pipeline);
+  const double glow = bloom->GetGlowTexture() ? GlowTotal(bloom) : 0.0;
+  std::cout << "threshold with translucent props only: glow " << glow << " (" << passes << ")"
+            << std::endl;
+  FX_CHECK(passes.find("bloom") != std::string::npos && passes.find("gbuffer") == std::string::npos,
+    passes);
+  FX_CHECK(glow > 100.0, "no glow from the translucent sphere: " << glow);
+  renderer->SetPass(nullptr);
+  return EXIT_SUCCESS;
+}
+
+// A NaN knee is refused with an error (it would make the threshold's
+// weights NaN); the knee set before stays.
+int CheckBadParameters()
+{
+  vtkNew<vtkFXBloomPass> bloom;
+  vtkFXTest::ErrorCounter errors(bloom);
+  bloom->SetKnee(0.25);
+  bloom->SetKnee(std::numeric_limits<double>::quiet_NaN());
+  std::cout << "NaN knee: " << errors.Count << " error(s), knee " << bloom->GetKnee() << std::endl;
+  FX_CHECK(errors.Count == 1 && bloom->GetKnee() == 0.25, "NaN knee");
+  bloom->SetKnee(7.0);
+  FX_CHECK(bloom->GetKnee() == 1.0, "knee clamped to 1");
+  return EXIT_SUCCESS;
+}
 }
 
 int TestBloom(int, char*[])
@@ -347,5 +428,8 @@ int TestBloom(int, char*[])
   FX_CHECK(CheckHotPixels(window) == EXIT_SUCCESS, "hot pixels");
   FX_CHECK(CheckHotEmission(window) == EXIT_SUCCESS, "hot emission");
   FX_CHECK(CheckThreshold(window) == EXIT_SUCCESS, "threshold");
+  FX_CHECK(CheckEmissionAndThreshold(window) == EXIT_SUCCESS, "emission and threshold");
+  FX_CHECK(CheckThresholdWithoutOpaqueProps(window) == EXIT_SUCCESS, "threshold, no opaque prop");
+  FX_CHECK(CheckBadParameters() == EXIT_SUCCESS, "bad parameters");
   return EXIT_SUCCESS;
 }

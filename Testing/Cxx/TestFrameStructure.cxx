@@ -248,24 +248,6 @@ struct FlatScene
   }
 };
 
-// Counts the errors an object reports (and keeps them off the console).
-struct ErrorCounter
-{
-  int Count = 0;
-  std::string Last;
-  vtkNew<vtkCallbackCommand> Command;
-  explicit ErrorCounter(vtkObject* object)
-  {
-    this->Command->SetClientData(this);
-    this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
-      auto* self = static_cast<ErrorCounter*>(client);
-      ++self->Count;
-      self->Last = data ? static_cast<const char*>(data) : "";
-    });
-    object->AddObserver(vtkCommand::ErrorEvent, this->Command);
-  }
-};
-
 vtkSmartPointer<Probe> AddProbe(vtkFXPipelinePass* pipeline, const char* name, int stage,
   bool required = false, const char* input = "")
 {
@@ -346,7 +328,7 @@ int TestStages()
 int TestConnections()
 {
   FlatScene scene(0.8);
-  ErrorCounter errors(scene.Pipeline);
+  vtkFXTest::ErrorCounter errors(scene.Pipeline);
   // A consumer added before its producer runs after it.
   AddProbe(scene.Pipeline, "consumer", vtkFXEffectPass::AfterGBuffer, true, "producer.out");
   auto producer = AddProbe(scene.Pipeline, "producer", vtkFXEffectPass::AfterGBuffer);

@@ -5,6 +5,7 @@
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
 #include "vtkCamera.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCameraPass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
@@ -46,6 +47,24 @@
 
 namespace vtkFXTest
 {
+// Counts the errors an object reports (and keeps them off the console).
+struct ErrorCounter
+{
+  int Count = 0;
+  std::string Last;
+  vtkNew<vtkCallbackCommand> Command;
+  explicit ErrorCounter(vtkObject* object)
+  {
+    this->Command->SetClientData(this);
+    this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
+      auto* self = static_cast<ErrorCounter*>(client);
+      ++self->Count;
+      self->Last = data ? static_cast<const char*>(data) : "";
+    });
+    object->AddObserver(vtkCommand::ErrorEvent, this->Command);
+  }
+};
+
 // An offscreen window with one sample per pixel (the G-buffer has one).
 inline vtkSmartPointer<vtkRenderWindow> MakeWindow(int width, int height)
 {
