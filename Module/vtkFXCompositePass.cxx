@@ -26,6 +26,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <sstream>
 
@@ -332,8 +333,10 @@ int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
       directionVC[1], directionVC[2], light->GetConeAngle(), positionVC[0], positionVC[1],
       positionVC[2], light->GetExponent(), attenuation[0], attenuation[1], attenuation[2], 0.0 };
     texels.insert(texels.end(), row, row + LightTexels * 4);
-    const double brightest = this->MaterialColorScale * intensity *
-      std::max(color[0], std::max(color[1], color[2]));
+    // (VTK takes a negative intensity or colour as light taken away, as
+    // visible as light added)
+    const double brightest = this->MaterialColorScale * std::fabs(intensity) *
+      std::max(std::fabs(color[0]), std::max(std::fabs(color[1]), std::fabs(color[2])));
     double range = std::numeric_limits<double>::infinity();
     if (light->GetPositional())
     {

@@ -127,6 +127,8 @@ public:
    * level however dim it is. The composite's light tiles then reach every
    * point where a light's factor can get there, not only where its light
    * exceeds the cutoff. Default 0: the hook (if any) never raises light.
+   * The smallest positive double (denorm_min) says every positive factor
+   * is raised: no light is then bounded.
    */
   virtual double GetSmallestRaisedDiffuse() { return 0.0; }
 

@@ -23,9 +23,19 @@ double vtkFXLightTiles::Range(double intensity, const double attenuation[3], dou
   // Solve a0 + a1 d + a2 d^2 = 2 intensity / cutoff for the largest d >= 0.
   const double target = 2.0 * intensity / cutoff;
   const double a0 = attenuation[0], a1 = attenuation[1], a2 = attenuation[2];
+  if (!std::isfinite(target))
+  {
+    return infinity; // a light too bright (or raised too easily) to bound
+  }
   if (!(a0 < target))
   {
     return -1.0; // dimmer than the cutoff even at the light
+  }
+  if (a2 < 0.0)
+  {
+    // The denominator turns down and reaches 0 at some distance, where
+    // the light is infinite: no range bounds it.
+    return infinity;
   }
   if (a2 > 0.0)
   {

@@ -25,6 +25,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <sstream>
 
@@ -139,7 +140,14 @@ bool vtkFXToonPass::HasWork(const vtkFXSceneInfo& scene)
 
 double vtkFXToonPass::GetSmallestRaisedDiffuse()
 {
-  return this->Bands && !this->BandThresholds.empty() ? this->BandThresholds.front() : 0.0;
+  if (!this->Bands)
+  {
+    return 0.0;
+  }
+  // Without thresholds every positive factor becomes 1: the smallest
+  // positive double says so (the light tiles then bound no light).
+  return this->BandThresholds.empty() ? std::numeric_limits<double>::denorm_min()
+                                      : this->BandThresholds.front();
 }
 
 bool vtkFXToonPass::DrawsLines() const

@@ -52,22 +52,31 @@ void fxPositionalLight(vec3 n, vec3 position, vec3 view, int positional,
     // (a surface exactly at the light: lit along the light's direction,
     // where normalize(0) would be NaN)
     toSurface = distanceVC > 0.0 ? toSurface / distanceVC : lightDirection;
-    // At most the largest half float: zero attenuation coefficients make
-    // VTK's 1 / 0 = inf, and inf x 0 (a back face's specular) NaN, which
-    // would blacken the pixel; capped, such a light saturates instead.
+    // At most 1e30: zero attenuation coefficients make VTK's 1 / 0 = inf,
+    // and inf x 0 (a back face's specular) NaN, which would blacken the
+    // pixel; capped, such a light saturates instead. (Not lower: a dim
+    // light close to a small scene's surface has an attenuation far above
+    // 65504, and its product with the light's colour is what VTK shows.)
     attenuation = min(1.0 /
       (lightAttenuation.x + lightAttenuation.y * distanceVC +
-        lightAttenuation.z * distanceVC * distanceVC), 65504.0);
+        lightAttenuation.z * distanceVC * distanceVC), 1e30);
+    // (VTK 9.1's polygonal Phong shader, vtkOpenGLPolyDataMapper: a cone
+    // below 90 degrees only; at 90 a light has none. A cosine that rounds
+    // below 0 would have an undefined power: 0 then.)
     if (coneAngle < 90.0)
     {
       float coneDot = dot(toSurface, lightDirection);
-      attenuation = coneDot >= cos(radians(coneAngle)) ? attenuation * pow(coneDot, exponent) : 0.0;
+      attenuation = coneDot >= cos(radians(coneAngle))
+        ? attenuation * pow(max(coneDot, 0.0), exponent)
+        : 0.0;
     }
   }
   float df = max(0.0, attenuation * dot(n, -toSurface));
-  diffuseLight += fxDiffuseResponse(df) * lightColor;
+  // Each light's share at most 1e30: finite whatever the light's colour,
+  // so that a zero albedo or specular colour times it stays 0, not NaN.
+  diffuseLight += min(fxDiffuseResponse(df) * lightColor, vec3(1e30));
 #if FX_HAS_SPECULAR
   float sf = sign(df) * attenuation * pow(max(0.0, dot(reflect(toSurface, n), view)), specularPower);
-  specularLight += sf * lightColor;
+  specularLight += min(sf * lightColor, vec3(1e30));
 #endif
 }

@@ -169,14 +169,19 @@ int TestLights(int, char*[])
   FX_CHECK(culled.LightsPerTile < 64 / 2, "culling left out too little");
   FX_CHECK(all.LightsPerTile == 0.0, "tiles without a cutoff");
   FX_CHECK(Check("culled against all lights", culled.FX, all.FX, 40.0) == EXIT_SUCCESS, "");
+  const int culledOff = vtkFXScenes::MaxDifference(culled.FX, all.FX);
+  std::cout << "culled against all lights: at most " << culledOff << " levels off" << std::endl;
+  FX_CHECK(culledOff <= 2, "culling cut visible light");
 
   // Toon bands raise a light's diffuse factor from the first threshold on
   // (here 0.001) to a whole band (0.5) however dim the light is: the tiles
   // must reach wherever the factor gets to 0.001, not only where the light
   // exceeds the cutoff. Likewise a diffuse colour of 40 multiplies what a
   // light adds. Culled and unculled images agree.
-  for (bool toon : { true, false })
+  // Without thresholds every positive factor becomes 1: no light ends.
+  for (int variant : { 0, 1, 2 })
   {
+    const bool toon = variant < 2;
     std::vector<unsigned char> images[2];
     for (bool culling : { true, false })
     {
@@ -201,8 +206,11 @@ int TestLights(int, char*[])
       vtkNew<vtkFXToonPass> bands;
       bands->FeatureLinesOff();
       bands->RemoveAllBandThresholds();
-      bands->AddBandThreshold(0.001);
-      bands->AddBandThreshold(0.5);
+      if (variant == 0)
+      {
+        bands->AddBandThreshold(0.001);
+        bands->AddBandThreshold(0.5);
+      }
       if (toon)
       {
         pipeline->AddEffect("toon", bands);
@@ -224,9 +232,63 @@ int TestLights(int, char*[])
       images[culling ? 0 : 1] = vtkFXScenes::Capture(window);
     }
     const int largest = vtkFXScenes::MaxDifference(images[0], images[1]);
-    std::cout << (toon ? "toon bands from 0.001" : "diffuse colour 40") << " over 64 culled lights: "
+    const char* names[] = { "toon bands from 0.001", "toon bands without thresholds",
+      "diffuse colour 40" };
+    std::cout << names[variant] << " over 64 culled lights: "
               << largest << " levels off the unculled image" << std::endl;
     FX_CHECK(largest <= 1, "culled lights cut light at tile edges");
+  }
+
+  // Spotlights against VTK's forward render: cones of 45 and of exactly 90
+  // degrees (vtkOpenGLPolyDataMapper applies a cone below 90 only), the
+  // second also with a dim light close to a small scene (attenuation far
+  // above the largest half float, times a tiny intensity).
+  for (int variant : { 0, 1, 2 })
+  {
+    std::vector<unsigned char> images[2];
+    for (bool fx : { true, false })
+    {
+      window->GetRenderers()->RemoveAllItems();
+      vtkNew<vtkRenderer> renderer;
+      window->AddRenderer(renderer);
+      renderer->AutomaticLightCreationOff();
+      const double scale = variant == 2 ? 1e-3 : 1.0;
+      vtkNew<vtkSphereSource> sphere;
+      sphere->SetRadius(scale);
+      sphere->SetThetaResolution(64);
+      sphere->SetPhiResolution(64);
+      vtkNew<vtkPolyDataMapper> mapper;
+      mapper->SetInputConnection(sphere->GetOutputPort());
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      actor->GetProperty()->SetSpecular(0.3);
+      renderer->AddActor(actor);
+      vtkNew<vtkLight> light;
+      light->SetLightTypeToSceneLight();
+      light->PositionalOn();
+      light->SetConeAngle(variant == 0 ? 45.0 : 90.0);
+      light->SetExponent(2.0);
+      light->SetPosition(0.6 * scale, 1.5 * scale, 1.5 * scale);
+      light->SetFocalPoint(0.0, 0.0, 0.0);
+      if (variant == 2)
+      {
+        light->SetAttenuationValues(0.0, 0.0, 1.0);
+        // 1 / d^2 is 1e5 to 7e5 on the sphere: lit up to about 1.1
+        light->SetIntensity(1.6 * scale * scale);
+      }
+      renderer->AddLight(light);
+      renderer->ResetCamera();
+      vtkNew<vtkFXPipelinePass> pipeline;
+      if (fx)
+      {
+        renderer->SetPass(pipeline);
+      }
+      window->Render();
+      images[fx ? 0 : 1] = vtkFXScenes::Capture(window);
+    }
+    const char* names[] = { "spotlight, cone 45", "spotlight, cone 90",
+      "spotlight, cone 90, scene 1e-3 (attenuation 1e6)" };
+    FX_CHECK(Check(names[variant], images[0], images[1], 40.0) == EXIT_SUCCESS, "");
   }
 
   // A positional light with all attenuation coefficients 0 (VTK: 1 / 0 =
