@@ -58,6 +58,21 @@ private:
 };
 }
 
+namespace
+{
+// Levels are read bilinearly and mirrored past their borders: a filter
+// reaching past the image reads the texels it reflects, so a texel near
+// the border gives away as much light as one inside (clamped, the border
+// texels would count again for every tap past them).
+void SetFilterAndMirror(vtkTextureObject* texture)
+{
+  texture->SetMinificationFilter(vtkTextureObject::Linear);
+  texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  texture->SetWrapS(vtkTextureObject::MirroredRepeat);
+  texture->SetWrapT(vtkTextureObject::MirroredRepeat);
+}
+}
+
 // One level of the pyramid: the step down and the step up, each with the
 // framebuffer that writes it.
 struct vtkFXBloomPass::Level
@@ -238,8 +253,7 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
     Level& level = *this->Levels[k];
     vtkFXRenderUtilities::EnsureTexture(
       level.Down, window, width, height, vtkFXRenderUtilities::RGBA16F);
-    level.Down->SetMinificationFilter(vtkTextureObject::Linear);
-    level.Down->SetMagnificationFilter(vtkTextureObject::Linear);
+    SetFilterAndMirror(level.Down);
 
     std::string fs = vtkFXBloomDownsampleFS;
     const bool first = k == 0;
@@ -315,8 +329,7 @@ void vtkFXBloomPass::Upsample(vtkOpenGLRenderWindow* window, int levels)
     vtkTextureObject* coarse = coarsest ? this->Levels[k + 1]->Down : this->Levels[k + 1]->Up;
     vtkFXRenderUtilities::EnsureTexture(level.Up, window, static_cast<int>(level.Down->GetWidth()),
       static_cast<int>(level.Down->GetHeight()), vtkFXRenderUtilities::RGBA16F);
-    level.Up->SetMinificationFilter(vtkTextureObject::Linear);
-    level.Up->SetMagnificationFilter(vtkTextureObject::Linear);
+    SetFilterAndMirror(level.Up);
     std::string fs = vtkFXBloomUpsampleFS;
     vtkShaderProgram::Substitute(
       fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define FX_FINAL 0\n", false);
@@ -336,6 +349,8 @@ void vtkFXBloomPass::Upsample(vtkOpenGLRenderWindow* window, int levels)
     const float texel[2] = { 1.0f / coarse->GetWidth(), 1.0f / coarse->GetHeight() };
     program->SetUniform2f("fxCoarseTexel", texel);
     program->SetUniformf("fxCoarseScale", coarsest ? share : 1.0f);
+    const int origin[2] = { 0, 0 };
+    program->SetUniform2i("fxOrigin", origin);
     program->SetUniformf("fxShare", share);
     this->Quads[Up].Helper->Render();
     coarse->Deactivate();
@@ -367,6 +382,7 @@ void vtkFXBloomPass::AddGlow(vtkOpenGLRenderWindow* window)
   const float texel[2] = { 1.0f / glow->GetWidth(), 1.0f / glow->GetHeight() };
   program->SetUniform2f("fxCoarseTexel", texel);
   program->SetUniformf("fxCoarseScale", 1.0f);
+  program->SetUniform2i("fxOrigin", viewport);
   program->SetUniformf("fxIntensity", static_cast<float>(this->Intensity));
   this->Quads[Final].Helper->Render();
   glow->Deactivate();
@@ -400,8 +416,8 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
     glGenSamplers(1, &this->LinearSampler);
     glSamplerParameteri(this->LinearSampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glSamplerParameteri(this->LinearSampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glSamplerParameteri(this->LinearSampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(this->LinearSampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(this->LinearSampler, GL_TEXTURE_WRAP_S, GL_MIRRORED_REPEAT);
+    glSamplerParameteri(this->LinearSampler, GL_TEXTURE_WRAP_T, GL_MIRRORED_REPEAT);
   }
   const int levels =
     this->GetNumberOfLevels(static_cast<int>(full->GetWidth()), static_cast<int>(full->GetHeight()));

@@ -40,6 +40,15 @@ vec3 fxFinite(vec3 c)
   return clamp(c, 0.0, 65504.0);
 }
 
+// This texel covers source texels 2p and 2p + 1 per axis: the corner
+// between them, in source texels. (Exactly twice the position, also for an
+// odd source size, whose last texel then covers one texel and the mirrored
+// copy of it: no stretch, so every source texel weighs the same.)
+ivec2 fxCentreCorner()
+{
+  return 2 * ivec2(gl_FragCoord.xy) + 1;
+}
+
 #if FX_FIRST && FX_THRESHOLD
 // The light above the threshold, per texel: thresholding is not linear, so
 // it comes before any averaging (a bilinear tap across an edge between 2
@@ -53,18 +62,27 @@ vec3 fxAboveThreshold(vec3 lit)
   return lit * (max(brightness - fxThreshold, soft) / max(brightness, 1e-5));
 }
 
+// Texel t of a texture of `size` texels, mirrored at the borders as the
+// bilinear reads are (GL_MIRRORED_REPEAT).
+ivec2 fxMirror(ivec2 t, ivec2 size)
+{
+  t = ivec2(t.x < 0 ? -t.x - 1 : t.x, t.y < 0 ? -t.y - 1 : t.y);
+  t = ivec2(t.x >= size.x ? 2 * size.x - t.x - 1 : t.x, t.y >= size.y ? 2 * size.y - t.y - 1 : t.y);
+  return clamp(t, ivec2(0), size - 1);
+}
+
 // The 6 x 6 texels under the 13 taps, thresholded once each; tap o (from
 // -2 to 2 texels off the centre corner) averages the 2 x 2 from o + 2.
 vec3 fxLight[36];
 void fxThresholdTexels()
 {
   ivec2 size = textureSize(fxColor, 0);
-  ivec2 first = ivec2(floor(texCoord * vec2(size) + 0.5)) - 3;
+  ivec2 first = fxCentreCorner() - 3;
   for (int y = 0; y < 6; ++y)
   {
     for (int x = 0; x < 6; ++x)
     {
-      ivec2 t = clamp(first + ivec2(x, y), ivec2(0), size - 1);
+      ivec2 t = fxMirror(first + ivec2(x, y), size);
       vec3 lit = fxFinite(texelFetch(fxColor, t, 0).rgb);
 #if FX_EMISSION
       lit = max(lit - texelFetch(fxEmission, t, 0).rgb, 0.0);
@@ -78,7 +96,7 @@ void fxThresholdTexels()
 // Tap o: texel offsets from -2 to 2 around the centre corner.
 vec3 fxTap(ivec2 o)
 {
-  vec2 uv = texCoord + fxSourceTexel * vec2(o);
+  vec2 uv = fxSourceTexel * vec2(fxCentreCorner() + o);
 #if FX_FIRST
   vec3 value = vec3(0.0);
 #if FX_EMISSION
@@ -110,6 +128,10 @@ void fxAccumulate(vec3 v, float share, inout vec3 sum, inout float weightSum)
 
 void main()
 {
+  if (texCoord.x < -1.0)
+  {
+    discard; // never: keeps the quad's texture coordinates in the program
+  }
 #if FX_FIRST && FX_THRESHOLD
   fxThresholdTexels();
 #endif

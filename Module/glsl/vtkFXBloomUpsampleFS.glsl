@@ -21,19 +21,27 @@ uniform vec2 fxCoarseTexel;   // 1 / size of fxCoarse
 uniform float fxCoarseScale;  // factor on fxCoarse (w_N when it is the last down level)
 uniform float fxShare;        // w_k
 uniform float fxIntensity;    // FX_FINAL
+uniform ivec2 fxOrigin;       // the target's corner in the framebuffer
 
 //VTK::Output::Dec
 
 void main()
 {
+  if (texCoord.x < -1.0)
+  {
+    discard; // never: keeps the quad's texture coordinates in the program
+  }
+  // This texel's centre at exactly half its position in the coarse level
+  // (the inverse of the step down's mapping, also for odd sizes).
+  vec2 fine = gl_FragCoord.xy - vec2(fxOrigin);
+  vec2 uv = 0.5 * fine * fxCoarseTexel;
   vec2 t = 0.5 * fxCoarseTexel;
-  vec3 tent = texture(fxCoarse, texCoord + t).rgb + texture(fxCoarse, texCoord - t).rgb +
-    texture(fxCoarse, texCoord + vec2(t.x, -t.y)).rgb +
-    texture(fxCoarse, texCoord + vec2(-t.x, t.y)).rgb;
+  vec3 tent = texture(fxCoarse, uv + t).rgb + texture(fxCoarse, uv - t).rgb +
+    texture(fxCoarse, uv + vec2(t.x, -t.y)).rgb + texture(fxCoarse, uv + vec2(-t.x, t.y)).rgb;
   tent *= 0.25 * fxCoarseScale;
 #if FX_FINAL
   gl_FragData[0] = vec4(fxIntensity * tent, 0.0);
 #else
-  gl_FragData[0] = vec4(fxShare * texture(fxLevel, texCoord).rgb + tent, 1.0);
+  gl_FragData[0] = vec4(fxShare * texelFetch(fxLevel, ivec2(fine), 0).rgb + tent, 1.0);
 #endif
 }
