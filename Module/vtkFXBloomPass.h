@@ -10,9 +10,12 @@
  * tent upsampling, each level adding an equal share, and adds Intensity
  * times the result onto the pipeline's HDR target. Each filter is
  * normalised, so the glow's total equals Intensity times the total of the
- * source (the emission plus the light above the threshold), away from the
- * image's borders and with FireflySuppression off (it deliberately takes
- * energy from isolated bright pixels).
+ * source (the emission plus the light above the threshold), with
+ * FireflySuppression off (it deliberately takes energy from isolated
+ * bright pixels). Each level's texel covers exactly 2 x 2 of the level
+ * above, at odd sizes too, and the filters read the levels mirrored past
+ * the image's borders, so light near a border or an odd edge weighs what
+ * it weighs elsewhere (TestBloom: within 0.3%).
  *
  * The glow reaches about Radius x the viewport's height: the pyramid has
  * the levels below full resolution up to the one whose blur
