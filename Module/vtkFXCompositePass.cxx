@@ -397,8 +397,13 @@ void vtkFXCompositePass::BuildLightTiles(
   {
     this->LightTiles.reset(new vtkFXLightTiles);
   }
+  // (the clipping range, a little wider: the depth buffer's own rounding)
+  double depthRange[2];
+  ren->GetActiveCamera()->GetClippingRange(depthRange);
+  depthRange[0] *= 0.99;
+  depthRange[1] *= 1.01;
   if (!this->LightTiles->Build(lights, &projection->Element[0][0],
-        static_cast<int>(albedo->GetWidth()), static_cast<int>(albedo->GetHeight())) &&
+        static_cast<int>(albedo->GetWidth()), static_cast<int>(albedo->GetHeight()), depthRange) &&
     !this->WarnedLightTiles)
   {
     vtkWarningMacro("The per-tile light lists would exceed "

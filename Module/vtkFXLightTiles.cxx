@@ -63,9 +63,21 @@ bool vtkFXLightTiles::CoveredTiles(const Light& light, const double p[16], int b
   {
     return true;
   }
-  const double sphereBox[6] = { light.Center[0] - light.Radius, light.Center[0] + light.Radius,
+  double sphereBox[6] = { light.Center[0] - light.Radius, light.Center[0] + light.Radius,
     light.Center[1] - light.Radius, light.Center[1] + light.Radius,
     light.Center[2] - light.Radius, light.Center[2] + light.Radius };
+  if (this->DepthRange[1] > 0.0)
+  {
+    // Visible surfaces lie between the clipping planes (view z from -far to
+    // -near): the box's part there still holds all the sphere can light,
+    // and in perspective it lies in front of the camera.
+    sphereBox[4] = std::max(sphereBox[4], -this->DepthRange[1]);
+    sphereBox[5] = std::min(sphereBox[5], -this->DepthRange[0]);
+    if (!(sphereBox[4] <= sphereBox[5]))
+    {
+      return false; // it reaches no visible depth
+    }
+  }
   double lo[3], hi[3];
   const int behind = vtkFXRenderUtilities::ProjectBox(sphereBox, p, lo, hi);
   if (behind == 8)
@@ -94,9 +106,13 @@ bool vtkFXLightTiles::CoveredTiles(const Light& light, const double p[16], int b
   return true;
 }
 
-bool vtkFXLightTiles::Build(
-  const std::vector<Light>& lights, const double projection[16], int width, int height)
+bool vtkFXLightTiles::Build(const std::vector<Light>& lights, const double projection[16],
+  int width, int height, const double depthRange[2])
 {
+  const bool ranged = depthRange && depthRange[0] >= 0.0 && depthRange[1] > depthRange[0] &&
+    std::isfinite(depthRange[1]);
+  this->DepthRange[0] = ranged ? depthRange[0] : 0.0;
+  this->DepthRange[1] = ranged ? depthRange[1] : 0.0;
   this->Width = std::max(1, width);
   this->Height = std::max(1, height);
   this->TilesX = std::max(1, (width + TileSize - 1) / TileSize);

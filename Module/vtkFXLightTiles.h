@@ -70,10 +70,15 @@ public:
   /**
    * Lists for a width x height viewport; `projection` is the camera's
    * view-to-clip matrix (row-major). Light i of `lights` is row i of the
-   * light texture. Returns false when the lists would exceed
-   * MaximumEntries: every tile then lists every light.
+   * light texture. With `depthRange` (the camera's clipping range, near
+   * and far distances), a light counts only for surfaces between those
+   * depths: one whose sphere crosses the camera's plane no longer reaches
+   * every tile unless its sphere reaches the visible depths there.
+   * Returns false when the lists would exceed MaximumEntries: every tile
+   * then lists every light.
    */
-  bool Build(const std::vector<Light>& lights, const double projection[16], int width, int height);
+  bool Build(const std::vector<Light>& lights, const double projection[16], int width, int height,
+    const double depthRange[2] = nullptr);
 
   ///@{
   /**
@@ -102,6 +107,7 @@ public:
 private:
   // The tiles (inclusive ranges) a sphere covers; false when none.
   bool CoveredTiles(const Light& light, const double projection[16], int box[4]) const;
+  double DepthRange[2] = { 0.0, 0.0 }; // near, far; far 0: none
 
   int Width = 0; // the viewport's pixels
   int Height = 0;

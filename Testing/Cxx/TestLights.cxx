@@ -18,6 +18,8 @@
 #include "vtkFXTestUtilities.h"
 
 #include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
 #include "vtkActorCollection.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -145,6 +147,31 @@ int TestLights(int, char*[])
     }
     FX_CHECK(tiles.Build(everywhere, identity, 256, 256), "small lists are built");
     FX_CHECK(tiles.GetIndexData().size() == 17u * 16 * 16, "every tile lists the 17 lights");
+  }
+
+  // A light whose sphere crosses the camera's plane lights surfaces only
+  // between the clipping planes: beside the camera (out of view) it reaches
+  // no tile; in front of it, some; without the depth range, every tile.
+  {
+    vtkNew<vtkCamera> camera; // at the origin, looking down -z
+    camera->SetPosition(0.0, 0.0, 0.0);
+    camera->SetFocalPoint(0.0, 0.0, -1.0);
+    camera->SetClippingRange(1.0, 100.0);
+    vtkMatrix4x4* projection = camera->GetProjectionTransformMatrix(1.0, -1, 1);
+    const double* p = &projection->Element[0][0];
+    const double depths[2] = { 1.0, 100.0 };
+    vtkFXLightTiles tiles;
+    const std::vector<vtkFXLightTiles::Light> beside = { { { 50.0, 0.0, 0.0 }, 2.0 } };
+    const std::vector<vtkFXLightTiles::Light> ahead = { { { 0.0, 0.0, 1.0 }, 5.0 } };
+    tiles.Build(beside, p, 64, 64, depths);
+    const double besideTiles = tiles.GetMeanLightsPerTile();
+    tiles.Build(beside, p, 64, 64);
+    const double besideUnranged = tiles.GetMeanLightsPerTile();
+    tiles.Build(ahead, p, 64, 64, depths);
+    const double aheadTiles = tiles.GetMeanLightsPerTile();
+    std::cout << "a light across the camera's plane: beside " << besideTiles << " (without depths "
+              << besideUnranged << "), ahead " << aheadTiles << " of the tiles" << std::endl;
+    FX_CHECK(besideTiles == 0.0 && besideUnranged == 1.0 && aheadTiles > 0.0, "depth range");
   }
 
   auto window = vtkFXTest::MakeWindow(200, 150);
