@@ -144,10 +144,14 @@ std::vector<Method> MakeDirectionalMethods(int falloff)
   };
   const int gauss = vtkFXBilateralBlurPass::Gaussian;
   // The default first (the strip shows it), then its neighbours.
-  add(Kind::FXDirectional, "vtkfx-do", vtkFXSSAOPass::Hemisphere, doSamples,
+  add(Kind::FXDirectional, "vtkfx-do", dop->GetMethod(), doSamples,
     dop->GetHalfResolution(), doBlur->GetRadius(), doBlur->GetKernel());
   add(Kind::FXDirectional, "vtkfx-do", vtkFXSSAOPass::Hemisphere, 9, true, 4, gauss);
   add(Kind::FXDirectional, "vtkfx-do", vtkFXSSAOPass::Hemisphere, 30, true, 4, gauss);
+  // The horizon method's channels (GTAO's arcs per basis lobe), at plain
+  // AO's horizon sample counts.
+  add(Kind::FXDirectional, "vtkfx-do-horizon", vtkFXSSAOPass::Horizon, 16, true, 4, gauss);
+  add(Kind::FXDirectional, "vtkfx-do-horizon", vtkFXSSAOPass::Horizon, 32, true, 4, gauss);
   // Plain SSAO: the pipeline's default, and hemisphere samples at DO's
   // count (the cost DO is held to).
   vtkFXSSAOPass* ssao = defaults->GetSSAOPass();
@@ -282,6 +286,7 @@ void Install(Method& m, double radius, int falloff)
       pipeline->DirectionalOcclusionOn();
       vtkFXDirectionalOcclusionPass* dop = pipeline->GetDirectionalOcclusionPass();
       dop->SetRadius(radius);
+      dop->SetMethod(m.Method);
       dop->SetNumberOfSamples(m.Samples);
       dop->SetHalfResolution(m.HalfResolution);
       dop->SetFalloff(falloff);

@@ -30,6 +30,12 @@ vtkFXDirectionalOcclusionPass::vtkFXDirectionalOcclusionPass()
   this->DeclareInput("bleeding-denoised", true, true);
 }
 
+int vtkFXDirectionalOcclusionPass::GetEffectiveMethod() const
+{
+  // Bleeding reads each blocked sample's occluder: hemisphere samples.
+  return this->Bleeding > 0.0 ? Hemisphere : this->Method;
+}
+
 unsigned int vtkFXDirectionalOcclusionPass::GetRequiredChannels()
 {
   return this->Superclass::GetRequiredChannels() |
@@ -221,12 +227,15 @@ std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
         : std::string();
     case Ambient:
     {
+      const bool horizon = this->GetEffectiveMethod() == Horizon;
       if (this->ShowChannels)
       {
-        return "    if (@written != 0)\n"
-               "    {\n"
-               "      ambientVisibility *= clamp(@channels(), 0.0, 1.0);\n"
-               "    }";
+        return std::string("    if (@written != 0)\n"
+                           "    {\n"
+                           "      ambientVisibility *= clamp(") +
+          (horizon ? "2.0 * @channels() - 0.5" : "@channels()") +
+          ", 0.0, 1.0);\n"
+          "    }";
       }
       // The seed's resolve: the channels weighted by the shading normal n's
       // squared clamped cosines with the basis of the geometric normal g.
@@ -236,12 +245,18 @@ std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
                          "    {\n"
                          "      vec3 channels = @channels();\n"
                          "      vec3 g = n;\n";
+      if (horizon)
+      {
+        code += "      channels = 2.0 * channels - 0.5; // (stored as (v + 0.5) / 2)\n";
+      }
       if (geometric)
       {
         code += "      vec2 encoded = texture(@geometric, texCoord).rg;\n"
                 "      if (!fxIsUnlit(encoded)) { g = fxDecodeNormal(encoded); }\n";
       }
-      code += "      float resolved = dot(fxResolveWeights(g, n), channels);\n"
+      code += std::string("      float resolved = dot(") +
+        (horizon ? "fxResolveWeightsLinear" : "fxResolveWeights") +
+        "(g, n), channels);\n"
               "      ambientVisibility *= clamp(isnan(resolved) ? 1.0 : resolved, 0.0, 1.0);\n"
               "    }";
       return code;

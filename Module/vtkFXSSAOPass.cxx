@@ -195,7 +195,7 @@ int vtkFXSSAOPass::GetEffectiveNumberOfSamples() const
 
 int vtkFXSSAOPass::GetEffectiveMethod() const
 {
-  return this->Channels == 3 ? Hemisphere : this->Method;
+  return this->Method;
 }
 
 int vtkFXSSAOPass::GetOcclusionFormat() const

@@ -179,8 +179,9 @@ protected:
   void SetReadUniforms(vtkShaderProgram* program, const std::string& scale,
     const std::string& offset, const Output& source);
   // What the subclass vtkFXDirectionalOcclusionPass changes: three channels
-  // (hemisphere only), an 8x8 tile.
-  int GetEffectiveMethod() const;
+  // (a method of its own choosing: bleeding needs the hemisphere), an 8x8
+  // tile.
+  virtual int GetEffectiveMethod() const;
   int GetOcclusionFormat() const;
 
   ///@{

@@ -1,8 +1,9 @@
 //VTK::System::Dec
 // vtkFXSSAOFS: screen-space ambient occlusion from the vtkFX G-buffer.
 // FX_METHOD 0: hemisphere sampling (below); 1: horizon-based (GTAO, further
-// down). FX_CHANNELS 3 (vtkFXDirectionalOcclusionPass, hemisphere only):
-// the occlusion of each third of the hemisphere (see fxHemisphereOcclusion).
+// down). FX_CHANNELS 3 (vtkFXDirectionalOcclusionPass): the occlusion of
+// each third of the hemisphere (see fxHemisphereOcclusion), or of each
+// basis vector's cosine lobe (fxHorizonOcclusion).
 //
 // Normal-oriented hemisphere sampling (Crytek's SSAO with the normal-aligned
 // kernel of later practice): FX_SAMPLES points around the receiver p,
@@ -72,12 +73,13 @@ void fxTexelRay(ivec2 texel, out vec3 origin, out vec3 direction)
 
 //VTK::FXExtension::Dec
 
-#if FX_METHOD == 0
 #if FX_CHANNELS == 3
 #define fxOcclusionValue vec3
 #else
 #define fxOcclusionValue float
 #endif
+
+#if FX_METHOD == 0
 // Hemisphere sampling (see the top of this file). With FX_CHANNELS 3 each
 // sample's occlusion goes to the three channels by its direction's weights
 // against the basis of vtkFXOcclusionBasis.glsl (seed 000: "the occlusion
@@ -187,8 +189,35 @@ float fxFastAcos(float x)
 // height field with enough steps; with FX_STEPS of 2 to 8 an estimate. A
 // horizon sample counts fully within R (FX_FALLOFF 0) or fades out
 // (towards the lowest horizon) from 0.385 R to R (FX_FALLOFF 1).
-float fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec4 tile)
+#if FX_CHANNELS == 3
+// One side of a slice's integral of the (unclamped) cosine around a vector
+// whose projection into the slice has components u along the view and w
+// along the slice's direction: from the view (angle 0) to horizon angle h,
+// integral of |sin t| (u cos t + w sin t) dt =
+// (u (1 - cos 2h) + w (2h - sin 2h)) / 4 for either sign of h (XeGTAO's
+// per-side arc; `trig` is (cos 2h, sin 2h)). Linear in (u, w), so the
+// three basis vectors' integrals weighted by b_k . s are the integral
+// around s.
+float fxLobeSide(float h, vec2 trig, float u, float w)
 {
+  return (u * (1.0 - trig.x) + w * (2.0 * h - trig.y)) / 4.0;
+}
+#endif
+
+fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec4 tile)
+{
+#if FX_CHANNELS == 3
+  // Each channel: the visibility under the cosine lobe around its basis
+  // vector, restricted to the geometric hemisphere, normalised by that
+  // lobe's open integral there (the definition the reference traces with
+  // a shading normal along the basis vector).
+  vec3 t0, b0;
+  fxOcclusionFrame(n, t0, b0);
+  vec3 basis[3] = vec3[](fxBasis0.x * t0 + fxBasis0.y * b0 + fxBasis0.z * n,
+    fxBasis1.x * t0 + fxBasis1.y * b0 + fxBasis1.z * n,
+    fxBasis2.x * t0 + fxBasis2.y * b0 + fxBasis2.z * n);
+  vec3 visibleLobes = vec3(0.0), openLobes = vec3(0.0);
+#endif
   vec3 rayOrigin, rayDirection;
   fxTexelRay(texel, rayOrigin, rayDirection);
   vec3 view = normalize(-rayDirection); // towards the eye, any projection
@@ -293,6 +322,23 @@ float fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec4 tile)
     }
     float h0 = -fxFastAcos(clamp(horizon1, -1.0, 1.0));
     float h1 = fxFastAcos(clamp(horizon0, -1.0, 1.0));
+#if FX_CHANNELS == 3
+    // The visible arc and the open one (down to the geometric tangent line).
+    vec4 h = vec4(h0, h1, -fxFastAcos(clamp(lowest1, -1.0, 1.0)),
+      fxFastAcos(clamp(lowest0, -1.0, 1.0)));
+    vec4 cos2h = cos(2.0 * h), sin2h = sin(2.0 * h);
+    for (int k = 0; k < 3; ++k)
+    {
+      vec3 projected = basis[k] - axis * dot(basis[k], axis);
+      float u = dot(projected, view);
+      float w = sign(dot(orthoDirection, projected)) *
+        sqrt(max(dot(projected, projected) - u * u, 0.0));
+      visibleLobes[k] += fxLobeSide(h.x, vec2(cos2h.x, sin2h.x), u, w) +
+        fxLobeSide(h.y, vec2(cos2h.y, sin2h.y), u, w);
+      openLobes[k] += fxLobeSide(h.z, vec2(cos2h.z, sin2h.z), u, w) +
+        fxLobeSide(h.w, vec2(cos2h.w, sin2h.w), u, w);
+    }
+#endif
     h0 = normalAngle + clamp(h0 - normalAngle, -0.5 * fxPi, 0.5 * fxPi);
     h1 = normalAngle + clamp(h1 - normalAngle, -0.5 * fxPi, 0.5 * fxPi);
     float arc0 = (cosNormal + 2.0 * h0 * sinNormal - cos(2.0 * h0 - normalAngle)) / 4.0;
@@ -303,7 +349,17 @@ float fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec4 tile)
   // depending on their direction; only the average over directions (the
   // noise tile, then the blur) is 1. Clamping here would bias it low: the
   // consumer clamps the blurred result instead.
+#if FX_CHANNELS == 3
+  // Each lobe's visible part of its open integral. The lobes are
+  // unclamped (negative below their basis vector's tangent plane), so a
+  // ratio lies within [-0.37, 1.37]: stored as (v + 0.5) / 2, in [0, 1]
+  // as the packing needs; vtkFXDirectionalOcclusionPass's resolve maps it
+  // back.
+  vec3 lobes = visibleLobes / max(openLobes, vec3(1e-8));
+  return clamp((lobes + 0.5) * 0.5, 0.0, 1.0);
+#else
   return max(visibility / float(FX_SLICES), 0.0);
+#endif
 }
 #endif
 
@@ -338,7 +394,11 @@ void main()
 #if FX_CHANNELS == 3
   // Packed with the normal and the depth, the blur's guide
   // (vtkFXBilateralBlurFS: FX_PACKED_NORMALS).
+#if FX_METHOD == 0
   vec3 channels = fxHemisphereOcclusion(p, n, depth, fxTile[tileEntry].xy);
+#else
+  vec3 channels = fxHorizonOcclusion(texel, p, n, depth, fxTile[tileEntry]);
+#endif
   gl_FragData[0] = vec4(fxPack12(channels.xy), channels.z,
     fxPack12(fxEncodeNormal(n) * 0.5 + 0.5), depth);
 #if FX_BLEED
