@@ -6,6 +6,7 @@
 //                [--debug-channel NAME] [--no-ground]
 //                [--ao-radius R | --ao-radius-fraction F]
 //                [--ao-quality low|medium|high] [--ao-falloff binary|cuberoot]
+//                [--do-method hemisphere|horizon]
 #include "vtkFXScenes.h"
 
 #include "vtkFXAVSMPass.h"
@@ -55,6 +56,7 @@ struct Arguments
   int AOFalloff = vtkFXSSAOPass::Binary;
   bool AOOptions = false; // any --ao-* option given
   bool AOQualityGiven = false;
+  int DOMethod = -1; // --do-method; -1: the pass's default
 };
 
 // Effects the pipeline knows: "ssao" (screen-space ambient occlusion),
@@ -73,6 +75,7 @@ void Usage(std::ostream& os)
         "                                     geometric-normal|occlusion]\n"
         "                    [--no-ground] [--ao-radius R | --ao-radius-fraction F]\n"
         "                    [--ao-quality low|medium|high] [--ao-falloff binary|cuberoot]\n"
+        "                    [--do-method hemisphere|horizon]\n"
         "LIST: comma-separated effects: ssao, blur (ssao,blur: ambient occlusion),\n"
         "      do (directional occlusion: shows bumps in the ambient term; not with ssao),\n"
         "      bleed (with do: colour bounced off nearby occluders),\n"
@@ -224,6 +227,14 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
       }
       args.AOOptions = true;
     }
+    else if (a == "--do-method")
+    {
+      if (!value(v) || (args.DOMethod = IndexOf(v, { "hemisphere", "horizon" })) < 0)
+      {
+        error = "bad --do-method '" + v + "' (hemisphere: the seed's samples, or horizon)";
+        return false;
+      }
+    }
     else if (a == "--plain-vtk")
       args.PlainVTK = true;
     else if (a == "--no-ground")
@@ -286,6 +297,11 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
   if (has("bleed") && !has("do"))
   {
     error = "'bleed' is directional occlusion's diffuse bleeding: use --effects do,bleed";
+    return false;
+  }
+  if (args.DOMethod >= 0 && !has("do"))
+  {
+    error = "--do-method is directional occlusion's: add --effects do";
     return false;
   }
   if (has("do") && args.AOQualityGiven)
@@ -399,6 +415,11 @@ int main(int argc, char* argv[])
     {
       pipeline->SetDirectionalOcclusion(true);
       pipeline->GetDirectionalOcclusionPass()->SetBleeding(has("bleed") ? 1.0 : 0.0);
+      if (args.DOMethod >= 0)
+      {
+        pipeline->GetDirectionalOcclusionPass()->SetMethod(
+          args.DOMethod == 1 ? vtkFXSSAOPass::Horizon : vtkFXSSAOPass::Hemisphere);
+      }
       if (args.AORadius > 0.0)
       {
         pipeline->GetDirectionalOcclusionPass()->SetRadius(args.AORadius);
@@ -521,6 +542,9 @@ int main(int argc, char* argv[])
     vtkFXDirectionalOcclusionPass* directional = pipeline->GetDirectionalOcclusionPass();
     vtkFXBilateralBlurPass* blur = pipeline->GetDirectionalOcclusionBlurPass();
     std::cout << "directional occlusion: "
+              << (directional->GetMethod() == vtkFXSSAOPass::Horizon && directional->GetBleeding() <= 0.0
+                     ? "horizon, "
+                     : "hemisphere, ")
               << (directional->GetFalloff() == vtkFXSSAOPass::Binary ? "binary" : "cuberoot")
               << " falloff, radius " << directional->GetEffectiveRadius() << ", "
               << directional->GetEffectiveNumberOfSamples() << " samples, "
