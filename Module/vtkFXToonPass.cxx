@@ -170,14 +170,16 @@ std::string vtkFXToonPass::BandCode() const
   // Crossing threshold i raises the level to threshold i + 1 (to 1 past
   // the last one): one step per threshold, by the rise.
   std::ostringstream steps;
-  steps.precision(9);
+  // (every digit a double has, in scientific notation: a threshold of 1e-12
+  // must not print as 0)
+  steps.precision(std::numeric_limits<double>::max_digits10);
+  steps.setf(std::ios::scientific, std::ios::floatfield);
   const size_t n = this->BandThresholds.size();
   double level = 0.0;
   for (size_t i = 0; i < n; ++i)
   {
     const double next = i + 1 < n ? this->BandThresholds[i + 1] : 1.0;
-    steps << "  level += step(" << std::fixed << this->BandThresholds[i] << ", df) * "
-          << next - level << ";\n";
+    steps << "  level += step(" << this->BandThresholds[i] << ", df) * " << next - level << ";\n";
     level = next;
   }
   if (this->BandThresholds.empty())
@@ -296,7 +298,7 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   if (this->TilesFlagged)
   {
     int lineWindow[2];
-    this->GetLineWindow(size[1], lineWindow);
+    this->GetLineWindow(this->OutputRows, lineWindow);
     program->SetUniform2i("fxLineWindow", lineWindow);
     glBindImageTexture(
       0, this->TileMask->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
@@ -395,7 +397,7 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
   const int size[2] = { static_cast<int>(this->Edges->GetWidth()),
     static_cast<int>(this->Edges->GetHeight()) };
   int lineWindow[2];
-  this->GetLineWindow(size[1], lineWindow);
+  this->GetLineWindow(this->OutputRows, lineWindow);
   // The source depends on the window alone: made again only when it
   // changes (with the viewport's height).
   if (this->LineSource.empty() || this->LineSourceWindow[0] != lineWindow[0] ||
@@ -428,7 +430,8 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
   this->Edges->Activate();
   program->SetUniformi("fxEdges", this->Edges->GetTextureUnit());
   program->SetUniform2i("fxEdgeSize", size);
-  program->SetUniformf("fxHalfWidth", static_cast<float>(0.5 * this->GetEffectiveLineWidth(size[1])));
+  program->SetUniformf(
+    "fxHalfWidth", static_cast<float>(0.5 * this->GetEffectiveLineWidth(this->OutputRows)));
   float color[3];
   for (int i = 0; i < 3; ++i)
   {
@@ -476,6 +479,11 @@ void vtkFXToonPass::Render(const vtkRenderState* s)
   }
   vtkOpenGLRenderWindow* window =
     vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  // The image's rows: the viewport's, times the tiles of a scaled
+  // screenshot (vtkWindowToImageFilter renders it tile by tile, each at
+  // the window's size), so that lines keep their width in the whole image.
+  this->OutputRows = static_cast<int>(
+    this->GBuffer->GetChannelTexture(GB::LinearDepth)->GetHeight()) * std::max(1, window->GetTileScale()[1]);
   if (this->FindEdges(s, window))
   {
     this->DrawLines(s, window);

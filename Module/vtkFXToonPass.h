@@ -232,6 +232,7 @@ protected:
   double LineColor[3] = { 0.0, 0.0, 0.0 };
 
   bool CullLineTiles = true;
+  int OutputRows = 1; // the image's rows (tiles of a scaled screenshot included)
   bool TilesFlagged = false; // this frame's edges pass flagged the tiles
   vtkSmartPointer<vtkTextureObject> Edges;
   vtkSmartPointer<vtkTextureObject> TileMask; // R8, one texel per 8x8 tile: lines reach it

@@ -10,7 +10,10 @@
 //     max(|n_p . (q - p)|, |n_q . (p - q)|) > threshold x min(depth),
 //   which is 0 for two pixels of one plane at any angle (a raw depth
 //   difference grows without bound at grazing angles) and scales with the
-//   scene; unlit pixels have no normal and compare depths directly;
+//   scene; unlit pixels have no normal and compare depths directly (so
+//   an unlit surface seen at a grazing angle, whose depth changes fast,
+//   can fill with lines: a limitation), as does a lit pixel beside an
+//   unlit one;
 // - crease: n_p . n_q < cos(crease angle), both pixels lit.
 // Output (R8): (r + 2 g) / 3 with r = 1 where the pixel and its right
 // neighbour are separated, g = 1 for the neighbour above. FX_SILHOUETTES,
@@ -81,9 +84,12 @@ float fxSeparated(fxSurface a, fxSurface b, vec3 d)
   // pixel of a block takes.
   float separated = 0.0;
 #if FX_SILHOUETTES
-  // Unlit normals are 0, so only lit sides count in the gap.
-  float gap = (a.lit || b.lit) ? max(abs(dot(a.normal, d)), abs(dot(b.normal, d)))
-                               : abs(b.depth - a.depth);
+  // Unlit normals are 0, so only lit sides count in the plane gap. A lit
+  // and an unlit pixel are two primitives: their depth gap counts too (at
+  // a lit limb the lit side's plane holds the unlit one's point at nearly
+  // any depth).
+  float planeGap = max(abs(dot(a.normal, d)), abs(dot(b.normal, d)));
+  float gap = (a.lit && b.lit) ? planeGap : max(planeGap, abs(b.depth - a.depth));
   float scale = fxParallelDepth > 0.0 ? fxParallelDepth : min(a.depth, b.depth);
   bool apart = a.covered && gap > fxSilhouetteThreshold * scale;
   separated = (a.covered != b.covered || apart) ? 1.0 : 0.0;
