@@ -140,10 +140,10 @@ void vtkFXBloomPass::SetKnee(double knee)
   }
 }
 
-int vtkFXBloomPass::GetNumberOfLevels(int width, int height) const
+int vtkFXBloomPass::GetNumberOfLevels(int width, int height, int imageRows) const
 {
   // The level whose blur is nearest the reach (on a log scale) is the last.
-  const double reach = std::max(1.0, this->Radius * height);
+  const double reach = std::max(1.0, this->Radius * (imageRows > 0 ? imageRows : height));
   int levels = 1;
   for (int k = 2; k <= MaximumLevels; ++k)
   {
@@ -420,7 +420,8 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
     glSamplerParameteri(this->LinearSampler, GL_TEXTURE_WRAP_T, GL_MIRRORED_REPEAT);
   }
   const int levels =
-    this->GetNumberOfLevels(static_cast<int>(full->GetWidth()), static_cast<int>(full->GetHeight()));
+    this->GetNumberOfLevels(static_cast<int>(full->GetWidth()), static_cast<int>(full->GetHeight()),
+      static_cast<int>(full->GetHeight()) * std::max(1, window->GetTileScale()[1]));
   while (static_cast<int>(this->Levels.size()) > levels)
   {
     this->Levels.back()->Release(window);

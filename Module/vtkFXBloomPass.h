@@ -114,9 +114,12 @@ public:
   vtkBooleanMacro(FireflySuppression, bool);
 
   /**
-   * Levels below full resolution for a viewport of width x height.
+   * Levels below full resolution for a viewport of width x height, in an
+   * image of `imageRows` rows (a scaled screenshot's, which
+   * vtkWindowToImageFilter renders in tiles of the viewport's size; 0: the
+   * viewport's own), whose height the glow's reach is a fraction of.
    */
-  int GetNumberOfLevels(int width, int height) const;
+  int GetNumberOfLevels(int width, int height, int imageRows = 0) const;
 
   /**
    * Standard deviation, in full-resolution pixels per axis, of the blur

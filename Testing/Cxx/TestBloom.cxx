@@ -500,5 +500,13 @@ int TestBloom(int, char*[])
   FX_CHECK(CheckEmissionAndThreshold(window) == EXIT_SUCCESS, "emission and threshold");
   FX_CHECK(CheckThresholdWithoutOpaqueProps(window) == EXIT_SUCCESS, "threshold, no opaque prop");
   FX_CHECK(CheckBadParameters() == EXIT_SUCCESS, "bad parameters");
+  // A screenshot at scale 2 of a 200x150 viewport is 300 rows high: the
+  // glow reaches as far in it as in a 400x300 viewport.
+  {
+    vtkNew<vtkFXBloomPass> bloom;
+    FX_CHECK(bloom->GetNumberOfLevels(200, 150, 300) == bloom->GetNumberOfLevels(400, 300) &&
+        bloom->GetNumberOfLevels(200, 150) < bloom->GetNumberOfLevels(400, 300),
+      "levels for a scaled screenshot");
+  }
   return EXIT_SUCCESS;
 }
