@@ -165,7 +165,9 @@ int vtkFXAVSMPass::Nodes() const
 
 bool vtkFXAVSMPass::HasWork(const vtkFXSceneInfo& scene)
 {
-  this->Casters = scene.TranslucentProps;
+  // Every visible translucent prop casts, also one outside the viewer's
+  // frustum whose shadow falls on what the viewer sees.
+  this->Casters = scene.TranslucentViewProps;
   this->CastingLights.clear();
   for (size_t i = 0; i < scene.Lights.size(); ++i)
   {
@@ -405,24 +407,6 @@ void vtkFXAVSMPass::UnbindCompositeResources()
   if (this->Visibility)
   {
     this->Visibility->Deactivate();
-  }
-}
-
-void vtkFXAVSMPass::GatherCasters(vtkRenderer* ren)
-{
-  // Every visible translucent prop casts, also one outside the viewer's
-  // frustum (VTK's culler has left those out of the frame's prop list) whose
-  // shadow falls on what the viewer sees.
-  this->Casters.clear();
-  vtkPropCollection* props = ren->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
-  {
-    if (prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry())
-    {
-      this->Casters.push_back(prop);
-    }
   }
 }
 
@@ -880,12 +864,16 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
       this->WarnedOverflow = true;
     }
     const vtkIdType grown = std::min(MaximumCapacity, vtkIdType(counted) + vtkIdType(counted) / 4);
+    this->StoredFragments = this->Capacity; // what this frame's lists hold
+    if (grown <= this->Capacity)
+    {
+      return; // at the largest size already: nothing to grow (nor to copy)
+    }
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[NodesBuffer]);
     // Keep this frame's nodes: the resolve still reads them.
     GLuint bigger = 0;
     glGenBuffers(1, &bigger);
     glBindBuffer(GL_COPY_WRITE_BUFFER, bigger);
-    this->StoredFragments = this->Capacity; // what this frame's lists hold
     if (AllocateBuffer(GL_COPY_WRITE_BUFFER, grown * NodeBytes, GL_DYNAMIC_DRAW))
     {
       glCopyBufferSubData(
@@ -1197,7 +1185,6 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
     this->AbandonFrame(window);
     return;
   }
-  this->GatherCasters(ren);
   this->FitLightViews(ren);
   // Kept for the frame: the casters are forgotten after Render, and VTK's
   // translucent step (translucent receivers) comes later.

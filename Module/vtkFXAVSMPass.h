@@ -316,7 +316,6 @@ protected:
   };
 
   int Nodes() const; // NumberOfNodes rounded to 4, 8 or 16
-  void GatherCasters(vtkRenderer* ren);
   void FitLightViews(vtkOpenGLRenderer* ren);
   void AddView(const double position[3], const double direction[3], vtkMatrix4x4* projection,
     bool perspective, const double nearFar[2]);

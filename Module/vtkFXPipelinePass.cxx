@@ -1,5 +1,7 @@
 #include "vtkFXPipelinePass.h"
 
+#include "vtkPropCollection.h"
+
 #include "vtkFXBilateralBlurPass.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXDirectionalOcclusionPass.h"
@@ -16,6 +18,7 @@
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
 #include "vtkCameraPass.h"
+#include "vtkPropCollection.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkLightsPass.h"
@@ -222,6 +225,16 @@ vtkFXSceneInfo vtkFXPipelinePass::AnalyzeScene(const vtkRenderState* s) const
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     AnalyzeProp(s->GetPropArray()[i], scene);
+  }
+  vtkPropCollection* viewProps = s->GetRenderer()->GetViewProps();
+  vtkCollectionSimpleIterator viewIt;
+  viewProps->InitTraversal(viewIt);
+  while (vtkProp* prop = viewProps->GetNextProp(viewIt))
+  {
+    if (prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry())
+    {
+      scene.TranslucentViewProps.push_back(prop);
+    }
   }
   // The lights pass ran before the analysis: read what VTK decided.
   vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());

@@ -23,6 +23,10 @@ struct vtkFXSceneInfo
   std::vector<vtkProp*> OpaqueProps;        // captured by the G-buffer
   std::vector<vtkProp*> ForwardOpaqueProps; // opaque, drawn forward (vtkFXForwardOpaquePass)
   std::vector<vtkProp*> TranslucentProps;   // with translucent polygonal geometry
+  // Every visible prop of the renderer with translucent polygonal geometry,
+  // also those VTK's frustum culler left out of the frame (they can still
+  // shadow what the camera sees).
+  std::vector<vtkProp*> TranslucentViewProps;
   std::vector<vtkProp*> VolumeProps;
   std::vector<vtkProp*> OverlayProps;       // 2D props, widgets
   // Props with light-independent colour: unlit opaque props (their colour is

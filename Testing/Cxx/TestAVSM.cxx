@@ -571,6 +571,14 @@ int CheckTranslucentReceiver(vtkRenderWindow* window)
 int TestAVSM(int, char*[])
 {
   auto window = vtkFXTest::MakeWindow(Width, Height);
+  // A caster outside the camera's frustum (above and behind it; VTK's
+  // culler leaves it out of the frame's props) still shadows the ground
+  // the camera sees.
+  {
+    vtkNew<vtkFXAVSMPass> avsm;
+    const auto v = Visibility(window, avsm, { Quad(-10.0, 0.0, 30.0, 0.4) }, true);
+    FX_CHECK(CheckHalves("a caster behind the camera", v, 0.6, 1e-3) == EXIT_SUCCESS, "");
+  }
   const struct
   {
     const char* Name;
