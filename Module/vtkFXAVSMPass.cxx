@@ -696,7 +696,7 @@ bool vtkFXAVSMPass::PostReplaceShaderValues(
   const bool splat = ExtendSplatShaders(geometryShader, fragmentShader,
     "out float fxSplatTransmittanceGSOutput;\n" + this->CurveDefines(this->Exact) +
       (this->Exact ? vtkFXAVSMLists : "") + this->CurveCode(),
-    "float fxSplatT = fxLightTransmittance(0, gl_in[0].gl_Position.xyz);",
+    "float fxSplatT = fxLightTransmittance(0, gl_in[0].gl_Position.xyz, vec3(0.0));",
     "fxSplatTransmittanceGSOutput = fxSplatT;", "in float fxSplatTransmittanceVSOutput;");
   if (splat && this->Exact)
   {
@@ -715,7 +715,9 @@ bool vtkFXAVSMPass::PostReplaceShaderValues(
     const std::string specular = "specular += (sf * lightColor" + n + ");";
     if (Contains(fragmentShader, diffuse.c_str()))
     {
-      receive += "float " + t + " = fxLightTransmittance(" + std::to_string(k) + ", vertexVC.xyz);\n  ";
+      // (a lit shader has the fragment's normal, faced to the viewer)
+      receive += "float " + t + " = fxLightTransmittance(" + std::to_string(k) +
+        ", vertexVC.xyz, normalVCVSOutput);\n  ";
       vtkShaderProgram::Substitute(
         fragmentShader, diffuse, "diffuse += (df * " + t + " * lightColor" + n + ");", false);
       vtkShaderProgram::Substitute(

@@ -53,7 +53,9 @@
  * VTK shaders scale each casting light's terms by its visibility at each
  * fragment during the pipeline's translucent step. A translucent surface
  * does not shadow itself: casters within Bias of a fragment do not
- * count. VTK draws splats unlit; their diffuse colour is taken as the
+ * count, and its look-up point moves along its normal, towards the light,
+ * by 1.5 texels of the light's view (normal offset: a surface tilted to the
+ * light would otherwise read itself in part of each texel, in stripes). VTK draws splats unlit; their diffuse colour is taken as the
  * brightest casting light's and scaled by its visibility at the splat's
  * centre (looked up once per splat), so a particle cloud shadows itself (a
  * splat by the half of its own sphere in front of its centre too).

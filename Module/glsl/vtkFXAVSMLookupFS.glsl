@@ -38,7 +38,8 @@ void main()
   vec4 visibility = vec4(1.0);
   for (int k = 0; k < FX_LIGHTS; ++k)
   {
-    visibility[k] = fxLightTransmittance(k, position);
+    // (opaque receivers do not cast: no offset)
+    visibility[k] = fxLightTransmittance(k, position, vec3(0.0));
   }
   gl_FragData[0] = visibility;
 }
