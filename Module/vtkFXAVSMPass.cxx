@@ -458,11 +458,25 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
     radius = std::sqrt(radius);
     radius = (std::isfinite(radius) && radius > 0.0) ? radius : 1.0;
   }
+  this->BoundingDiameter = 2.0 * radius;
   // The atlas about square: columns for the square root of the views.
+  // A positional light without a cone needs the six faces of a cube only
+  // when it lies within the props' bounding sphere; from outside, one
+  // perspective view aimed at the sphere and just holding it (a cube face
+  // 70 radii away held the props in 4 of its 512 texels).
+  const auto needsCube = [&center, radius](vtkLight* light) {
+    if (!light->GetPositional() || IsSpot(light))
+    {
+      return false;
+    }
+    const double* from = light->GetTransformedPosition();
+    const double d[3] = { center[0] - from[0], center[1] - from[1], center[2] - from[2] };
+    return !(vtkMath::Norm(d) > 1.001 * radius);
+  };
   int views = 0;
   for (const CastingLight& casting : this->CastingLights)
   {
-    views += (casting.Light->GetPositional() && !IsSpot(casting.Light)) ? 6 : 1;
+    views += needsCube(casting.Light) ? 6 : 1;
   }
   this->AtlasColumns = std::max(1, static_cast<int>(std::ceil(std::sqrt(double(views)))));
   this->Views.clear();
@@ -505,19 +519,35 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
       const double* from = light->GetTransformedPosition();
       const double toCenter[3] = { center[0] - from[0], center[1] - from[1], center[2] - from[2] };
       const bool spot = IsSpot(light);
-      const double axial = spot ? vtkMath::Dot(toCenter, direction) : vtkMath::Norm(toCenter);
+      const bool cube = needsCube(light);
+      const double distance = vtkMath::Norm(toCenter);
+      if (!spot && !cube)
+      {
+        // aimed at the sphere's centre
+        for (int a = 0; a < 3; ++a)
+        {
+          direction[a] = toCenter[a] / distance;
+        }
+      }
+      const double axial = spot ? vtkMath::Dot(toCenter, direction) : distance;
       const double farPlane = std::max(axial + radius, 1e-30);
-      const double nearPlane = std::max(spot ? axial - radius : 0.0, 1e-3 * farPlane);
+      // (a cube face holds a point only where its axial distance is at
+      // least a third of the square root of 3 of its distance: so no
+      // nearer than the sphere's nearest point over sqrt 3)
+      const double nearPlane = std::max(cube ? 0.0 : axial - radius, 1e-3 * farPlane);
+      // The cone's half angle; outside the sphere, the angle under which it
+      // is seen: tan = r / sqrt(d^2 - r^2); a cube face: 45 degrees.
       const double f = spot
         ? 1.0 / std::tan(vtkMath::RadiansFromDegrees(std::max(0.5, light->GetConeAngle())))
-        : 1.0; // 90 degrees
+        : cube ? 1.0
+               : std::sqrt(std::max(distance * distance - radius * radius, 0.0)) / radius;
       p->SetElement(0, 0, f);
       p->SetElement(1, 1, f);
       p->SetElement(2, 2, -(farPlane + nearPlane) / (farPlane - nearPlane));
       p->SetElement(2, 3, -2.0 * farPlane * nearPlane / (farPlane - nearPlane));
       p->SetElement(3, 2, -1.0);
       const double nearFar[2] = { nearPlane, farPlane };
-      if (spot)
+      if (!cube)
       {
         this->AddView(from, direction, p, true, nearFar);
       }
@@ -1077,6 +1107,15 @@ void vtkFXAVSMPass::SetViewUniforms(vtkShaderProgram* program)
   }
   program->SetUniformMatrix4x4v("fxViewToLight", views, toLight.data());
   program->SetUniform2fv("fxViewNearFar", views, nearFar.data());
+  // Bias is a fraction of the props' diameter: per view, in its light
+  // depth (0..1 over the view's depth range).
+  std::vector<float> biases(views);
+  for (int v = 0; v < views; ++v)
+  {
+    const double range = this->Views[v].NearFar[1] - this->Views[v].NearFar[0];
+    biases[v] = static_cast<float>(range > 0.0 ? this->Bias * this->BoundingDiameter / range : 0.0);
+  }
+  program->SetUniform1fv("fxViewBias", views, biases.data());
   program->SetUniform1iv("fxViewPerspective", views, perspective.data());
   program->SetUniform2fv("fxViewOrigin", views, origins.data());
   const int lights = this->GetNumberOfCastingLights();
@@ -1096,7 +1135,6 @@ void vtkFXAVSMPass::SetViewUniforms(vtkShaderProgram* program)
 void vtkFXAVSMPass::SetCurveUniforms(vtkShaderProgram* program)
 {
   this->SetViewUniforms(program);
-  program->SetUniformf("fxBias", static_cast<float>(this->Bias));
   if (this->Exact)
   {
     this->BindBuffers(program);

@@ -13,8 +13,9 @@
  *   visible props' bounding sphere;
  * - a spot light (a cone below 89 degrees), the perspective view of its
  *   cone, from just in front of it to the far side of the props;
- * - any other positional light, six perspective views of 90 degrees, the
- *   faces of a cube around it.
+ * - any other positional light: outside the props' bounding sphere, one
+ *   perspective view aimed at the sphere that just holds it; inside it,
+ *   six perspective views of 90 degrees, the faces of a cube around it.
  * The translucent props are rendered from every view. Every fragment, instead of being
  * drawn, joins its texel's linked list (shader storage buffers and an
  * atomic counter: OpenGL 4.3) as a segment along the light: a light-space
@@ -67,7 +68,7 @@
  * for n segments (in order, four per walk; at most 64 inserted exactly)
  * and inserts each segment into the curve; the look-up, one full-resolution pass of 1 (4
  * bilinear) curve reads per casting light, or a walk of the lists (Exact).
- * A positional light without a cone costs six views.
+ * A positional light without a cone inside the props costs six views.
  */
 #ifndef vtkFXAVSMPass_h
 #define vtkFXAVSMPass_h
@@ -152,17 +153,20 @@ public:
   vtkBooleanMacro(Bilinear, bool);
 
   /**
-   * Receiver depth offset towards the light, as a fraction of the light
-   * view's depth range (0..0.1, default 1e-3; distances along the light,
-   * for spot lights too): casters closer to a receiver than this do not
-   * shadow it.
+   * Receiver depth offset towards the light, as a fraction of the visible
+   * props' bounding-sphere diameter (0..0.1, default 1e-3; distances along
+   * the light, for spot lights too): casters closer to a receiver than
+   * this do not shadow it. (A fixed distance for every light: a point
+   * light's depth range grows with its distance, and a fraction of it made
+   * a far lamp's bias larger than the scene's details.)
    */
   vtkSetClampMacro(Bias, double, 0.0, 0.1);
   vtkGetMacro(Bias, double);
 
   /**
    * Lights that cast at most (1..4, default 1: the brightest; each costs
-   * one view, six for a positional light without a cone).
+   * one view, six for a positional light without a cone within the
+   * visible props' bounding sphere).
    */
   vtkSetClampMacro(MaximumNumberOfLights, int, 1, 4);
   vtkGetMacro(MaximumNumberOfLights, int);
@@ -352,6 +356,7 @@ protected:
   int Representation = AdaptiveNodes;
   bool Bilinear = true;
   double Bias = 1e-3;
+  double BoundingDiameter = 2.0; // this frame's visible props' (FitLightViews)
   double SplatRadius = 1.7320508075688772;
   int MaximumNumberOfLights = 1;
   int InitialNodesPerTexel = 4;

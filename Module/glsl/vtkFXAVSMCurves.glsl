@@ -30,7 +30,7 @@ uniform int fxViewSize;                  // texels per side of a view
 uniform int fxLightFirstView[FX_LIGHTS];
 uniform int fxLightViewCount[FX_LIGHTS];
 uniform float fxLightAttenuation[FX_LIGHTS];
-uniform float fxBias; // light depth (0..1, vtkFXAVSMLightDepth)
+uniform float fxViewBias[FX_VIEWS]; // light depth (0..1, vtkFXAVSMLightDepth)
 #if !FX_EXACT
 //VTK::FXAVSMLookup::Samplers
 #endif
@@ -115,7 +115,7 @@ float fxViewTransmittance(int view, vec3 positionVC, bool onView)
   vec4 light = fxViewToLight[view] * vec4(positionVC, 1.0);
   vec2 uv = (0.5 * light.xy / light.w + 0.5) * float(fxViewSize);
   float depth =
-    fxLightDepthFromClip(light, fxViewPerspective[view], fxViewNearFar[view]) - fxBias;
+    fxLightDepthFromClip(light, fxViewPerspective[view], fxViewNearFar[view]) - fxViewBias[view];
 #if FX_BILINEAR
   vec2 corner = uv - 0.5;
   ivec2 base = ivec2(floor(corner));

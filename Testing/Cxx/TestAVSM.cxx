@@ -20,7 +20,7 @@
 //   between two slabs only the slab below it casts;
 // - a point light (no cone: six views, the faces of a cube) over the slab,
 //   and between two slabs: the same shadow, from every face that sees the
-//   ground;
+//   ground; one 1000 units away over a slab 0.5 above the ground too;
 // - two casting lights, the second tilted and with ShadowAttenuation 0.5:
 //   each light's visibility in its channel (0.7, and 1 - 0.5 x 0.3), and
 //   the composite darkens each light by its own;
@@ -982,6 +982,14 @@ int TestAVSM(int, char*[])
     FX_CHECK(CheckHalves("point light between two slabs",
                Visibility(window, MakeAVSM(8, true, true),
                  { Quad(-10, 0, 1, 0.3), Quad(-10, 0, 2, 0.5) }, true, 1, 1.5, 180.0),
+               0.7, 1e-3) == EXIT_SUCCESS, "");
+    // A lamp 1000 units up, 70 times the props' radius: the bias is a
+    // fraction of the props' size, not of the cube's depth range (which
+    // made it about 1 unit here: the slab 0.5 above the ground cast
+    // nothing).
+    FX_CHECK(CheckHalves("far point light, slab 0.5 over the ground",
+               Visibility(window, MakeAVSM(8, false, true), { Quad(-10, 0, 0.5, 0.3) }, true, 1,
+                 1000.0, 180.0),
                0.7, 1e-3) == EXIT_SUCCESS, "");
   }
   FX_CHECK(CheckTwoLights(window) == EXIT_SUCCESS, "two casting lights");
