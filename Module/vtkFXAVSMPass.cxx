@@ -460,10 +460,12 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
   }
   this->BoundingDiameter = 2.0 * radius;
   // The atlas about square: columns for the square root of the views.
-  // A positional light without a cone needs the six faces of a cube only
-  // when it lies within the props' bounding sphere; from outside, one
-  // perspective view aimed at the sphere and just holding it (a cube face
-  // 70 radii away held the props in 4 of its 512 texels).
+  // A positional light without a cone takes one perspective view aimed at
+  // the props' bounding sphere, just holding it, from where the sphere
+  // fits in 90 degrees (at least sqrt 2 radii away: a cube face 70 radii
+  // away held the props in 4 of its 512 texels); nearer, the six faces of
+  // a cube (a wider single view would spread its texels thinner than a
+  // face's).
   const auto needsCube = [&center, radius](vtkLight* light) {
     if (!light->GetPositional() || IsSpot(light))
     {
@@ -471,7 +473,7 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
     }
     const double* from = light->GetTransformedPosition();
     const double d[3] = { center[0] - from[0], center[1] - from[1], center[2] - from[2] };
-    return !(vtkMath::Norm(d) > 1.001 * radius);
+    return !(vtkMath::Norm(d) >= std::sqrt(2.0) * radius);
   };
   int views = 0;
   for (const CastingLight& casting : this->CastingLights)

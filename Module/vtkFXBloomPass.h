@@ -17,7 +17,9 @@
  * the image's borders, so light near a border or an odd edge weighs what
  * it weighs elsewhere (TestBloom: within 0.3%).
  *
- * The glow reaches about Radius x the viewport's height: the pyramid has
+ * The glow reaches about Radius x the image's height (the viewport's, or
+ * a scaled screenshot's, which vtkWindowToImageFilter renders in tiles of
+ * the viewport's size; the glow does not cross the tiles' seams): the pyramid has
  * the levels below full resolution up to the one whose blur
  * (GetLevelSigma) is nearest that reach (at least 1, at most 10, fewer
  * when a level would be under 2 pixels).
@@ -74,8 +76,8 @@ public:
   vtkGetMacro(Intensity, double);
 
   /**
-   * How far the glow reaches, as a fraction of the viewport's height
-   * (0.001..1, default 0.05).
+   * How far the glow reaches, as a fraction of the image's height (the
+   * viewport's, or a scaled screenshot's) (0.001..1, default 0.05).
    */
   vtkSetClampMacro(Radius, double, 0.001, 1.0);
   vtkGetMacro(Radius, double);

@@ -27,15 +27,30 @@ double vtkFXLightTiles::Range(double intensity, const double attenuation[3], dou
   {
     return infinity; // a light too bright (or raised too easily) to bound
   }
+  if (a2 < 0.0 || (a2 == 0.0 && a1 < 0.0))
+  {
+    // The denominator falls and reaches 0 at some distance, where the
+    // light is infinite: no range bounds it.
+    return infinity;
+  }
+  if (a1 < 0.0)
+  {
+    // (a2 > 0) The denominator dips to a0 - a1^2 / (4 a2) at d = -a1 /
+    // (2 a2) before it grows: brightest there, not at the light.
+    const double lowest = a0 - a1 * a1 / (4.0 * a2);
+    if (!(lowest > 0.0))
+    {
+      return infinity; // infinite there
+    }
+    if (!(lowest < target))
+    {
+      return -1.0; // dimmer than the cutoff everywhere
+    }
+    return (-a1 + std::sqrt(4.0 * a2 * (target - lowest))) / (2.0 * a2);
+  }
   if (!(a0 < target))
   {
     return -1.0; // dimmer than the cutoff even at the light
-  }
-  if (a2 < 0.0)
-  {
-    // The denominator turns down and reaches 0 at some distance, where
-    // the light is infinite: no range bounds it.
-    return infinity;
   }
   if (a2 > 0.0)
   {
@@ -44,7 +59,7 @@ double vtkFXLightTiles::Range(double intensity, const double attenuation[3], dou
     // against a1 (attenuation (1, 1, 1e-20) gave range 0 instead of ~1e3).
     const double c = target - a0;
     const double root = std::sqrt(a1 * a1 + 4.0 * a2 * c);
-    return a1 >= 0.0 ? 2.0 * c / (a1 + root) : (-a1 + root) / (2.0 * a2);
+    return 2.0 * c / (a1 + root); // (a1 >= 0 here)
   }
   return a1 > 0.0 ? (target - a0) / a1 : infinity;
 }

@@ -185,7 +185,7 @@ void vtkFXSSAOPass::UnbindCompositeResources()
 
 int vtkFXSSAOPass::GetEffectiveNumberOfSamples() const
 {
-  if (this->Channels != 3)
+  if (this->Channels != 3 || this->GetEffectiveMethod() != Hemisphere)
   {
     return this->NumberOfSamples;
   }
@@ -329,9 +329,13 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   {
     // Open everywhere (what the shader writes where there is no surface),
     // so that the composite shows no occlusion rather than old texels.
-    const float pack12Ones = 4095.0f * 4096.0f + 4095.0f, pack12Halves = 2048.0f * 4096.0f + 2048.0f;
+    // (the horizon method's channels are stored as (v + 0.5) / 2: open is
+    // 0.75)
+    const bool shifted = this->GetEffectiveMethod() == Horizon;
+    const float one = shifted ? 3071.0f : 4095.0f; // fxPack12's q for the open value
+    const float pack12Ones = one * 4096.0f + one, pack12Halves = 2048.0f * 4096.0f + 2048.0f;
     const float open1[4] = { 1.0f, 0.0f, 0.0f, 1.0f };
-    const float open3[4] = { pack12Ones, 1.0f, pack12Halves, 0.0f };
+    const float open3[4] = { pack12Ones, shifted ? 0.75f : 1.0f, pack12Halves, 0.0f };
     vtkFXRenderUtilities::ClearTargets(
       static_cast<int>(targets.size()), this->Channels == 3 ? open3 : open1);
     return;

@@ -24,7 +24,9 @@
  *   for an edge;
  * - a crease where the two normals differ by more than CreaseAngle.
  * Lines of LineWidth pixels (at LineReferenceHeight output rows; the width
- * scales with the viewport's height) are centred on those pixel
+ * scales with the image's height: the viewport's, or a scaled screenshot's,
+ * which vtkWindowToImageFilter renders in tiles of the viewport's size,
+ * whose seams lines do not cross) are centred on those pixel
  * boundaries, with a coverage ramp of one pixel (anti-aliased), in
  * LineColor. Lines are drawn over translucent props and volumes in front
  * of them.
@@ -128,7 +130,8 @@ public:
 
   /**
    * Line width in pixels at LineReferenceHeight rows of output
-   * (0.25..16, default 2); in a viewport of H rows lines are
+   * (0.25..16, default 2); in an image of H rows (a viewport, or a scaled
+   * screenshot) lines are
    * LineWidth x H / LineReferenceHeight pixels wide, within a quarter
    * of a pixel and 32 pixels, so an image rendered at twice the size
    * shows the same drawing.

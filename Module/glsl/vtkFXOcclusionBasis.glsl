@@ -59,16 +59,19 @@ vec3 fxResolveWeights(vec3 n, vec3 s)
 // horizon method): that cosine is linear in its axis, and the basis is
 // orthonormal, so the cosine around s is sum_k (b_k . s) (b_k . w), and
 // with the lobes' open integrals alike (pi / sqrt 3 each) the visibility
-// around s is the channels weighted by b_k . s, normalised to sum 1
-// (negative weights included: exact for the unclamped cosine). For s = n
-// the weights are 1/3 each: the channels' mean, the cosine-weighted
-// visibility of plain ambient occlusion.
+// around s is the channels weighted by b_k . s, normalised to sum 1. For
+// s = n the weights are 1/3 each: the channels' mean, the cosine-weighted
+// visibility of plain ambient occlusion. Negative weights are dropped:
+// exact while s lies within the basis' octant (up to 35 degrees from n),
+// and beyond it a mix of the channels rather than an extrapolation, which
+// grows without bound as s nears the tangent plane (the weights sum to
+// sqrt 3 s . n before normalising: 84 degrees from n gave 5, -2, -2).
 vec3 fxResolveWeightsLinear(vec3 n, vec3 s)
 {
   vec3 t, b;
   fxOcclusionFrame(n, t, b);
   vec3 d = vec3(dot(s, t), dot(s, b), dot(s, n));
-  vec3 c = vec3(dot(d, fxBasis0), dot(d, fxBasis1), dot(d, fxBasis2));
+  vec3 c = max(vec3(dot(d, fxBasis0), dot(d, fxBasis1), dot(d, fxBasis2)), 0.0);
   float sum = c.x + c.y + c.z;
   return sum > 1e-6 ? c / sum : vec3(1.0 / 3.0);
 }

@@ -377,7 +377,12 @@ void main()
   {
     // No surface, or one VTK does not light: open.
 #if FX_CHANNELS == 3
+#if FX_METHOD == 1
+    // (stored as (v + 0.5) / 2, see fxHorizonOcclusion)
+    gl_FragData[0] = vec4(fxPack12(vec2(0.75)), 0.75, fxPack12(vec2(0.5)), depth);
+#else
     gl_FragData[0] = vec4(fxPack12(vec2(1.0)), 1.0, fxPack12(vec2(0.5)), depth);
+#endif
 #if FX_BLEED
     gl_FragData[1] = vec4(0.0, 0.0, 0.0, 1.0);
 #endif

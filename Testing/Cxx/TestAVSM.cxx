@@ -983,14 +983,15 @@ int TestAVSM(int, char*[])
                Visibility(window, MakeAVSM(8, true, true),
                  { Quad(-10, 0, 1, 0.3), Quad(-10, 0, 2, 0.5) }, true, 1, 1.5, 180.0),
                0.7, 1e-3) == EXIT_SUCCESS, "");
-    // A lamp 1000 units up, 70 times the props' radius: the bias is a
-    // fraction of the props' size, not of the cube's depth range (which
-    // made it about 1 unit here: the slab 0.5 above the ground cast
-    // nothing).
+    // A lamp 1000 units up, 70 times the props' radius: one perspective
+    // view aimed at the props, not a cube whose face held them in about 4
+    // of its texels and whose bias, a fraction of its depth range, came to
+    // about 1 unit (the slab 0.5 above the ground cast nothing). Bias is
+    // now a fraction of the props' diameter for every view.
     FX_CHECK(CheckHalves("far point light, slab 0.5 over the ground",
-               Visibility(window, MakeAVSM(8, false, true), { Quad(-10, 0, 0.5, 0.3) }, true, 1,
-                 1000.0, 180.0),
+               Visibility(window, omni, { Quad(-10, 0, 0.5, 0.3) }, true, 1, 1000.0, 180.0),
                0.7, 1e-3) == EXIT_SUCCESS, "");
+    FX_CHECK(omni->GetNumberOfViews() == 1, "a far point light has " << omni->GetNumberOfViews() << " views");
   }
   FX_CHECK(CheckTwoLights(window) == EXIT_SUCCESS, "two casting lights");
 

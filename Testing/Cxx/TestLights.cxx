@@ -119,6 +119,21 @@ int TestLights(int, char*[])
   FX_CHECK(std::isinf(vtkFXLightTiles::Range(1.0, flat, 1.0 / 512.0)), "VTK's default never fades");
   const double dim[3] = { 2000.0, 0.0, 0.0 };
   FX_CHECK(vtkFXLightTiles::Range(1.0, dim, 1.0 / 512.0) < 0.0, "a light under the cutoff");
+  // Denominators that fall: to 0 (no range), or dip before they grow (the
+  // range beyond the dip, though the light is dim at its own position).
+  {
+    const double falling[3] = { 1.0, 0.0, -0.01 }, linearFalling[3] = { 1.0, -0.1, 0.0 };
+    FX_CHECK(std::isinf(vtkFXLightTiles::Range(5e-4, falling, 1.0 / 512.0)), "a2 < 0");
+    FX_CHECK(std::isinf(vtkFXLightTiles::Range(5e-4, linearFalling, 1.0 / 512.0)), "a1 < 0, a2 = 0");
+    // 1 - 0.4 d + 0.05 d^2: lowest 0.2 at d = 4; with intensity 0.1 the
+    // light there is 0.5, at the light 0.1; 2 x 0.1 / cutoff 0.25 = 0.8
+    // is reached again at d = 4 + sqrt(12) = 7.46.
+    const double dip[3] = { 1.0, -0.4, 0.05 };
+    const double r = vtkFXLightTiles::Range(0.1, dip, 0.25);
+    FX_CHECK(std::fabs(r - (4.0 + std::sqrt(12.0))) < 1e-9, "a dipping denominator: range " << r);
+    const double zeroDip[3] = { 1.0, -2.0, 1.0 }; // (1 - d)^2: infinite at d = 1
+    FX_CHECK(std::isinf(vtkFXLightTiles::Range(1e-6, zeroDip, 1.0 / 512.0)), "a dip to 0");
+  }
   // A quadratic term tiny against the linear one: the range of the linear
   // term (1023), not 0 from cancellation.
   const double nearlyLinear[3] = { 1.0, 1.0, 1e-20 };

@@ -145,6 +145,7 @@ int TestResize(int, char*[])
     std::cout << (variant == 0 ? "stencil-capable" : "multisampled")
               << " window through the HDR target with translucent props: " << largest
               << " levels off the image without it (" << passes << ")" << std::endl;
+    FX_CHECK(passes.find("hdr-target") != std::string::npos, "no HDR target: " << passes);
     FX_CHECK(largest <= 2, "the HDR target in a special window");
   }
   return EXIT_SUCCESS;
