@@ -47,7 +47,9 @@
  * (v + 0.5) / 2 (the unclamped lobes take -0.37..1.37). The cosine around a
  * shading normal s is sum_k (b_k . s)(b_k . w) for the orthonormal basis,
  * so the resolve weights the channels by b_k . s normalised to sum 1
- * (linear, not the seed's squares); with s = n they are 1/3 and the result
+ * (linear, not the seed's squares; negative weights dropped, which keeps
+ * it exact within 35 degrees of n and a mix of the channels beyond); with
+ * s = n they are 1/3 and the result
  * is plain horizon-based AO (TestDirectionalOcclusion: within 0.012 per
  * band). Measured with vtkfx-bench do (640x480, 16 samples, against
  * hemisphere DO at its default 15): 0.9 to 3.3 dB closer to the reference
