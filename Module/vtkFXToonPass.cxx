@@ -54,6 +54,7 @@ const char* const GatherDefines = "//VTK::System::Dec\n"
                                   "#else\n"
                                   "#define FX_GATHER 0\n"
                                   "#endif\n";
+const char* const NoGatherDefines = "//VTK::System::Dec\n#define FX_GATHER 0\n";
 }
 
 vtkFXToonPass::vtkFXToonPass()
@@ -255,7 +256,7 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   this->TilesFlagged = false;
   std::string fs = vtkFXToonEdgesFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
-    std::string(GatherDefines) + "#define FX_SILHOUETTES " + (this->Silhouettes ? "1" : "0") +
+    std::string(this->UseTextureGather ? GatherDefines : NoGatherDefines) + "#define FX_SILHOUETTES " + (this->Silhouettes ? "1" : "0") +
       "\n#define FX_CREASES " + (this->Creases ? "1" : "0") + "\n#define FX_TILE " +
       std::to_string(LineTileSize) + "\n" +
       (flag
@@ -401,10 +402,12 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
   // The source depends on the window alone: made again only when it
   // changes (with the viewport's height).
   if (this->LineSource.empty() || this->LineSourceWindow[0] != lineWindow[0] ||
-    this->LineSourceWindow[1] != lineWindow[1])
+    this->LineSourceWindow[1] != lineWindow[1] || this->LineSourceGathers != this->UseTextureGather)
   {
     this->LineSource = vtkFXToonLinesFS;
-    vtkShaderProgram::Substitute(this->LineSource, "//VTK::System::Dec", GatherDefines, false);
+    vtkShaderProgram::Substitute(this->LineSource, "//VTK::System::Dec",
+      this->UseTextureGather ? GatherDefines : NoGatherDefines, false);
+    this->LineSourceGathers = this->UseTextureGather;
     vtkShaderProgram::Substitute(this->LineSource, "//VTK::FXToonLines::Midpoints",
       MidpointCode(lineWindow[0], lineWindow[1]), false);
     this->LineSourceWindow[0] = lineWindow[0];
@@ -516,6 +519,7 @@ void vtkFXToonPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LineWidth: " << this->LineWidth << " at " << this->LineReferenceHeight
      << " rows\n";
   os << indent << "CullLineTiles: " << this->CullLineTiles << "\n";
+  os << indent << "UseTextureGather: " << this->UseTextureGather << "\n";
   os << indent << "LineColor: " << this->LineColor[0] << " " << this->LineColor[1] << " "
      << this->LineColor[2] << "\n";
 }

@@ -165,6 +165,17 @@ public:
   vtkBooleanMacro(CullLineTiles, bool);
 
   /**
+   * Read the G-buffer and the marks four texels at a time with
+   * textureGather where the context has it (GLSL 4.00 or
+   * ARB_gpu_shader5; default on); off, or without it, texel by texel.
+   * The image is the same either way; off is for comparison (and for a
+   * driver whose gathers misbehave).
+   */
+  vtkSetMacro(UseTextureGather, bool);
+  vtkGetMacro(UseTextureGather, bool);
+  vtkBooleanMacro(UseTextureGather, bool);
+
+  /**
    * Whether the last frame with lines drew them over flagged tiles only.
    */
   bool GetLineTilesCulled() const { return this->TilesFlagged; }
@@ -235,6 +246,7 @@ protected:
   double LineColor[3] = { 0.0, 0.0, 0.0 };
 
   bool CullLineTiles = true;
+  bool UseTextureGather = true;
   int OutputRows = 1; // the image's rows (tiles of a scaled screenshot included)
   bool TilesFlagged = false; // this frame's edges pass flagged the tiles
   vtkSmartPointer<vtkTextureObject> Edges;
@@ -242,7 +254,8 @@ protected:
   vtkSmartPointer<vtkOpenGLFramebufferObject> EdgeFrameBuffer;
   vtkFXRenderUtilities::FullScreenQuad EdgeQuad;
   vtkNew<vtkOpenGLVertexArrayObject> LineTiles; // no attributes: a 4-vertex strip per tile
-  std::string LineSource;                       // the lines' fragment shader, generated
+  std::string LineSource; // the lines' fragment shader, generated
+  bool LineSourceGathers = true; // UseTextureGather when LineSource was made
   int LineSourceWindow[2] = { 0, 0 };           // for this line window
 
 private:

@@ -9,7 +9,8 @@
 //   drawing); on the fandisk (normals split at 30 degrees, as CAD parts are
 //   shown) creases add lines inside the part;
 // - lines drawn only over the tiles the edges pass flags give the same
-//   image, byte for byte, as lines drawn over the whole image, at widths
+//   image, byte for byte, as lines drawn over the whole image, and as
+//   lines read texel by texel instead of by textureGather, at widths
 //   that take each of the lines shader's forms and a size that is not a
 //   multiple of the tile;
 // - the same image at scene scales 1e-6 and 1e6, translated 1e6 from the
@@ -440,14 +441,15 @@ std::vector<unsigned char> RenderMoved(vtkRenderWindow* window, double scale, do
 
 // The bunny with lines of `width` pixels, drawn over flagged tiles only or
 // over the whole image, at 403x301 (tiles of 8 px do not divide it).
-std::vector<unsigned char> RenderLines(
-  vtkRenderWindow* window, double width, bool cull, bool lines, bool* culled = nullptr)
+std::vector<unsigned char> RenderLines(vtkRenderWindow* window, double width, bool cull,
+  bool lines, bool* culled = nullptr, bool gather = true)
 {
   window->SetSize(403, 301);
   vtkNew<vtkFXToonPass> toon;
   toon->SetLineReferenceHeight(301);
   toon->SetLineWidth(width);
   toon->SetCullLineTiles(cull);
+  toon->SetUseTextureGather(gather);
   toon->SetFeatureLines(lines);
   auto image = RenderBunny(window, toon);
   if (culled)
@@ -476,20 +478,26 @@ int CheckTileCulling(vtkRenderWindow* window)
     FX_CHECK(tilesCulled, "tile culling did not run at " << width << " px");
     const auto whole = RenderLines(window, width, false, true);
     const auto none = RenderLines(window, width, true, false);
-    FX_CHECK(!culled.empty() && culled.size() == whole.size() && none.size() == whole.size(),
+    // (the texel-by-texel reads, where a context lacks textureGather)
+    const auto fetched = RenderLines(window, width, true, true, nullptr, false);
+    FX_CHECK(!culled.empty() && culled.size() == whole.size() && none.size() == whole.size() &&
+        fetched.size() == whole.size(),
       "the bunny did not render");
-    size_t differing = 0, lined = 0;
+    size_t differing = 0, lined = 0, differingFetched = 0;
     for (size_t i = 0; i < culled.size(); ++i)
     {
       differing += culled[i] != whole[i] ? 1 : 0;
+      differingFetched += culled[i] != fetched[i] ? 1 : 0;
       lined += culled[i] != none[i] ? 1 : 0;
     }
     std::cout << "lines of " << width << " px: " << lined
               << " bytes changed by lines, culled (tiles culled: " << (tilesCulled ? "yes" : "no")
-              << ") and whole images differ in " << differing
-              << std::endl;
+              << ") and whole images differ in " << differing << ", gathered and fetched in "
+              << differingFetched << std::endl;
     FX_CHECK(lined > 1000, "no lines drawn at " << width << " px");
     FX_CHECK(differing == 0, differing << " bytes differ with tile culling at " << width << " px");
+    FX_CHECK(differingFetched == 0,
+      differingFetched << " bytes differ without textureGather at " << width << " px");
   }
   return EXIT_SUCCESS;
 }
