@@ -502,6 +502,44 @@ int CheckTileCulling(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
+// A renderer whose viewport is the right half of a 402x301 window draws
+// the lines a 201x301 window draws: the same bytes in that half (the
+// edges texture starts at the viewport's corner, gl_FragCoord at the
+// window's; the tile quads are placed in the viewport).
+int CheckOffsetViewport(vtkRenderWindow* window)
+{
+  // (both cameras framed for the viewport's aspect)
+  vtkNew<vtkFXToonPass> alone;
+  window->SetSize(201, 301);
+  const auto small = RenderBunny(window, alone, [](vtkRenderer* renderer) { renderer->ResetCamera(); });
+  vtkNew<vtkFXToonPass> offset;
+  window->SetSize(402, 301);
+  const auto wide = RenderBunny(window, offset, [](vtkRenderer* renderer) {
+    renderer->SetViewport(0.5, 0.0, 1.0, 1.0);
+    renderer->ResetCamera();
+  });
+  FX_CHECK(small.size() == 3u * 201 * 301 && wide.size() == 3u * 402 * 301, "no images");
+  size_t differing = 0;
+  for (int y = 0; y < 301; ++y)
+  {
+    for (int x = 0; x < 201; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        differing += small[3 * (static_cast<size_t>(y) * 201 + x) + c] !=
+            wide[3 * (static_cast<size_t>(y) * 402 + 201 + x) + c]
+          ? 1
+          : 0;
+      }
+    }
+  }
+  std::cout << "lines in a viewport at x = 201: " << differing
+            << " bytes differ from a window of the viewport's size" << std::endl;
+  FX_CHECK(differing == 0, differing << " bytes differ in an offset viewport");
+  window->SetSize(400, 300);
+  return EXIT_SUCCESS;
+}
+
 int CheckScaleInvariance(vtkRenderWindow* window)
 {
   window->SetSize(320, 240);
@@ -669,6 +707,7 @@ int TestToon(int, char*[])
   FX_CHECK(CheckScaleInvariance(window) == EXIT_SUCCESS, "scale invariance");
   FX_CHECK(CheckUnlitBackdrop(window) == EXIT_SUCCESS, "unlit backdrop");
   FX_CHECK(CheckScaledScreenshot(window) == EXIT_SUCCESS, "scaled screenshot");
+  FX_CHECK(CheckOffsetViewport(window) == EXIT_SUCCESS, "offset viewport");
 
   // What a configuration needs and no more: bands alone read no linear
   // depth; lines of no kind (silhouettes and creases off) are no work.
