@@ -422,10 +422,16 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
   const int levels =
     this->GetNumberOfLevels(static_cast<int>(full->GetWidth()), static_cast<int>(full->GetHeight()),
       static_cast<int>(full->GetHeight()) * std::max(1, window->GetTileScale()[1]));
-  while (static_cast<int>(this->Levels.size()) > levels)
+  if (static_cast<int>(this->Levels.size()) > levels)
   {
-    this->Levels.back()->Release(window);
-    this->Levels.pop_back();
+    while (static_cast<int>(this->Levels.size()) > levels)
+    {
+      this->Levels.back()->Release(window);
+      this->Levels.pop_back();
+    }
+    // The new coarsest level is read from its Down texture: no Up.
+    vtkFXRenderUtilities::Release(this->Levels.back()->Up, window);
+    vtkFXRenderUtilities::Release(this->Levels.back()->UpTarget, window);
   }
   while (static_cast<int>(this->Levels.size()) < levels)
   {
