@@ -934,7 +934,7 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
   }
 }
 
-void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
+bool vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
 {
   const int nodes = this->Nodes();
   const int targets = nodes / 2;
@@ -994,6 +994,10 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
     targetList.push_back(t);
   }
   vtkFXRenderUtilities::RenderTargetScope target(window, this->ResolveFrameBuffer, targetList);
+  if (!target.IsComplete())
+  {
+    return false;
+  }
   if (vtkShaderProgram* program =
         vtkFXRenderUtilities::ReadyQuad(this->ResolveQuad, window, fs))
   {
@@ -1002,6 +1006,7 @@ void vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
     this->SetViewUniforms(program);
     this->ResolveQuad.Helper->Render();
   }
+  return true;
 }
 
 std::string vtkFXAVSMPass::CurveDefines(bool exact) const
@@ -1159,7 +1164,7 @@ void vtkFXAVSMPass::ReleaseCurveUnits()
   }
 }
 
-void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window)
+bool vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window)
 {
   vtkTextureObject* depth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
   vtkFXRenderUtilities::EnsureTexture(this->Visibility, window, static_cast<int>(depth->GetWidth()),
@@ -1187,13 +1192,17 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
   }
 
   vtkFXRenderUtilities::RenderTargetScope target(window, this->LookUpFrameBuffer, this->Visibility);
+  if (!target.IsComplete())
+  {
+    return false;
+  }
   vtkShaderProgram* program =
     vtkFXRenderUtilities::ReadyQuad(this->LookUpQuad, window, fs);
   if (!program)
   {
     const float unshadowed[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
     vtkFXRenderUtilities::ClearTargets(1, unshadowed);
-    return;
+    return true;
   }
   depth->Activate();
   program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());
@@ -1202,6 +1211,7 @@ void vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
   this->LookUpQuad.Helper->Render();
   depth->Deactivate();
   this->ReleaseCurveUnits();
+  return true;
 }
 
 void vtkFXAVSMPass::Render(const vtkRenderState* s)
@@ -1271,9 +1281,10 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
   this->Capture(s, window);
   this->StoredFragments = std::min<vtkIdType>(this->StoredFragments, this->CapturedFragments);
   phase(0);
+  bool drawn = true; // the curves and the visibility had their storage
   if (!this->Exact)
   {
-    this->Resolve(window);
+    drawn = this->Resolve(window);
   }
   else
   {
@@ -1286,7 +1297,7 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
     vtkFXRenderUtilities::Release(this->ResolveFrameBuffer, window);
   }
   phase(1);
-  this->LookUp(ren, window);
+  drawn = drawn && this->LookUp(ren, window);
   phase(2);
   // The casters and lights are the frame's (HasWork sets them again); the
   // lights' indices and views stay for the translucent step.
@@ -1298,6 +1309,19 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
   for (GLuint i = 0; i < NumberOfBuffers; ++i)
   {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, 0);
+  }
+  if (!drawn)
+  {
+    if (!this->ReportedTargetFailure)
+    {
+      vtkErrorMacro("AVSM: OpenGL could not allocate the "
+        << (this->Exact ? "visibility texture" : "curve or visibility textures") << " ("
+        << this->AtlasSize[0] << " x " << this->AtlasSize[1] << " texels of curves, "
+        << this->Nodes() / 2 << " RGBA32F textures); no shadows (lower ShadowMapSize, "
+        << "NumberOfNodes or MaximumNumberOfLights).");
+      this->ReportedTargetFailure = true;
+    }
+    this->AbandonFrame(window);
   }
 }
 

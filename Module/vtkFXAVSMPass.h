@@ -332,8 +332,9 @@ protected:
   static bool ReadTexel(vtkTextureObject* texture, int x, int y, float texel[4]);
   void BindBuffers(vtkShaderProgram* program);
   void Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
-  void Resolve(vtkOpenGLRenderWindow* window);
-  void LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window);
+  // Both return false when their target could not be allocated.
+  bool Resolve(vtkOpenGLRenderWindow* window);
+  bool LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window);
   std::string CurveDefines(bool exact) const;
   std::string CurveCode() const;
   void SetCurveUniforms(vtkShaderProgram* program);
@@ -357,6 +358,7 @@ protected:
   bool Bilinear = true;
   double Bias = 1e-3;
   double BoundingDiameter = 2.0; // this frame's visible props' (FitLightViews)
+  bool ReportedTargetFailure = false;
   double SplatRadius = 1.7320508075688772;
   int MaximumNumberOfLights = 1;
   int InitialNodesPerTexel = 4;

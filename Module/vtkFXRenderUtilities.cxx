@@ -239,6 +239,11 @@ vtkFXRenderUtilities::RenderTargetScope::~RenderTargetScope()
   this->State->PopFramebufferBindings();
 }
 
+bool vtkFXRenderUtilities::RenderTargetScope::IsComplete() const
+{
+  return glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+}
+
 int vtkFXRenderUtilities::ProjectBox(
   const double box[6], const double m[16], double ndcMin[3], double ndcMax[3])
 {

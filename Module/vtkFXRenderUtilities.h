@@ -193,6 +193,12 @@ public:
       vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer, int width, int height);
     ~RenderTargetScope();
 
+    /**
+     * Whether the bound framebuffer can be drawn into (a target whose
+     * storage OpenGL could not allocate leaves it incomplete).
+     */
+    bool IsComplete() const;
+
   private:
     RenderTargetScope(vtkOpenGLRenderWindow* window,
       vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
