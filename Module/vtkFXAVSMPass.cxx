@@ -16,7 +16,6 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkProp.h"
-#include "vtkPropCollection.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkPixelBufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -533,9 +532,6 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
       }
       const double axial = spot ? vtkMath::Dot(toCenter, direction) : distance;
       const double farPlane = std::max(axial + radius, 1e-30);
-      // (a cube face holds a point only where its axial distance is at
-      // least a third of the square root of 3 of its distance: so no
-      // nearer than the sphere's nearest point over sqrt 3)
       const double nearPlane = std::max(cube ? 0.0 : axial - radius, 1e-3 * farPlane);
       // The cone's half angle; outside the sphere, the angle under which it
       // is seen: tan = r / sqrt(d^2 - r^2); a cube face: 45 degrees.

@@ -172,16 +172,18 @@ std::string vtkFXDirectionalOcclusionPass::ChannelsReadCode()
 {
   // The blurred channels are plain values (bilinear); this pass's own
   // output, when no blur ran, is packed (vtkFXEffectPass::Output::Packing):
-  // read the nearest texel and unpack it.
-  if (this->GetInput("denoised").Texture)
-  {
-    return "vec3 @channels()\n{\n  return texture(@occlusion, texCoord * @scale + @offset).rgb;\n}\n";
-  }
-  return "vec3 @channels()\n{\n"
-         "  ivec2 size = textureSize(@occlusion, 0);\n"
-         "  ivec2 t = clamp(ivec2((texCoord * @scale + @offset) * vec2(size)), ivec2(0), size - 1);\n"
-         "  vec4 texel = texelFetch(@occlusion, t, 0);\n"
-         "  return vec3(fxUnpack12(texel.r), texel.g);\n}\n";
+  // read the nearest texel and unpack it. The horizon method's channels
+  // are stored as (v + 0.5) / 2 (vtkFXSSAOFS.glsl): decoded here, for
+  // every reader.
+  const std::string read = this->GetInput("denoised").Texture
+    ? "  vec3 stored = texture(@occlusion, texCoord * @scale + @offset).rgb;\n"
+    : "  ivec2 size = textureSize(@occlusion, 0);\n"
+      "  ivec2 t = clamp(ivec2((texCoord * @scale + @offset) * vec2(size)), ivec2(0), size - 1);\n"
+      "  vec4 texel = texelFetch(@occlusion, t, 0);\n"
+      "  vec3 stored = vec3(fxUnpack12(texel.r), texel.g);\n";
+  return "vec3 @channels()\n{\n" + read +
+    (this->GetEffectiveMethod() == Horizon ? "  return 2.0 * stored - 0.5;\n}\n"
+                                           : "  return stored;\n}\n");
 }
 
 vtkTextureObject* vtkFXDirectionalOcclusionPass::BleedingToShow()
@@ -230,12 +232,10 @@ std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
       const bool horizon = this->GetEffectiveMethod() == Horizon;
       if (this->ShowChannels)
       {
-        return std::string("    if (@written != 0)\n"
-                           "    {\n"
-                           "      ambientVisibility *= clamp(") +
-          (horizon ? "2.0 * @channels() - 0.5" : "@channels()") +
-          ", 0.0, 1.0);\n"
-          "    }";
+        return "    if (@written != 0)\n"
+               "    {\n"
+               "      ambientVisibility *= clamp(@channels(), 0.0, 1.0);\n"
+               "    }";
       }
       // The seed's resolve: the channels weighted by the shading normal n's
       // squared clamped cosines with the basis of the geometric normal g.
@@ -245,10 +245,6 @@ std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
                          "    {\n"
                          "      vec3 channels = @channels();\n"
                          "      vec3 g = n;\n";
-      if (horizon)
-      {
-        code += "      channels = 2.0 * channels - 0.5; // (stored as (v + 0.5) / 2)\n";
-      }
       if (geometric)
       {
         code += "      vec2 encoded = texture(@geometric, texCoord).rg;\n"

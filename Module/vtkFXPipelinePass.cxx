@@ -1,7 +1,5 @@
 #include "vtkFXPipelinePass.h"
 
-#include "vtkPropCollection.h"
-
 #include "vtkFXBilateralBlurPass.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXDirectionalOcclusionPass.h"
