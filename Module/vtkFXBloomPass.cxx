@@ -421,7 +421,7 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
   }
   const int levels =
     this->GetNumberOfLevels(static_cast<int>(full->GetWidth()), static_cast<int>(full->GetHeight()),
-      static_cast<int>(full->GetHeight()) * std::max(1, window->GetTileScale()[1]));
+      vtkFXRenderUtilities::GetImageRows(window, static_cast<int>(full->GetHeight())));
   if (static_cast<int>(this->Levels.size()) > levels)
   {
     while (static_cast<int>(this->Levels.size()) > levels)

@@ -331,6 +331,11 @@ void vtkFXRenderUtilities::ComputeFrustumRay(
   direction[0][2] = -1.0;
 }
 
+int vtkFXRenderUtilities::GetImageRows(vtkRenderWindow* window, int viewportRows)
+{
+  return viewportRows * std::max(1, window->GetTileScale()[1]);
+}
+
 void vtkFXRenderUtilities::SetFrustumRayUniforms(vtkShaderProgram* program, vtkRenderer* renderer)
 {
   double origin[3][3], direction[3][3];

@@ -23,6 +23,7 @@
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkRenderWindow;
 class vtkRenderer;
 class vtkRenderState;
 class vtkShaderProgram;
@@ -151,6 +152,14 @@ public:
    * (vec3: constant, x, y) on `program` if it has them.
    */
   static void SetFrustumRayUniforms(vtkShaderProgram* program, vtkRenderer* renderer);
+
+  /**
+   * Rows of the image being made from a viewport of `viewportRows`: those,
+   * times the tiles of a scaled screenshot (vtkWindowToImageFilter renders
+   * it tile by tile, each at the window's size). For effects sized in
+   * fractions or pixels of the output (line widths, glow reach).
+   */
+  static int GetImageRows(vtkRenderWindow* window, int viewportRows);
 
   /**
    * Ray terms as described above: origin[3][3] and direction[3][3] are the

@@ -55,6 +55,12 @@ const char* const GatherDefines = "//VTK::System::Dec\n"
                                   "#define FX_GATHER 0\n"
                                   "#endif\n";
 const char* const NoGatherDefines = "//VTK::System::Dec\n#define FX_GATHER 0\n";
+
+// The defines both line shaders take for UseTextureGather.
+const char* GatherDefinesFor(bool useTextureGather)
+{
+  return useTextureGather ? GatherDefines : NoGatherDefines;
+}
 }
 
 vtkFXToonPass::vtkFXToonPass()
@@ -256,7 +262,7 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   this->TilesFlagged = false;
   std::string fs = vtkFXToonEdgesFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
-    std::string(this->UseTextureGather ? GatherDefines : NoGatherDefines) + "#define FX_SILHOUETTES " + (this->Silhouettes ? "1" : "0") +
+    std::string(GatherDefinesFor(this->UseTextureGather)) + "#define FX_SILHOUETTES " + (this->Silhouettes ? "1" : "0") +
       "\n#define FX_CREASES " + (this->Creases ? "1" : "0") + "\n#define FX_TILE " +
       std::to_string(LineTileSize) + "\n" +
       (flag
@@ -405,8 +411,8 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
     this->LineSourceWindow[1] != lineWindow[1] || this->LineSourceGathers != this->UseTextureGather)
   {
     this->LineSource = vtkFXToonLinesFS;
-    vtkShaderProgram::Substitute(this->LineSource, "//VTK::System::Dec",
-      this->UseTextureGather ? GatherDefines : NoGatherDefines, false);
+    vtkShaderProgram::Substitute(
+      this->LineSource, "//VTK::System::Dec", GatherDefinesFor(this->UseTextureGather), false);
     this->LineSourceGathers = this->UseTextureGather;
     vtkShaderProgram::Substitute(this->LineSource, "//VTK::FXToonLines::Midpoints",
       MidpointCode(lineWindow[0], lineWindow[1]), false);
@@ -482,11 +488,10 @@ void vtkFXToonPass::Render(const vtkRenderState* s)
   }
   vtkOpenGLRenderWindow* window =
     vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
-  // The image's rows: the viewport's, times the tiles of a scaled
-  // screenshot (vtkWindowToImageFilter renders it tile by tile, each at
-  // the window's size), so that lines keep their width in the whole image.
-  this->OutputRows = static_cast<int>(
-    this->GBuffer->GetChannelTexture(GB::LinearDepth)->GetHeight()) * std::max(1, window->GetTileScale()[1]);
+  // (so that lines keep their width in the whole image of a scaled
+  // screenshot)
+  this->OutputRows = vtkFXRenderUtilities::GetImageRows(
+    window, static_cast<int>(this->GBuffer->GetChannelTexture(GB::LinearDepth)->GetHeight()));
   if (this->FindEdges(s, window))
   {
     this->DrawLines(s, window);
