@@ -502,6 +502,30 @@ int CheckTwoLights(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
+// GroundScene's ground made black on a black background, with `props`
+// added in order, through a pipeline without or with AVSM: the image.
+std::vector<unsigned char> RenderOnBlackGround(
+  vtkRenderWindow* window, const std::vector<vtkSmartPointer<vtkActor>>& props, bool shadows)
+{
+  vtkActor* ground = nullptr;
+  vtkRenderer* renderer = GroundScene(window, true, &ground);
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  ground->GetProperty()->SetColor(0.0, 0.0, 0.0);
+  for (const auto& prop : props)
+  {
+    renderer->AddActor(prop);
+  }
+  vtkNew<vtkFXPipelinePass> pipeline;
+  if (shadows)
+  {
+    vtkNew<vtkFXAVSMPass> avsm;
+    pipeline->AddEffect("avsm", avsm);
+  }
+  renderer->SetPass(pipeline);
+  window->Render();
+  return vtkFXScenes::Capture(window);
+}
+
 // Translucent receivers: a nearly opaque white slab (opacity 0.99) at
 // z = 1 lit from straight above, under a slab of opacity 0.3 at z = 2 over
 // x < 0, on a black ground. Drawn in that order, the upper slab blends over
@@ -513,32 +537,16 @@ int CheckTwoLights(vtkRenderWindow* window)
 // difference of 0.7 x 202 x 0.3 = 42 levels: 1.5 / 42 = 0.036, so 0.04.
 int CheckTranslucentReceiver(vtkRenderWindow* window)
 {
-  const auto render = [window](bool upper, bool shadows) {
-    vtkActor* ground = nullptr;
-    vtkRenderer* renderer = GroundScene(window, true, &ground);
-    renderer->SetBackground(0.0, 0.0, 0.0);
-    ground->GetProperty()->SetColor(0.0, 0.0, 0.0);
-    auto lower = Quad(-10.0, 10.0, 1.0, 0.99);
-    lower->GetProperty()->SetDiffuse(0.8);
-    lower->GetProperty()->SetAmbient(0.0);
-    lower->GetProperty()->SetSpecular(0.0);
-    renderer->AddActor(lower);
-    if (upper)
-    {
-      auto top = Quad(-10.0, 0.0, 2.0, 0.3);
-      top->GetProperty()->SetAmbient(0.0);
-      top->GetProperty()->SetSpecular(0.0);
-      renderer->AddActor(top);
-    }
-    vtkNew<vtkFXPipelinePass> pipeline;
-    if (shadows)
-    {
-      vtkNew<vtkFXAVSMPass> avsm;
-      pipeline->AddEffect("avsm", avsm);
-    }
-    renderer->SetPass(pipeline);
-    window->Render();
-    return vtkFXScenes::Capture(window);
+  auto lower = Quad(-10.0, 10.0, 1.0, 0.99);
+  lower->GetProperty()->SetDiffuse(0.8);
+  lower->GetProperty()->SetAmbient(0.0);
+  lower->GetProperty()->SetSpecular(0.0);
+  auto top = Quad(-10.0, 0.0, 2.0, 0.3);
+  top->GetProperty()->SetAmbient(0.0);
+  top->GetProperty()->SetSpecular(0.0);
+  using Actors = std::vector<vtkSmartPointer<vtkActor>>;
+  const auto render = [&](bool upper, bool shadows) {
+    return RenderOnBlackGround(window, upper ? Actors{ lower, top } : Actors{ lower }, shadows);
   };
   const auto alone = render(false, false);
   const auto shadowed = render(true, true);
@@ -577,35 +585,19 @@ int CheckTranslucentReceiver(vtkRenderWindow* window)
 // without AVSM, within 2 levels (8-bit images; measured 0).
 int CheckTiltedTranslucentReceiver(vtkRenderWindow* window)
 {
-  std::vector<unsigned char> images[2];
-  for (bool shadows : { false, true })
-  {
-    vtkActor* ground = nullptr;
-    vtkRenderer* renderer = GroundScene(window, true, &ground);
-    renderer->SetBackground(0.0, 0.0, 0.0);
-    ground->GetProperty()->SetColor(0.0, 0.0, 0.0);
-    vtkNew<vtkPlaneSource> plane;
-    plane->SetOrigin(-2.0, -3.0, 2.0);
-    plane->SetPoint1(2.0, -3.0, 8.0);
-    plane->SetPoint2(-2.0, 3.0, 2.0);
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(plane->GetOutputPort());
-    vtkNew<vtkActor> slab;
-    slab->SetMapper(mapper);
-    slab->GetProperty()->SetOpacity(0.99);
-    slab->GetProperty()->SetAmbient(0.0);
-    slab->GetProperty()->SetSpecular(0.0);
-    renderer->AddActor(slab);
-    vtkNew<vtkFXPipelinePass> pipeline;
-    if (shadows)
-    {
-      vtkNew<vtkFXAVSMPass> avsm;
-      pipeline->AddEffect("avsm", avsm);
-    }
-    renderer->SetPass(pipeline);
-    window->Render();
-    images[shadows ? 1 : 0] = vtkFXScenes::Capture(window);
-  }
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-2.0, -3.0, 2.0);
+  plane->SetPoint1(2.0, -3.0, 8.0);
+  plane->SetPoint2(-2.0, 3.0, 2.0);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(plane->GetOutputPort());
+  auto slab = vtkSmartPointer<vtkActor>::New();
+  slab->SetMapper(mapper);
+  slab->GetProperty()->SetOpacity(0.99);
+  slab->GetProperty()->SetAmbient(0.0);
+  slab->GetProperty()->SetSpecular(0.0);
+  const std::vector<unsigned char> images[2] = { RenderOnBlackGround(window, { slab }, false),
+    RenderOnBlackGround(window, { slab }, true) };
   int lit = 0, worst = 0;
   for (size_t i = 1; i < images[0].size(); i += 3)
   {

@@ -177,6 +177,19 @@ int CheckBands(vtkRenderWindow* window, const std::vector<double>& thresholds)
   return EXIT_SUCCESS;
 }
 
+// Per pixel, 1 - lined / plain in the green channel (0 where plain is 0).
+std::vector<double> Coverage(
+  const std::vector<unsigned char>& lined, const std::vector<unsigned char>& plain)
+{
+  std::vector<double> coverage(plain.size() / 3, 0.0);
+  for (size_t i = 0; i < coverage.size(); ++i)
+  {
+    const double base = plain[3 * i + 1];
+    coverage[i] = base > 0.0 ? std::max(0.0, 1.0 - lined[3 * i + 1] / base) : 0.0;
+  }
+  return coverage;
+}
+
 // Line coverage per pixel: 1 - (image with lines) / (image without), in the
 // green channel (black lines over a grey background and a sphere whose
 // ambient term keeps it above 0.4).
@@ -191,12 +204,7 @@ std::vector<double> LineCoverage(
   window->Render();
   const auto plain = vtkFXScenes::Capture(window);
   toon->FeatureLinesOn();
-  std::vector<double> coverage(plain.size() / 3, 0.0);
-  for (size_t i = 0; i < coverage.size(); ++i)
-  {
-    const double base = plain[3 * i + 1];
-    coverage[i] = base > 0.0 ? std::max(0.0, 1.0 - lined[3 * i + 1] / base) : 0.0;
-  }
+  const std::vector<double> coverage = Coverage(lined, plain);
   if (plainImage)
   {
     *plainImage = plain;
@@ -655,16 +663,6 @@ int CheckScaledScreenshot(vtkRenderWindow* window)
     }
     return pixels;
   };
-  const auto coverageOf = [](const std::vector<unsigned char>& lined,
-                            const std::vector<unsigned char>& plain) {
-    double sum = 0.0;
-    for (size_t i = 0; i < plain.size() / 3; ++i)
-    {
-      const double base = plain[3 * i + 1];
-      sum += base > 0.0 ? std::max(0.0, 1.0 - lined[3 * i + 1] / base) : 0.0;
-    }
-    return sum;
-  };
   vtkFXToonPass* toon = MakeScene(window, Sphere(0.5, 0.5), false);
   toon->BandsOff();
   window->SetSize(400, 300);
@@ -674,7 +672,7 @@ int CheckScaledScreenshot(vtkRenderWindow* window)
   toon->FeatureLinesOff();
   const auto plain = capture(2);
   toon->FeatureLinesOn();
-  const double tiled = coverageOf(lined, plain);
+  const double tiled = TotalCoverage(Coverage(lined, plain));
   window->SetSize(400, 300);
   std::cout << "lines at 400x300: coverage " << big << " in a window, " << tiled
             << " in a screenshot of a 200x150 window at scale 2" << std::endl;
