@@ -1,5 +1,6 @@
 #include "vtkFXCompositePass.h"
 
+#include "vtkFXCompositeDepthFS.h"
 #include "vtkFXCompositeFS.h"
 #include "vtkFXEffectPass.h"
 #include "vtkFXLightingFS.h"
@@ -18,6 +19,7 @@
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkRenderState.h"
@@ -254,6 +256,7 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
           << "#define FX_HAS_AMBIENT " << (gb->GetChannelTexture(GB::Ambient) ? 1 : 0) << "\n"
           << "#define FX_HAS_EMISSION " << (hasEmission ? 1 : 0) << "\n"
           << "#define FX_NEEDS_POSITION " << (needsPosition ? 1 : 0) << "\n"
+          << "#define FX_WRITES_DEPTH " << (this->UsedDepthPrepass ? 0 : 1) << "\n"
           << "#define FX_CHANNEL_NORMAL " << GB::Normal << "\n"
           << "#define FX_CHANNEL_DEPTH " << GB::LinearDepth << "\n"
           << "#define FX_CHANNEL_GEOMETRIC_NORMAL " << GB::GeometricNormal << "\n"
@@ -486,11 +489,51 @@ void vtkFXCompositePass::Draw(vtkOpenGLRenderer* ren)
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_LEQUAL);
   state->vtkglDepthMask(GL_TRUE);
+  if (this->UsedDepthPrepass)
+  {
+    this->DrawDepthPrepass(ren);
+    // The framebuffer's depth was the clear value (1) everywhere: below 1
+    // now exactly where the pre-pass wrote a surface. The lighting quad,
+    // at the far plane, passes there only.
+    state->vtkglDepthFunc(GL_GREATER);
+    state->vtkglDepthMask(GL_FALSE);
+  }
   // Blend like VTK's opaque pass, so that opacity < 1 forced opaque
   // (vtkActor::ForceOpaque) shows the background as it does forward.
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   this->Quad.Helper->Render();
+}
+
+bool vtkFXCompositePass::CanUseDepthPrepass(vtkOpenGLRenderer* ren)
+{
+  // (the pre-pass relies on the framebuffer's depth being the clear value
+  // everywhere: what the camera pass leaves when the renderer and its
+  // window erase and the renderer does not preserve its depth; the
+  // composite is the first to draw)
+  if (!this->UseDepthPrepass || !ren->GetErase() ||
+    !ren->GetRenderWindow()->GetErase() || ren->GetPreserveDepthBuffer())
+  {
+    return false;
+  }
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  return vtkFXRenderUtilities::ReadyQuad(this->DepthQuad, window, vtkFXCompositeDepthFS) != nullptr;
+}
+
+void vtkFXCompositePass::DrawDepthPrepass(vtkOpenGLRenderer* ren)
+{
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
+  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  state->vtkglDisable(GL_BLEND);
+  vtkShaderProgram* program = this->DepthQuad.Helper->Program;
+  window->GetShaderCache()->ReadyShaderProgram(program);
+  vtkTextureObject* depth = this->GBuffer->GetDepthTexture();
+  depth->Activate();
+  program->SetUniformi("fxHardwareDepth", depth->GetTextureUnit());
+  this->DepthQuad.Helper->Render();
+  window->GetShaderCache()->ReadyShaderProgram(this->Quad.Helper->Program);
 }
 
 void vtkFXCompositePass::Render(const vtkRenderState* s)
@@ -504,6 +547,7 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
     return;
   }
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  this->UsedDepthPrepass = this->CanUseDepthPrepass(ren);
   const std::string fragmentShader = this->BuildFragmentShader(ren);
   if (fragmentShader.empty())
   {
@@ -515,6 +559,8 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
     }
     return;
   }
+  // (the define FX_WRITES_DEPTH changes the source with the quad's depth)
+  this->Quad.AtFarPlane = this->UsedDepthPrepass;
   vtkShaderProgram* program =
     vtkFXRenderUtilities::ReadyQuad(this->Quad, window, fragmentShader);
   if (!program)
@@ -550,6 +596,7 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
 void vtkFXCompositePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkFXRenderUtilities::ReleaseQuad(this->Quad, w);
+  vtkFXRenderUtilities::ReleaseQuad(this->DepthQuad, w);
   vtkFXRenderUtilities::Release(this->LightTexture, w);
   if (this->LightTiles)
   {
@@ -568,6 +615,7 @@ void vtkFXCompositePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseAmbient: " << this->UseAmbient << "\n";
   os << indent << "UseEmission: " << this->UseEmission << "\n";
   os << indent << "MaximumUniformLights: " << this->MaximumUniformLights << "\n";
+  os << indent << "UseDepthPrepass: " << this->UseDepthPrepass << "\n";
   os << indent << "Contributors:";
   for (const auto& contributor : this->Contributors)
   {

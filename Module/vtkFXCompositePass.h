@@ -21,11 +21,13 @@
  * buffer, so VTK's translucent, volume and overlay steps that follow are
  * depth-tested as usual. Background pixels are left untouched.
  *
- * Cost: one full-screen pass, one texture read per allocated channel and a
- * loop over the lights per pixel (on the light-texture path, over the
- * lights of the pixel's tile, with 5 texel reads per light, 4 without
- * culling, and building the tiles' lists on the CPU), plus what the
- * contributing effects' code costs.
+ * Cost: a full-screen depth pre-pass (one texture read per pixel), then a
+ * lighting pass whose depth test leaves out the background before the
+ * fragment shader runs (see UseDepthPrepass), with one texture read per
+ * allocated channel and a loop over the lights per surface pixel (on the
+ * light-texture path, over the lights of the pixel's tile, with 5 texel
+ * reads per light, 4 without culling, and building the tiles' lists on the
+ * CPU), plus what the contributing effects' code costs.
  *
  * Effects contribute code at the composite's hook points (declarations,
  * per-light visibility, ambient visibility, final colour; see
@@ -103,6 +105,30 @@ public:
    */
   vtkSetMacro(UseEmission, bool);
   vtkGetMacro(UseEmission, bool);
+
+  ///@{
+  /**
+   * Write the depth in a pre-pass and light only the pixels that hold a
+   * surface (default on): the lighting pass then draws at the far plane
+   * against that depth with the test GL_GREATER, which rejects the
+   * background before the fragment shader runs. On a software rasteriser
+   * (llvmpipe) that saves the lighting of every background pixel, about
+   * 5 ms of a 1280x720 frame of the bunny; a GPU pays one cheap pass more.
+   * Used when the framebuffer's depth holds only the renderer's clear
+   * value at the composite (the renderer erases and does not preserve its
+   * depth buffer); otherwise, and when off, one pass lights every pixel
+   * and writes the depth.
+   */
+  vtkSetMacro(UseDepthPrepass, bool);
+  vtkGetMacro(UseDepthPrepass, bool);
+  vtkBooleanMacro(UseDepthPrepass, bool);
+  ///@}
+
+  /**
+   * Whether the last Render() used the depth pre-pass (see
+   * UseDepthPrepass).
+   */
+  vtkGetMacro(UsedDepthPrepass, bool);
 
   /**
    * Most lights served by VTK's per-light uniforms (0..64, default 8); with
@@ -199,6 +225,8 @@ protected:
   void BuildLightTiles(vtkOpenGLRenderer* ren, const std::vector<vtkFXLightTiles::Light>& lights);
   void SetUniforms(vtkShaderProgram* program, vtkOpenGLRenderer* ren);
   void Draw(vtkOpenGLRenderer* ren);
+  bool CanUseDepthPrepass(vtkOpenGLRenderer* ren);
+  void DrawDepthPrepass(vtkOpenGLRenderer* ren);
 
   vtkFXGBufferPass* GBuffer = nullptr;
   double OcclusionDiffuseStrength = 1.0;
@@ -221,6 +249,9 @@ protected:
   bool LightTilesUsed = false;
   bool WarnedLightTiles = false;
   vtkFXRenderUtilities::FullScreenQuad Quad;
+  vtkFXRenderUtilities::FullScreenQuad DepthQuad; // the depth pre-pass
+  bool UseDepthPrepass = true;
+  bool UsedDepthPrepass = false;
 
 private:
   vtkFXCompositePass(const vtkFXCompositePass&) = delete;

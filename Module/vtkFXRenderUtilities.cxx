@@ -156,11 +156,21 @@ vtkShaderProgram* vtkFXRenderUtilities::ReadyQuad(
                                          "  gl_Position = vec4(2.0 * ndCoordIn.xy + 1.0, 0.0, 1.0);\n"
                                          "  texCoord = 2.0 * texCoordIn;\n"
                                          "}\n";
+  static const char* const atFarPlane = "//VTK::System::Dec\n"
+                                       "in vec4 ndCoordIn;\n"
+                                       "in vec2 texCoordIn;\n"
+                                       "out vec2 texCoord;\n"
+                                       "void main()\n"
+                                       "{\n"
+                                       "  gl_Position = vec4(ndCoordIn.xy, 1.0, 1.0);\n"
+                                       "  texCoord = texCoordIn;\n"
+                                       "}\n";
   if (!quad.Helper || quad.Source != fragmentSource)
   {
     quad.Helper.reset(new vtkOpenGLQuadHelper(window,
       quad.OneTriangle ? oneTriangle
-                       : vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
+        : quad.AtFarPlane ? atFarPlane
+                          : vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
       fragmentSource.c_str(), ""));
     quad.Source = fragmentSource;
   }

@@ -85,6 +85,12 @@ public:
      * are safe. texCoord is 0..1 over the viewport either way.
      */
     bool OneTriangle = false;
+    /**
+     * Put the quad at the far plane (window depth 1) instead of depth 0.5
+     * (set before the first ReadyQuad): tested with GL_GREATER against a
+     * depth buffer, it covers the pixels that hold a surface.
+     */
+    bool AtFarPlane = false;
   };
 
   /**

@@ -16,6 +16,7 @@
 // Defines set by vtkFXCompositePass: FX_LIGHTING (0..3), FX_LIGHT_TEXTURE,
 // FX_LIGHT_TILES,
 // FX_HAS_SPECULAR, FX_HAS_AMBIENT, FX_HAS_EMISSION, FX_NEEDS_POSITION,
+// FX_WRITES_DEPTH (0 after the depth pre-pass, vtkFXCompositeDepthFS),
 // FX_DEBUG_CHANNEL, FX_DEBUG_OCCLUSION, and the channel numbers
 // FX_CHANNEL_NORMAL, FX_CHANNEL_DEPTH (vtkFXGBufferPass::Channel).
 
@@ -106,7 +107,9 @@ void main()
   {
     discard; // background: keep what the renderer cleared
   }
+#if FX_WRITES_DEPTH
   gl_FragDepth = hardwareDepth;
+#endif
   vec4 albedo = texture(fxAlbedo, texCoord);
   vec3 color = albedo.rgb; // unlit fragments store their final colour here
   bool lit = false;

@@ -44,6 +44,8 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -619,6 +621,81 @@ int TestLayers()
   return EXIT_SUCCESS;
 }
 
+// The window's depth buffer over the whole window.
+std::vector<float> CaptureDepth(vtkRenderWindow* window)
+{
+  const int* size = window->GetSize();
+  std::vector<float> depth(static_cast<size_t>(size[0]) * size[1]);
+  window->GetZbufferData(0, 0, size[0] - 1, size[1] - 1, depth.data());
+  return depth;
+}
+
+// The composite's depth pre-pass (vtkFXCompositePass::UseDepthPrepass)
+// changes which pixels the lighting shades, not what any pixel gets: with
+// and without it, the same colours and the same depth buffer, bit for bit,
+// on scenes with forward-drawn, translucent, volume and overlay props,
+// with and without an effect in the composite, in a viewport that does not
+// start at the window's corner. It stays off where the framebuffer's depth
+// is not the clear value at the composite (preserved depth, no erase).
+int TestDepthPrepass()
+{
+  auto window = FreshWindow(400, 300);
+  for (const std::string input : { "scene:mixed", "scene:splats", "scene:volume", "scene:glyphs" })
+  {
+    for (bool occlusion : { false, true })
+    {
+      window->GetRenderers()->RemoveAllItems();
+      vtkNew<vtkRenderer> renderer;
+      renderer->SetViewport(0.1, 0.2, 0.9, 1.0);
+      window->AddRenderer(renderer);
+      std::string error;
+      FX_CHECK(vtkFXScenes::Populate(renderer, input, vtkFXScenes::Options(), error), error);
+      vtkNew<vtkFXPipelinePass> pipeline;
+      pipeline->SetAmbientOcclusion(occlusion);
+      renderer->SetPass(pipeline);
+      vtkFXCompositePass* composite = pipeline->GetCompositePass();
+      std::vector<unsigned char> colour[2];
+      std::vector<float> depth[2];
+      for (int prepass : { 0, 1 })
+      {
+        composite->SetUseDepthPrepass(prepass != 0);
+        window->Render();
+        FX_CHECK(composite->GetUsedDepthPrepass() == (prepass != 0),
+          input << ": the pre-pass ran " << composite->GetUsedDepthPrepass());
+        colour[prepass] = vtkFXScenes::Capture(window);
+        depth[prepass] = CaptureDepth(window);
+      }
+      float depthDifference = 0.0f;
+      for (size_t i = 0; i < depth[0].size(); ++i)
+      {
+        depthDifference = std::max(depthDifference, std::abs(depth[0][i] - depth[1][i]));
+      }
+      const int colourDifference = vtkFXScenes::MaxDifference(colour[0], colour[1]);
+      std::cout << input << (occlusion ? " with ambient occlusion" : "")
+                << ": with and without the depth pre-pass, largest colour difference "
+                << colourDifference << "/255, largest depth difference " << depthDifference
+                << std::endl;
+      FX_CHECK(colourDifference == 0 && depthDifference == 0.0f,
+        input << ": the depth pre-pass changed the image");
+    }
+  }
+  // Where the depth buffer holds more than the clear value, one pass.
+  vtkRenderer* renderer = window->GetRenderers()->GetFirstRenderer();
+  auto* pipeline = vtkFXPipelinePass::SafeDownCast(renderer->GetPass());
+  for (int keep : { 0, 1 })
+  {
+    renderer->SetPreserveDepthBuffer(keep == 0);
+    renderer->SetErase(keep == 0);
+    window->Render();
+    FX_CHECK(!pipeline->GetCompositePass()->GetUsedDepthPrepass(),
+      (keep == 0 ? "preserved depth" : "no erase") << ": the pre-pass ran; passes "
+                                                     << vtkFXTest::Passes(pipeline));
+    renderer->SetPreserveDepthBuffer(0);
+    renderer->SetErase(1);
+  }
+  return EXIT_SUCCESS;
+}
+
 // Emission 2.0 in red: kept in a float channel, and through the HDR target
 // a halving post-process still leaves red at 1.
 int TestEmission()
@@ -775,8 +852,8 @@ int TestFrameStructure(int, char*[])
 {
   auto window = vtkFXTest::MakeWindow(400, 300);
   SharedWindow = window;
-  for (auto test : { TestStages, TestConnections, TestHooks, TestManyLights, TestLayers, TestEmission,
-         TestHDRIdentity, TestHDRRobustness })
+  for (auto test : { TestStages, TestConnections, TestHooks, TestManyLights, TestLayers,
+         TestDepthPrepass, TestEmission, TestHDRIdentity, TestHDRRobustness })
   {
     if (test() != EXIT_SUCCESS)
     {
