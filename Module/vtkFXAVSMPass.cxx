@@ -10,12 +10,14 @@
 #include "vtkFXRenderUtilities.h"
 #include "vtkFXViewPosition.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkProp.h"
+#include "vtkProperty.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkPixelBufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -31,6 +33,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <sstream>
 
 vtkStandardNewMacro(vtkFXAVSMPass);
@@ -84,6 +87,15 @@ bool AllocateBuffer(GLenum target, vtkIdType bytes, GLenum usage)
 bool IsCasting(vtkLight* light)
 {
   return !light->LightTypeIsHeadlight() && light->GetShadowAttenuation() > 0.0f;
+}
+
+// Props that can dim light: all but actors of opacity 0 (not a positive
+// number: NaN too), whose every fragment VTK makes fully transparent
+// (scalar and texture alpha only multiply the property's opacity).
+bool CanCast(vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  return !actor || !actor->GetProperty() || actor->GetProperty()->GetOpacity() > 0.0;
 }
 
 // A spot light (one perspective view of its cone) rather than a light in
@@ -165,8 +177,11 @@ int vtkFXAVSMPass::Nodes() const
 bool vtkFXAVSMPass::HasWork(const vtkFXSceneInfo& scene)
 {
   // Every visible translucent prop casts, also one outside the viewer's
-  // frustum whose shadow falls on what the viewer sees.
-  this->Casters = scene.TranslucentViewProps;
+  // frustum whose shadow falls on what the viewer sees; one of opacity 0
+  // would cast nothing at the cost of the whole pass.
+  this->Casters.clear();
+  std::copy_if(scene.TranslucentViewProps.begin(), scene.TranslucentViewProps.end(),
+    std::back_inserter(this->Casters), CanCast);
   this->CastingLights.clear();
   for (size_t i = 0; i < scene.Lights.size(); ++i)
   {

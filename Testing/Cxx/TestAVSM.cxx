@@ -987,10 +987,20 @@ int TestAVSM(int, char*[])
   }
   FX_CHECK(CheckTwoLights(window) == EXIT_SUCCESS, "two casting lights");
 
-  // Nothing translucent: the pass is left out and allocates nothing.
+  // Nothing translucent, or translucent props of opacity 0 only (they
+  // cast nothing): the pass is left out and allocates nothing.
+  for (double opacity : { -1.0, 0.0 })
   {
     auto idle = MakeAVSM(8, false, true);
-    Visibility(window, idle, {}, true);
+    std::vector<vtkSmartPointer<vtkActor>> props;
+    if (opacity >= 0.0)
+    {
+      props.push_back(Quad(-10, 0, 1, opacity));
+      props.push_back(Splats({ { 0.0, 0.0, 2.0 } }, 1.0, opacity));
+    }
+    Visibility(window, idle, props, true);
+    std::cout << (props.empty() ? "nothing translucent" : "opacity 0 only") << ": "
+              << idle->GetCapacity() << " nodes allocated" << std::endl;
     FX_CHECK(idle->GetCapacity() == 0 && !idle->GetOutputTexture("visibility"),
       "an AVSM without casters holds " << idle->GetCapacity() << " nodes");
   }
