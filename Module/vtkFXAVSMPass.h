@@ -75,6 +75,7 @@
 
 #include "vtkFXEffectPass.h"
 #include "vtkFXModule.h"
+#include "vtkFXSetGet.h" // for vtkFXSetClampMacro
 #include "vtkFXRenderUtilities.h" // for the full-screen quads
 #include "vtkSmartPointer.h"
 #include "vtkTimeStamp.h" // for the shader stage time
@@ -160,7 +161,7 @@ public:
    * light's depth range grows with its distance, and a fraction of it made
    * a far lamp's bias larger than the scene's details.)
    */
-  vtkSetClampMacro(Bias, double, 0.0, 0.1);
+  vtkFXSetClampMacro(Bias, double, 0.0, 0.1);
   vtkGetMacro(Bias, double);
 
   /**
@@ -180,7 +181,7 @@ public:
    * centre chord as opaque as the splat's centre; fragments of the splat
    * outside the sphere cast nothing.
    */
-  vtkSetClampMacro(SplatRadius, double, 0.1, 3.0);
+  vtkFXSetClampMacro(SplatRadius, double, 0.1, 3.0);
   vtkGetMacro(SplatRadius, double);
 
   /**

@@ -38,6 +38,7 @@
 
 #include "vtkFXEffectPass.h"
 #include "vtkFXModule.h"
+#include "vtkFXSetGet.h" // for vtkFXSetClampMacro
 #include "vtkFXRenderUtilities.h" // for the full-screen quads
 #include "vtkSmartPointer.h"
 
@@ -84,7 +85,7 @@ public:
    * Depth tolerance as a fraction of the pixel's depth (0.0001..1, default
    * 0.05): taps whose depth differs by this much weigh exp(-1/2).
    */
-  vtkSetClampMacro(DepthSigma, double, 1e-4, 1.0);
+  vtkFXSetClampMacro(DepthSigma, double, 1e-4, 1.0);
   vtkGetMacro(DepthSigma, double);
 
   /**

@@ -49,6 +49,7 @@
 
 #include "vtkFXEffectPass.h"
 #include "vtkFXModule.h"
+#include "vtkFXSetGet.h" // for vtkFXSetClampMacro
 #include "vtkFXRenderUtilities.h" // for the full-screen quads
 #include "vtkSmartPointer.h"
 
@@ -72,14 +73,14 @@ public:
    * Total glow as a fraction of the total source light (0..100, default
    * 0.5).
    */
-  vtkSetClampMacro(Intensity, double, 0.0, 100.0);
+  vtkFXSetClampMacro(Intensity, double, 0.0, 100.0);
   vtkGetMacro(Intensity, double);
 
   /**
    * How far the glow reaches, as a fraction of the image's height (the
    * viewport's, or a scaled screenshot's) (0.001..1, default 0.05).
    */
-  vtkSetClampMacro(Radius, double, 0.001, 1.0);
+  vtkFXSetClampMacro(Radius, double, 0.001, 1.0);
   vtkGetMacro(Radius, double);
 
   /**
@@ -96,7 +97,7 @@ public:
    * emission channel's light is taken out of the lit image first, as it
    * glows in full anyway (counted once).
    */
-  vtkSetClampMacro(Threshold, double, -1.0, 65504.0);
+  vtkFXSetClampMacro(Threshold, double, -1.0, 65504.0);
   vtkGetMacro(Threshold, double);
 
   /**

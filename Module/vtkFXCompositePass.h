@@ -43,6 +43,7 @@
 #include "vtkFXGBufferPass.h" // for the channel count
 #include "vtkFXLightTiles.h" // for the tiles' light entries
 #include "vtkFXModule.h"
+#include "vtkFXSetGet.h" // for vtkFXSetClampMacro
 #include "vtkFXRenderUtilities.h" // for the full-screen quads
 #include "vtkRenderPass.h"
 
@@ -163,7 +164,7 @@ public:
    * one point: 0.0625, about 16 levels of 8 bits at the default). For
    * many lights gathered around the same places, lower the cutoff.
    */
-  vtkSetClampMacro(LightCutoff, double, 0.0, 1.0);
+  vtkFXSetClampMacro(LightCutoff, double, 0.0, 1.0);
   vtkGetMacro(LightCutoff, double);
 
   /**
@@ -173,7 +174,7 @@ public:
    * from the scene (colours above 1 are allowed, see
    * vtkFXGBufferPass::SetHDRMaterial).
    */
-  vtkSetClampMacro(MaterialColorScale, double, 1.0, 65504.0);
+  vtkFXSetClampMacro(MaterialColorScale, double, 1.0, 65504.0);
   vtkGetMacro(MaterialColorScale, double);
 
   /**
@@ -201,7 +202,7 @@ public:
    * choice, 1 darkens diffuse shading like vtkSSAOPass (which scales the
    * whole colour). Specular highlights are never occluded.
    */
-  vtkSetClampMacro(OcclusionDiffuseStrength, double, 0.0, 1.0);
+  vtkFXSetClampMacro(OcclusionDiffuseStrength, double, 0.0, 1.0);
   vtkGetMacro(OcclusionDiffuseStrength, double);
 
   /**

@@ -70,6 +70,7 @@
 #define vtkFXDirectionalOcclusionPass_h
 
 #include "vtkFXModule.h"
+#include "vtkFXSetGet.h" // for vtkFXSetClampMacro
 #include "vtkFXSSAOPass.h"
 
 class VTKFX_EXPORT vtkFXDirectionalOcclusionPass : public vtkFXSSAOPass
@@ -91,7 +92,7 @@ public:
    * surface's albedo x that to lit pixels: 1 is the physical one bounce.
    * Costs two more fetches per blocked sample and a second blur.
    */
-  vtkSetClampMacro(Bleeding, double, 0.0, 10.0);
+  vtkFXSetClampMacro(Bleeding, double, 0.0, 10.0);
   vtkGetMacro(Bleeding, double);
 
   /**

@@ -37,6 +37,7 @@
 
 #include "vtkFXEffectPass.h"
 #include "vtkFXModule.h"
+#include "vtkFXSetGet.h" // for vtkFXSetClampMacro
 #include "vtkFXRenderUtilities.h" // for the full-screen quads
 #include "vtkSmartPointer.h"
 
@@ -58,14 +59,14 @@ public:
    * x the diagonal of the visible props' bounds. The radius used is kept
    * within 1e-30..1e30, where the shaders' single precision holds it.
    */
-  vtkSetClampMacro(Radius, double, 0.0, 1e30);
+  vtkFXSetClampMacro(Radius, double, 0.0, 1e30);
   vtkGetMacro(Radius, double);
 
   /**
    * Fraction of the visible bounds' diagonal used when Radius is 0
    * (dimensionless, default 0.1).
    */
-  vtkSetClampMacro(RadiusFraction, double, 1e-6, 10.0);
+  vtkFXSetClampMacro(RadiusFraction, double, 1e-6, 10.0);
   vtkGetMacro(RadiusFraction, double);
 
   /**
@@ -80,7 +81,7 @@ public:
    * Offset along the normal and depth tolerance, as a fraction of the
    * radius (0..0.5, default 0.02): keeps a surface from occluding itself.
    */
-  vtkSetClampMacro(Bias, double, 0.0, 0.5);
+  vtkFXSetClampMacro(Bias, double, 0.0, 0.5);
   vtkGetMacro(Bias, double);
 
   enum Falloff

@@ -50,6 +50,7 @@
 
 #include "vtkFXEffectPass.h"
 #include "vtkFXModule.h"
+#include "vtkFXSetGet.h" // for vtkFXSetClampMacro
 #include "vtkFXRenderUtilities.h" // for the full-screen quads
 #include "vtkNew.h"     // for the tiles' vertex array
 #include "vtkSmartPointer.h"
@@ -118,14 +119,14 @@ public:
    * parallel projection of ParallelScale / tan(ViewAngle / 2)) (1e-5..10,
    * default 0.02).
    */
-  vtkSetClampMacro(SilhouetteThreshold, double, 1e-5, 10.0);
+  vtkFXSetClampMacro(SilhouetteThreshold, double, 1e-5, 10.0);
   vtkGetMacro(SilhouetteThreshold, double);
 
   /**
    * Smallest angle between neighbouring normals that makes a crease, in
    * degrees (1..179, default 30, vtkPolyDataNormals' feature angle).
    */
-  vtkSetClampMacro(CreaseAngle, double, 1.0, 179.0);
+  vtkFXSetClampMacro(CreaseAngle, double, 1.0, 179.0);
   vtkGetMacro(CreaseAngle, double);
 
   /**
@@ -136,7 +137,7 @@ public:
    * of a pixel and 32 pixels, so an image rendered at twice the size
    * shows the same drawing.
    */
-  vtkSetClampMacro(LineWidth, double, 0.25, 16.0);
+  vtkFXSetClampMacro(LineWidth, double, 0.25, 16.0);
   vtkGetMacro(LineWidth, double);
 
   /**

@@ -5,7 +5,13 @@
 // every normal is either a valid octahedral code (|x| + |y| <= 1) or the
 // unlit sentinel. Then, through the pipeline, the invisible prop stays
 // invisible and a scene with no light at all matches VTK's forward render.
+#include "vtkFXAVSMPass.h"
+#include "vtkFXBilateralBlurPass.h"
+#include "vtkFXBloomPass.h"
+#include "vtkFXCompositePass.h"
+#include "vtkFXDirectionalOcclusionPass.h"
 #include "vtkFXGBufferPass.h"
+#include "vtkFXSSAOPass.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXToonPass.h"
 #include "vtkFXScenes.h"
@@ -74,8 +80,61 @@ vtkSmartPointer<vtkPolyData> BadMesh()
 }
 }
 
+// A floating-point parameter set to NaN: refused with one error, the
+// value kept (VTK's clamping macro would store NaN, which the shaders then
+// read).
+template <typename T>
+bool RefusesNaN(const char* name, void (T::*set)(double), double (T::*get)())
+{
+  vtkNew<T> object;
+  vtkFXTest::ErrorCounter errors(object);
+  const double before = (object->*get)();
+  (object.GetPointer()->*set)(std::numeric_limits<double>::quiet_NaN());
+  const double after = (object.GetPointer()->*get)();
+  std::cout << object->GetClassName() << "::Set" << name << "(NaN): " << errors.Count
+            << " error(s), " << before << " -> " << after << std::endl;
+  return errors.Count == 1 && after == before;
+}
+
+int CheckParametersRefuseNaN()
+{
+  using A = vtkFXAVSMPass;
+  using B = vtkFXBilateralBlurPass;
+  using G = vtkFXBloomPass;
+  using C = vtkFXCompositePass;
+  using D = vtkFXDirectionalOcclusionPass;
+  using S = vtkFXSSAOPass;
+  using T = vtkFXToonPass;
+  const bool all[] = {
+    RefusesNaN<A>("Bias", &A::SetBias, &A::GetBias),
+    RefusesNaN<A>("SplatRadius", &A::SetSplatRadius, &A::GetSplatRadius),
+    RefusesNaN<B>("DepthSigma", &B::SetDepthSigma, &B::GetDepthSigma),
+    RefusesNaN<G>("Intensity", &G::SetIntensity, &G::GetIntensity),
+    RefusesNaN<G>("Radius", &G::SetRadius, &G::GetRadius),
+    RefusesNaN<G>("Threshold", &G::SetThreshold, &G::GetThreshold),
+    RefusesNaN<G>("Knee", &G::SetKnee, &G::GetKnee),
+    RefusesNaN<C>("LightCutoff", &C::SetLightCutoff, &C::GetLightCutoff),
+    RefusesNaN<C>("MaterialColorScale", &C::SetMaterialColorScale, &C::GetMaterialColorScale),
+    RefusesNaN<C>(
+      "OcclusionDiffuseStrength", &C::SetOcclusionDiffuseStrength, &C::GetOcclusionDiffuseStrength),
+    RefusesNaN<D>("Bleeding", &D::SetBleeding, &D::GetBleeding),
+    RefusesNaN<S>("Radius", &S::SetRadius, &S::GetRadius),
+    RefusesNaN<S>("RadiusFraction", &S::SetRadiusFraction, &S::GetRadiusFraction),
+    RefusesNaN<S>("Bias", &S::SetBias, &S::GetBias),
+    RefusesNaN<T>("SilhouetteThreshold", &T::SetSilhouetteThreshold, &T::GetSilhouetteThreshold),
+    RefusesNaN<T>("CreaseAngle", &T::SetCreaseAngle, &T::GetCreaseAngle),
+    RefusesNaN<T>("LineWidth", &T::SetLineWidth, &T::GetLineWidth),
+  };
+  for (bool refused : all)
+  {
+    FX_CHECK(refused, "a parameter took NaN");
+  }
+  return EXIT_SUCCESS;
+}
+
 int TestRobustness(int, char*[])
 {
+  FX_CHECK(CheckParametersRefuseNaN() == EXIT_SUCCESS, "parameters and NaN");
   auto window = vtkFXTest::MakeWindow(200, 160);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
