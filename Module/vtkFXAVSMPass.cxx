@@ -615,6 +615,24 @@ bool vtkFXAVSMPass::EnsureBuffers()
     this->BufferTexels = 0;
     this->Capacity = 0;
   }
+  // A buffer larger than one storage block can address would be written
+  // only in part, its lists pointing at nodes the shaders never stored.
+  GLint64 blockBytes = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &blockBytes);
+  this->CapacityLimit =
+    std::max<vtkIdType>(1, std::min<vtkIdType>(MaximumCapacity, blockBytes / NodeBytes));
+  if (texels * 4 > blockBytes)
+  {
+    if (!this->ReportedAllocationFailure)
+    {
+      vtkErrorMacro("AVSM: the list heads of " << texels << " shadow-map texels (" << this->GetNumberOfViews()
+        << " views of " << this->ShadowMapSize << "^2) need " << (texels * 4) / (1 << 20)
+        << " MiB, more than one OpenGL storage block holds (" << blockBytes / (1 << 20)
+        << " MiB); no shadows of translucent props (lower ShadowMapSize).");
+      this->ReportedAllocationFailure = true;
+    }
+    return false;
+  }
   bool allocated = true;
   if (this->BufferTexels != texels)
   {
@@ -627,7 +645,7 @@ bool vtkFXAVSMPass::EnsureBuffers()
     this->BufferTexels = allocated ? texels : 0; // retried next frame
   }
   const vtkIdType wanted =
-    std::max(this->Capacity, std::min(MaximumCapacity, texels * this->InitialNodesPerTexel));
+    std::max(this->Capacity, std::min(this->CapacityLimit, texels * this->InitialNodesPerTexel));
   if (allocated && wanted != this->Capacity)
   {
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[NodesBuffer]);
@@ -908,7 +926,8 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
                                           "the buffer grows for the next.");
       this->WarnedOverflow = true;
     }
-    const vtkIdType grown = std::min(MaximumCapacity, vtkIdType(counted) + vtkIdType(counted) / 4);
+    const vtkIdType grown =
+      std::min(this->CapacityLimit, vtkIdType(counted) + vtkIdType(counted) / 4);
     this->StoredFragments = this->Capacity; // what this frame's lists hold
     if (grown <= this->Capacity)
     {

@@ -186,7 +186,7 @@ public:
 
   /**
    * Fragments the list buffer holds, per shadow-map texel, before it first
-   * grows (1..1024, default 4).
+   * grows (1..1024, default 4); never more than GetCapacityLimit().
    */
   vtkSetClampMacro(InitialNodesPerTexel, int, 1, 1024);
   vtkGetMacro(InitialNodesPerTexel, int);
@@ -200,6 +200,14 @@ public:
    */
   vtkGetMacro(CapturedFragments, vtkIdType);
   vtkGetMacro(Capacity, vtkIdType);
+  /**
+   * The most fragments the list buffer can hold: what one shader storage
+   * block can address (GL_MAX_SHADER_STORAGE_BLOCK_SIZE, 128 MiB on
+   * llvmpipe: 8 Mi fragments of 16 bytes), at most 2^27. Fragments beyond
+   * it are left out of the frame (a warning says so once). 0 before the
+   * first frame.
+   */
+  vtkGetMacro(CapacityLimit, vtkIdType);
   int GetNumberOfCastingLights() const { return static_cast<int>(this->CastingLights.size()); }
   int GetCastingLightIndex(int k) const;
   int GetLightIndex() const { return this->GetCastingLightIndex(0); }
@@ -366,6 +374,7 @@ protected:
 
   vtkIdType CapturedFragments = 0;
   vtkIdType Capacity = 0;
+  vtkIdType CapacityLimit = 0;
   vtkIdType StoredFragments = 0; // nodes this frame's lists hold
   bool WarnedOverflow = false;
   bool ReportedAllocationFailure = false;

@@ -60,9 +60,11 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkPointData.h"
 #include "vtkCellData.h"
+#include "vtk_glew.h"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <functional>
 
@@ -713,6 +715,53 @@ int TestAVSM(int, char*[])
       std::cout << "1000 layers: " << rays << " light rays through the layers, every curve monotone"
                 << std::endl;
       FX_CHECK(rays > 100, "only " << rays << " rays through the layers");
+    }
+  }
+
+  // More fragments than one storage block can address (llvmpipe: 128 MiB,
+  // 8 Mi fragments of 16 bytes): 24 slabs over a 1024^2 map, each on
+  // some 465 000 of its texels (11 Mi fragments), with a list buffer asked
+  // for 64 per texel. The buffer stops
+  // at what a block addresses (a larger one would be written only in
+  // part, its lists pointing at nodes never stored); the fragments beyond
+  // are left out with one warning, and the visibility stays finite, in
+  // [0, 1], and no darker than the slabs make it (0.9^24).
+  {
+    auto avsm = MakeAVSM(8, false, true);
+    avsm->SetShadowMapSize(1024);
+    avsm->SetInitialNodesPerTexel(64);
+    int warnings = 0;
+    vtkNew<vtkCallbackCommand> countWarnings;
+    countWarnings->SetClientData(&warnings);
+    countWarnings->SetCallback(
+      [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
+    avsm->AddObserver(vtkCommand::WarningEvent, countWarnings);
+    std::vector<vtkSmartPointer<vtkActor>> slabs;
+    const int layers = 24;
+    for (int z = 1; z <= layers; ++z)
+    {
+      slabs.push_back(Quad(-10, 10, 0.5 * z, 0.1));
+    }
+    const auto v = Visibility(window, avsm, slabs, true, 2);
+    GLint64 blockBytes = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &blockBytes);
+    std::cout << layers << " slabs over 1024^2: " << avsm->GetCapturedFragments() << " fragments, capacity "
+              << avsm->GetCapacity() << " (limit " << avsm->GetCapacityLimit() << ", storage block "
+              << blockBytes << " bytes), " << warnings << " warning(s)" << std::endl;
+    FX_CHECK(avsm->GetCapacityLimit() > 0 && avsm->GetCapacity() <= avsm->GetCapacityLimit() &&
+        avsm->GetCapacity() * 16 <= blockBytes,
+      "a list buffer of " << avsm->GetCapacity() << " fragments for a storage block of "
+                          << blockBytes << " bytes");
+    if (avsm->GetCapturedFragments() > avsm->GetCapacityLimit())
+    {
+      FX_CHECK(warnings == 1, warnings << " warnings for fragments beyond the limit, not 1");
+    }
+    const float darkest = static_cast<float>(std::pow(0.9, layers));
+    FX_CHECK(v.size() == static_cast<size_t>(Width) * Height, "no visibility beyond the limit");
+    for (float t : v)
+    {
+      FX_CHECK(std::isfinite(t) && t >= darkest - 1e-3f && t <= 1.0f,
+        "beyond the limit, visibility " << t);
     }
   }
 
