@@ -12,6 +12,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCompositePolyDataMapper2.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -26,6 +27,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkRenderState.h"
 #include "vtkShaderProgram.h"
+#include "vtkShaderProperty.h"
 #include "vtkTextureObject.h"
 #include "vtkTimerLog.h"
 #include "vtkTranslucentPass.h"
@@ -90,12 +92,24 @@ bool IsCasting(vtkLight* light)
 }
 
 // Props that can dim light: all but actors of opacity 0 (not a positive
-// number: NaN too), whose every fragment VTK makes fully transparent
-// (scalar and texture alpha only multiply the property's opacity).
+// number: NaN too) whose every fragment VTK makes fully transparent:
+// scalar, texture and point-gaussian alpha only multiply the property's
+// opacity. Kept, as they may draw with alpha of their own: a back-face
+// property that is not transparent, composite data (block opacities) and
+// shader replacements.
 bool CanCast(vtkProp* prop)
 {
   vtkActor* actor = vtkActor::SafeDownCast(prop);
-  return !actor || !actor->GetProperty() || actor->GetProperty()->GetOpacity() > 0.0;
+  if (!actor || !actor->GetProperty() || actor->GetProperty()->GetOpacity() > 0.0)
+  {
+    return true;
+  }
+  vtkProperty* back = actor->GetBackfaceProperty();
+  vtkShaderProperty* shaders = actor->GetShaderProperty();
+  return (back && !(back->GetOpacity() <= 0.0)) ||
+    vtkCompositePolyDataMapper2::SafeDownCast(actor->GetMapper()) ||
+    (shaders && (shaders->GetNumberOfShaderReplacements() > 0 || shaders->HasVertexShaderCode() ||
+                  shaders->HasFragmentShaderCode() || shaders->HasGeometryShaderCode()));
 }
 
 // A spot light (one perspective view of its cone) rather than a light in

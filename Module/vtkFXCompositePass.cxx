@@ -505,6 +505,34 @@ void vtkFXCompositePass::Draw(vtkOpenGLRenderer* ren)
   this->Quad.Helper->Render();
 }
 
+namespace
+{
+// Whether the bound framebuffer's depth buffer keeps every G-buffer depth
+// below 1 (a 32-bit float) below 1, where the lighting pass's GL_GREATER
+// test finds it: float and 24- or 32-bit fixed-point buffers do; a 16-bit
+// one rounds depths within 2^-17 of the far plane up to 1 (a band of
+// surface pixels would show the background), and without a depth buffer
+// the test passes everywhere (nothing saved).
+bool CanHoldDepthBelowOne()
+{
+  GLint framebuffer = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+  const GLenum attachment = framebuffer ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
+  GLint type = GL_NONE, bits = 0, components = GL_NONE;
+  glGetFramebufferAttachmentParameteriv(
+    GL_DRAW_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+  if (type == GL_NONE)
+  {
+    return false;
+  }
+  glGetFramebufferAttachmentParameteriv(
+    GL_DRAW_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
+  glGetFramebufferAttachmentParameteriv(
+    GL_DRAW_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &components);
+  return components == GL_FLOAT || bits >= 24;
+}
+}
+
 bool vtkFXCompositePass::CanUseDepthPrepass(vtkOpenGLRenderer* ren)
 {
   // (the pre-pass relies on the framebuffer's depth being the clear value
@@ -512,7 +540,8 @@ bool vtkFXCompositePass::CanUseDepthPrepass(vtkOpenGLRenderer* ren)
   // window erase and the renderer does not preserve its depth; the
   // composite is the first to draw)
   if (!this->UseDepthPrepass || !ren->GetErase() ||
-    !ren->GetRenderWindow()->GetErase() || ren->GetPreserveDepthBuffer())
+    !ren->GetRenderWindow()->GetErase() || ren->GetPreserveDepthBuffer() ||
+    !CanHoldDepthBelowOne())
   {
     return false;
   }
@@ -539,6 +568,7 @@ void vtkFXCompositePass::DrawDepthPrepass(vtkOpenGLRenderer* ren)
 void vtkFXCompositePass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
+  this->UsedDepthPrepass = false;
   vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   if (!ren || !this->GBuffer || !this->GBuffer->GetDepthTexture() ||
     !this->GBuffer->GetChannelTexture(GB::Albedo))
@@ -557,14 +587,15 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
                     "(see GetRequiredChannels); the opaque props are not drawn.");
       this->ReportedPositionalWithoutDepth = true;
     }
+    this->UsedDepthPrepass = false; // (nothing drawn)
     return;
   }
-  // (the define FX_WRITES_DEPTH changes the source with the quad's depth)
   this->Quad.AtFarPlane = this->UsedDepthPrepass;
   vtkShaderProgram* program =
     vtkFXRenderUtilities::ReadyQuad(this->Quad, window, fragmentShader);
   if (!program)
   {
+    this->UsedDepthPrepass = false;
     return;
   }
   this->SetUniforms(program, ren);

@@ -165,14 +165,16 @@ vtkShaderProgram* vtkFXRenderUtilities::ReadyQuad(
                                        "  gl_Position = vec4(ndCoordIn.xy, 1.0, 1.0);\n"
                                        "  texCoord = texCoordIn;\n"
                                        "}\n";
-  if (!quad.Helper || quad.Source != fragmentSource)
+  const int vertexShader = quad.OneTriangle ? 1 : quad.AtFarPlane ? 2 : 0;
+  if (!quad.Helper || quad.Source != fragmentSource || quad.BuiltVertexShader != vertexShader)
   {
     quad.Helper.reset(new vtkOpenGLQuadHelper(window,
-      quad.OneTriangle ? oneTriangle
-        : quad.AtFarPlane ? atFarPlane
-                          : vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
+      vertexShader == 1 ? oneTriangle
+        : vertexShader == 2 ? atFarPlane
+                            : vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
       fragmentSource.c_str(), ""));
     quad.Source = fragmentSource;
+    quad.BuiltVertexShader = vertexShader;
   }
   else
   {
@@ -194,6 +196,7 @@ void vtkFXRenderUtilities::ReleaseQuad(FullScreenQuad& quad, vtkWindow* window)
     quad.Helper.reset();
   }
   quad.Source.clear();
+  quad.BuiltVertexShader = -1;
 }
 
 vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow* window,

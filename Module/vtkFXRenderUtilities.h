@@ -87,10 +87,12 @@ public:
     bool OneTriangle = false;
     /**
      * Put the quad at the far plane (window depth 1) instead of depth 0.5
-     * (set before the first ReadyQuad): tested with GL_GREATER against a
-     * depth buffer, it covers the pixels that hold a surface.
+     * (ReadyQuad rebuilds the quad when this or OneTriangle changed):
+     * tested with GL_GREATER against a depth buffer, it covers the pixels
+     * that hold a surface.
      */
     bool AtFarPlane = false;
+    int BuiltVertexShader = -1; // (which of the three the helper was built with)
   };
 
   /**

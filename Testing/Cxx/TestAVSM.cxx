@@ -1053,6 +1053,18 @@ int TestAVSM(int, char*[])
     FX_CHECK(idle->GetCapacity() == 0 && !idle->GetOutputTexture("visibility"),
       "an AVSM without casters holds " << idle->GetCapacity() << " nodes");
   }
+  // An actor of opacity 0 whose back faces have a property of their own
+  // that is not transparent still casts.
+  {
+    auto avsm = MakeAVSM(8, false, true);
+    auto slab = Quad(-10, 0, 1, 0.0);
+    vtkNew<vtkProperty> back;
+    back->SetOpacity(0.5);
+    slab->SetBackfaceProperty(back);
+    Visibility(window, avsm, { slab }, true);
+    FX_CHECK(avsm->GetCapacity() > 0, "an actor of opacity 0 with a back-face property of "
+                                      "opacity 0.5 was left out of the casters");
+  }
 
   auto avsm = MakeAVSM(8, false, true);
   FX_CHECK(CheckHalves("perspective camera, one slab",

@@ -642,8 +642,11 @@ int TestDepthPrepass()
   auto window = FreshWindow(400, 300);
   for (const std::string input : { "scene:mixed", "scene:splats", "scene:volume", "scene:glyphs" })
   {
-    for (bool occlusion : { false, true })
+    // none, ambient occlusion, and a post-process effect (the composite
+    // then draws into the HDR target)
+    for (int effect : { 0, 1, 2 })
     {
+      const bool occlusion = effect == 1;
       window->GetRenderers()->RemoveAllItems();
       vtkNew<vtkRenderer> renderer;
       renderer->SetViewport(0.1, 0.2, 0.9, 1.0);
@@ -652,6 +655,11 @@ int TestDepthPrepass()
       FX_CHECK(vtkFXScenes::Populate(renderer, input, vtkFXScenes::Options(), error), error);
       vtkNew<vtkFXPipelinePass> pipeline;
       pipeline->SetAmbientOcclusion(occlusion);
+      vtkNew<HalveProbe> halve;
+      if (effect == 2)
+      {
+        pipeline->AddEffect("halve", halve);
+      }
       renderer->SetPass(pipeline);
       vtkFXCompositePass* composite = pipeline->GetCompositePass();
       std::vector<unsigned char> colour[2];
@@ -671,7 +679,8 @@ int TestDepthPrepass()
         depthDifference = std::max(depthDifference, std::abs(depth[0][i] - depth[1][i]));
       }
       const int colourDifference = vtkFXScenes::MaxDifference(colour[0], colour[1]);
-      std::cout << input << (occlusion ? " with ambient occlusion" : "")
+      std::cout << input
+                << (effect == 1 ? " with ambient occlusion" : effect == 2 ? " through the HDR target" : "")
                 << ": with and without the depth pre-pass, largest colour difference "
                 << colourDifference << "/255, largest depth difference " << depthDifference
                 << std::endl;
