@@ -730,12 +730,8 @@ int TestAVSM(int, char*[])
     auto avsm = MakeAVSM(8, false, true);
     avsm->SetShadowMapSize(1024);
     avsm->SetInitialNodesPerTexel(64);
-    int warnings = 0;
-    vtkNew<vtkCallbackCommand> countWarnings;
-    countWarnings->SetClientData(&warnings);
-    countWarnings->SetCallback(
-      [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
-    avsm->AddObserver(vtkCommand::WarningEvent, countWarnings);
+    vtkFXTest::EventCounter warned(avsm, vtkCommand::WarningEvent);
+    const int& warnings = warned.Count;
     std::vector<vtkSmartPointer<vtkActor>> slabs;
     const int layers = 24;
     for (int z = 1; z <= layers; ++z)
@@ -771,12 +767,8 @@ int TestAVSM(int, char*[])
     auto avsm = MakeAVSM(8, false, true);
     avsm->SetInitialNodesPerTexel(1);
     avsm->SetShadowMapSize(64);
-    int warnings = 0;
-    vtkNew<vtkCallbackCommand> countWarnings;
-    countWarnings->SetClientData(&warnings);
-    countWarnings->SetCallback(
-      [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
-    avsm->AddObserver(vtkCommand::WarningEvent, countWarnings);
+    vtkFXTest::EventCounter warned(avsm, vtkCommand::WarningEvent);
+    const int& warnings = warned.Count;
     const std::vector<vtkSmartPointer<vtkActor>> slabs = { Quad(-10, 10, 1, 0.3),
       Quad(-10, 10, 2, 0.5), Quad(-10, 0, 3, 0.2) };
     const auto dropped = Visibility(window, avsm, slabs, true, 1);

@@ -47,23 +47,25 @@
 
 namespace vtkFXTest
 {
-// Counts the errors an object reports (and keeps them off the console).
-struct ErrorCounter
+// Counts the events of one kind an object reports (errors by default, kept
+// off the console).
+struct EventCounter
 {
   int Count = 0;
   std::string Last;
   vtkNew<vtkCallbackCommand> Command;
-  explicit ErrorCounter(vtkObject* object)
+  explicit EventCounter(vtkObject* object, unsigned long event = vtkCommand::ErrorEvent)
   {
     this->Command->SetClientData(this);
     this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
-      auto* self = static_cast<ErrorCounter*>(client);
+      auto* self = static_cast<EventCounter*>(client);
       ++self->Count;
       self->Last = data ? static_cast<const char*>(data) : "";
     });
-    object->AddObserver(vtkCommand::ErrorEvent, this->Command);
+    object->AddObserver(event, this->Command);
   }
 };
+using ErrorCounter = EventCounter;
 
 // An offscreen window with one sample per pixel (the G-buffer has one).
 inline vtkSmartPointer<vtkRenderWindow> MakeWindow(int width, int height)
