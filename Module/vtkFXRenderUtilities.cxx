@@ -147,32 +147,27 @@ vtkShaderProgram* vtkFXRenderUtilities::ReadyQuad(
   // viewport and its first lies beyond the corner (1,1). (Were the strip's
   // diagonal the other one, the quad would be split as before: TestAVSM's
   // AVSM-16 against exact comparisons would show it.)
-  static const char* const oneTriangle = "//VTK::System::Dec\n"
-                                         "in vec4 ndCoordIn;\n"
-                                         "in vec2 texCoordIn;\n"
-                                         "out vec2 texCoord;\n"
-                                         "void main()\n"
-                                         "{\n"
-                                         "  gl_Position = vec4(2.0 * ndCoordIn.xy + 1.0, 0.0, 1.0);\n"
-                                         "  texCoord = 2.0 * texCoordIn;\n"
-                                         "}\n";
-  static const char* const atFarPlane = "//VTK::System::Dec\n"
-                                       "in vec4 ndCoordIn;\n"
-                                       "in vec2 texCoordIn;\n"
-                                       "out vec2 texCoord;\n"
-                                       "void main()\n"
-                                       "{\n"
-                                       "  gl_Position = vec4(ndCoordIn.xy, 1.0, 1.0);\n"
-                                       "  texCoord = texCoordIn;\n"
-                                       "}\n";
-  const int vertexShader = quad.OneTriangle ? 1 : quad.AtFarPlane ? 2 : 0;
+  // At the far plane, z = w: window depth 1 exactly (the clip test keeps
+  // z = w).
+  const int vertexShader = (quad.OneTriangle ? 1 : 0) + (quad.AtFarPlane ? 2 : 0);
+  std::string vertexSource = vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader();
+  if (vertexShader != 0)
+  {
+    vertexSource = std::string("//VTK::System::Dec\n"
+                               "in vec4 ndCoordIn;\n"
+                               "in vec2 texCoordIn;\n"
+                               "out vec2 texCoord;\n"
+                               "void main()\n"
+                               "{\n") +
+      (quad.OneTriangle ? "  gl_Position = vec4(2.0 * ndCoordIn.xy + 1.0, "
+                          : "  gl_Position = vec4(ndCoordIn.xy, ") +
+      (quad.AtFarPlane ? "1.0, 1.0);\n" : "0.0, 1.0);\n") +
+      (quad.OneTriangle ? "  texCoord = 2.0 * texCoordIn;\n" : "  texCoord = texCoordIn;\n") + "}\n";
+  }
   if (!quad.Helper || quad.Source != fragmentSource || quad.BuiltVertexShader != vertexShader)
   {
-    quad.Helper.reset(new vtkOpenGLQuadHelper(window,
-      vertexShader == 1 ? oneTriangle
-        : vertexShader == 2 ? atFarPlane
-                            : vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
-      fragmentSource.c_str(), ""));
+    quad.Helper.reset(
+      new vtkOpenGLQuadHelper(window, vertexSource.c_str(), fragmentSource.c_str(), ""));
     quad.Source = fragmentSource;
     quad.BuiltVertexShader = vertexShader;
   }

@@ -5,6 +5,7 @@
 #include "vtkFXViewPosition.h"
 #include "vtkFXRenderUtilities.h"
 #include "vtkFXToonBands.h"
+#include "vtkFXToonEdgeMaskFS.h"
 #include "vtkFXToonEdgesFS.h"
 #include "vtkFXToonLineTilesVS.h"
 #include "vtkFXToonLinesFS.h"
@@ -247,6 +248,47 @@ void vtkFXToonPass::ClearTileMask(vtkOpenGLRenderWindow* window, const int size[
   glClearTexImage(this->TileMask->GetHandle(), 0, GL_RED, GL_UNSIGNED_BYTE, &zero);
 }
 
+bool vtkFXToonPass::MakeEdgeMask(
+  vtkOpenGLRenderWindow* window, vtkTextureObject* depth, const int size[2])
+{
+  vtkFXRenderUtilities::EnsureTexture(
+    this->EdgeMask, window, size[0], size[1], vtkFXRenderUtilities::Depth32F);
+  std::string fs = vtkFXToonEdgeMaskFS;
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::System::Dec", GatherDefinesFor(this->UseTextureGather), false);
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  state->PushFramebufferBindings();
+  vtkFXRenderUtilities::FitFramebuffer(this->EdgeMaskFrameBuffer, window, size[0], size[1]);
+  this->EdgeMaskFrameBuffer->Bind();
+  this->EdgeMaskFrameBuffer->AddDepthAttachment(this->EdgeMask);
+  glDrawBuffer(GL_NONE);
+  vtkShaderProgram* program =
+    glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE
+    ? vtkFXRenderUtilities::ReadyQuad(this->EdgeMaskQuad, window, fs)
+    : nullptr;
+  if (program)
+  {
+    state->vtkglViewport(0, 0, size[0], size[1]);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    state->vtkglEnable(GL_DEPTH_TEST); // (depth is written only with the test on)
+    state->vtkglDepthFunc(GL_ALWAYS);
+    state->vtkglDepthMask(GL_TRUE);
+    depth->Activate();
+    program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());
+    program->SetUniform2i("fxGBufferSize", size);
+    this->EdgeMaskQuad.Helper->Render();
+  }
+  state->PopFramebufferBindings();
+  return program != nullptr;
+}
+
 bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* window)
 {
   vtkTextureObject* depth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
@@ -271,12 +313,32 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
     false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXViewPosition::Dec", vtkFXViewPosition, false);
+  const bool masked = this->SkipBackgroundEdges && this->MakeEdgeMask(window, depth, size);
+  if (!masked)
+  {
+    vtkFXRenderUtilities::Release(this->EdgeMask, window);
+  }
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
   vtkFXRenderUtilities::RenderTargetScope target(window, this->EdgeFrameBuffer, this->Edges);
+  this->EdgeQuad.AtFarPlane = masked;
   vtkShaderProgram* program =
     vtkFXRenderUtilities::ReadyQuad(this->EdgeQuad, window, fs);
   if (!program)
   {
     return false;
+  }
+  if (masked)
+  {
+    // Rejected pixels keep "no mark"; the quad at the far plane passes
+    // GL_GREATER where the mask is 0.
+    const float noMark[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+    glClearBufferfv(GL_COLOR, 0, noMark);
+    this->EdgeFrameBuffer->AddDepthAttachment(this->EdgeMask);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_GREATER);
+    state->vtkglDepthMask(GL_FALSE);
   }
   this->TilesFlagged = flag;
   if (flag)
@@ -312,6 +374,10 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
     program->SetUniformi("fxTileMask", 0);
   }
   this->EdgeQuad.Helper->Render();
+  if (masked)
+  {
+    this->EdgeFrameBuffer->RemoveDepthAttachment(); // (the mask may go next frame)
+  }
   if (this->TilesFlagged)
   {
     glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
@@ -478,6 +544,8 @@ void vtkFXToonPass::Render(const vtkRenderState* s)
     vtkFXRenderUtilities::Release(this->TileMask, window);
     vtkFXRenderUtilities::Release(this->Edges, window);
     vtkFXRenderUtilities::Release(this->EdgeFrameBuffer, window);
+    vtkFXRenderUtilities::Release(this->EdgeMask, window);
+    vtkFXRenderUtilities::Release(this->EdgeMaskFrameBuffer, window);
     return;
   }
   if (!this->GBuffer || !this->GBuffer->GetChannelTexture(GB::LinearDepth) ||
@@ -501,6 +569,9 @@ void vtkFXToonPass::Render(const vtkRenderState* s)
 void vtkFXToonPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkFXRenderUtilities::ReleaseQuad(this->EdgeQuad, w);
+  vtkFXRenderUtilities::ReleaseQuad(this->EdgeMaskQuad, w);
+  vtkFXRenderUtilities::Release(this->EdgeMask, w);
+  vtkFXRenderUtilities::Release(this->EdgeMaskFrameBuffer, w);
   this->LineTiles->ReleaseGraphicsResources();
   vtkFXRenderUtilities::Release(this->TileMask, w);
   vtkFXRenderUtilities::Release(this->Edges, w);
@@ -524,6 +595,7 @@ void vtkFXToonPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LineWidth: " << this->LineWidth << " at " << this->LineReferenceHeight
      << " rows\n";
   os << indent << "CullLineTiles: " << this->CullLineTiles << "\n";
+  os << indent << "SkipBackgroundEdges: " << this->SkipBackgroundEdges << "\n";
   os << indent << "UseTextureGather: " << this->UseTextureGather << "\n";
   os << indent << "LineColor: " << this->LineColor[0] << " " << this->LineColor[1] << " "
      << this->LineColor[2] << "\n";

@@ -35,8 +35,9 @@
  * Writes: composite code (bands); lines blended onto the image (the
  * framebuffer, or the HDR target when another effect has the pipeline keep
  * one). With lines on, its stage is PostProcess, otherwise Composite.
- * Cost: bands, a few instructions per light and pixel; lines, one
- * full-screen pass of 3 gathers of G-buffer 2x2 blocks per pixel into an
+ * Cost: bands, a few instructions per light and pixel; lines, a mask
+ * pass of one gather per pixel (SkipBackgroundEdges), then a pass of 3
+ * gathers of G-buffer 2x2 blocks per pixel that can have an edge into an
  * R8 edge texture (1 byte per pixel; it also flags, in an R8 texture of
  * one byte per 8x8 tile, the tiles lines can reach: CullLineTiles), and a
  * pass over the flagged tiles of 1 (lines under 1 px), 4 (under 3 px) or
@@ -166,6 +167,18 @@ public:
   vtkBooleanMacro(CullLineTiles, bool);
 
   /**
+   * Find edges only at pixels that can have one (default on): a depth
+   * image of the pixels where the pixel, its right neighbour or the one
+   * above holds a surface (one pass of one gather per pixel, 4 bytes per
+   * pixel) rejects the others before the edges shader runs, which a
+   * software rasteriser otherwise runs in full on every background
+   * pixel. The image is the same either way; off is for comparison.
+   */
+  vtkSetMacro(SkipBackgroundEdges, bool);
+  vtkGetMacro(SkipBackgroundEdges, bool);
+  vtkBooleanMacro(SkipBackgroundEdges, bool);
+
+  /**
    * Read the G-buffer and the marks four texels at a time with
    * textureGather where the context has it (GLSL 4.00 or
    * ARB_gpu_shader5; default on); off, or without it, texel by texel.
@@ -225,6 +238,7 @@ protected:
 
   std::string BandCode() const;
   bool FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
+  bool MakeEdgeMask(vtkOpenGLRenderWindow* window, vtkTextureObject* depth, const int size[2]);
   /** Texel offsets a line pixel reads marks from (first, last) at `height` rows. */
   void GetLineWindow(int height, int window[2]) const;
   void ClearTileMask(vtkOpenGLRenderWindow* window, const int size[2]);
@@ -247,6 +261,7 @@ protected:
   double LineColor[3] = { 0.0, 0.0, 0.0 };
 
   bool CullLineTiles = true;
+  bool SkipBackgroundEdges = true;
   bool UseTextureGather = true;
   int OutputRows = 1; // the image's rows (tiles of a scaled screenshot included)
   bool TilesFlagged = false; // this frame's edges pass flagged the tiles
@@ -254,6 +269,10 @@ protected:
   vtkSmartPointer<vtkTextureObject> TileMask; // R8, one texel per 8x8 tile: lines reach it
   vtkSmartPointer<vtkOpenGLFramebufferObject> EdgeFrameBuffer;
   vtkFXRenderUtilities::FullScreenQuad EdgeQuad;
+  // Depth32F, 0 where the edges pass can mark (SkipBackgroundEdges)
+  vtkSmartPointer<vtkTextureObject> EdgeMask;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> EdgeMaskFrameBuffer;
+  vtkFXRenderUtilities::FullScreenQuad EdgeMaskQuad;
   vtkNew<vtkOpenGLVertexArrayObject> LineTiles; // no attributes: a 4-vertex strip per tile
   std::string LineSource; // the lines' fragment shader, generated
   bool LineSourceGathers = true; // UseTextureGather when LineSource was made

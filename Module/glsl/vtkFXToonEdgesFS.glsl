@@ -40,6 +40,10 @@ uniform float fxSilhouetteThreshold; // fraction of the depth
 uniform float fxParallelDepth;
 uniform float fxCreaseCosine;
 #if FX_TILE_MASK
+// The depth test against the edge mask (vtkFXToonEdgeMaskFS) before the
+// shader: with image stores it would otherwise run after it, and reject
+// nothing's cost.
+layout(early_fragment_tests) in;
 layout(r8) uniform writeonly image2D fxTileMask;
 uniform ivec2 fxLineWindow; // texel offsets a line pixel reads: first, last
 #endif

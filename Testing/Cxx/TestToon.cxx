@@ -448,9 +448,10 @@ std::vector<unsigned char> RenderMoved(vtkRenderWindow* window, double scale, do
 }
 
 // The bunny with lines of `width` pixels, drawn over flagged tiles only or
-// over the whole image, at 403x301 (tiles of 8 px do not divide it).
+// over the whole image, at 403x301 (tiles of 8 px do not divide it); edges
+// found where they can be only (skipBackground) or everywhere.
 std::vector<unsigned char> RenderLines(vtkRenderWindow* window, double width, bool cull,
-  bool lines, bool* culled = nullptr, bool gather = true)
+  bool lines, bool* culled = nullptr, bool gather = true, bool skipBackground = true)
 {
   window->SetSize(403, 301);
   vtkNew<vtkFXToonPass> toon;
@@ -458,6 +459,7 @@ std::vector<unsigned char> RenderLines(vtkRenderWindow* window, double width, bo
   toon->SetLineWidth(width);
   toon->SetCullLineTiles(cull);
   toon->SetUseTextureGather(gather);
+  toon->SetSkipBackgroundEdges(skipBackground);
   toon->SetFeatureLines(lines);
   auto image = RenderBunny(window, toon);
   if (culled)
@@ -488,20 +490,26 @@ int CheckTileCulling(vtkRenderWindow* window)
     const auto none = RenderLines(window, width, true, false);
     // (the texel-by-texel reads, where a context lacks textureGather)
     const auto fetched = RenderLines(window, width, true, true, nullptr, false);
+    // (edges found at every pixel, background included)
+    const auto everywhere = RenderLines(window, width, true, true, nullptr, true, false);
     FX_CHECK(!culled.empty() && culled.size() == whole.size() && none.size() == whole.size() &&
-        fetched.size() == whole.size(),
+        fetched.size() == whole.size() && everywhere.size() == whole.size(),
       "the bunny did not render");
-    size_t differing = 0, lined = 0, differingFetched = 0;
+    size_t differing = 0, lined = 0, differingFetched = 0, differingEverywhere = 0;
     for (size_t i = 0; i < culled.size(); ++i)
     {
       differing += culled[i] != whole[i] ? 1 : 0;
       differingFetched += culled[i] != fetched[i] ? 1 : 0;
+      differingEverywhere += culled[i] != everywhere[i] ? 1 : 0;
       lined += culled[i] != none[i] ? 1 : 0;
     }
     std::cout << "lines of " << width << " px: " << lined
               << " bytes changed by lines, culled (tiles culled: " << (tilesCulled ? "yes" : "no")
               << ") and whole images differ in " << differing << ", gathered and fetched in "
-              << differingFetched << std::endl;
+              << differingFetched << ", background skipped and not in " << differingEverywhere
+              << std::endl;
+    FX_CHECK(differingEverywhere == 0,
+      differingEverywhere << " bytes differ with edges found on the background at " << width << " px");
     FX_CHECK(lined > 1000, "no lines drawn at " << width << " px");
     FX_CHECK(differing == 0, differing << " bytes differ with tile culling at " << width << " px");
     FX_CHECK(differingFetched == 0,
