@@ -78,8 +78,8 @@ public:
     std::unique_ptr<vtkOpenGLQuadHelper> Helper;
     std::string Source;
     /**
-     * Draw one triangle over the viewport instead of two (set before the
-     * first ReadyQuad). On llvmpipe, a loop whose trip count differs
+     * Draw one triangle over the viewport instead of two (ReadyQuad
+     * rebuilds the quad when this or AtFarPlane changed). On llvmpipe, a loop whose trip count differs
      * between neighbouring pixels ends early in 2x2 groups that the quad's
      * diagonal splits; a single triangle has no inner edge, so such loops
      * are safe. texCoord is 0..1 over the viewport either way.
@@ -92,13 +92,13 @@ public:
      * that hold a surface.
      */
     bool AtFarPlane = false;
-    int BuiltVertexShader = -1; // (which of the three the helper was built with)
+    int BuiltVertexShader = -1; // (the flags the helper was built with; -1: none yet)
   };
 
   /**
    * Make `quad` a full-screen quad whose fragment shader is `fragmentSource`,
-   * rebuilding it only when the source differs from the one it was built
-   * from, and bind its program. Returns the bound program, or nullptr (with
+   * rebuilding it only when the source or the quad's flags (OneTriangle,
+   * AtFarPlane) differ from those it was built with, and bind its program. Returns the bound program, or nullptr (with
    * an error) when the shader does not compile.
    */
   static vtkShaderProgram* ReadyQuad(

@@ -267,7 +267,8 @@ bool vtkFXToonPass::MakeEdgeMask(
   vtkFXRenderUtilities::FitFramebuffer(this->EdgeMaskFrameBuffer, window, size[0], size[1]);
   this->EdgeMaskFrameBuffer->Bind();
   this->EdgeMaskFrameBuffer->AddDepthAttachment(this->EdgeMask);
-  glDrawBuffer(GL_NONE);
+  this->EdgeMaskFrameBuffer->DeactivateDrawBuffers();
+  this->EdgeMaskFrameBuffer->DeactivateReadBuffer();
   vtkShaderProgram* program =
     glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE
     ? vtkFXRenderUtilities::ReadyQuad(this->EdgeMaskQuad, window, fs)
@@ -284,9 +285,18 @@ bool vtkFXToonPass::MakeEdgeMask(
     program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());
     program->SetUniform2i("fxGBufferSize", size);
     this->EdgeMaskQuad.Helper->Render();
+    depth->Deactivate();
   }
   state->PopFramebufferBindings();
   return program != nullptr;
+}
+
+void vtkFXToonPass::ReleaseEdgeMask(vtkWindow* window)
+{
+  // (the framebuffer holds the texture while it is attached: both go)
+  vtkFXRenderUtilities::ReleaseQuad(this->EdgeMaskQuad, window);
+  vtkFXRenderUtilities::Release(this->EdgeMask, window);
+  vtkFXRenderUtilities::Release(this->EdgeMaskFrameBuffer, window);
 }
 
 bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* window)
@@ -313,10 +323,17 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
     false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXViewPosition::Dec", vtkFXViewPosition, false);
-  const bool masked = this->SkipBackgroundEdges && this->MakeEdgeMask(window, depth, size);
+  // (a mask that could not be made is not tried again until the
+  // resources are released)
+  const bool masked = this->SkipBackgroundEdges && !this->EdgeMaskFailed &&
+    this->MakeEdgeMask(window, depth, size);
+  if (this->SkipBackgroundEdges && !masked)
+  {
+    this->EdgeMaskFailed = true;
+  }
   if (!masked)
   {
-    vtkFXRenderUtilities::Release(this->EdgeMask, window);
+    this->ReleaseEdgeMask(window);
   }
   vtkOpenGLState* state = window->GetState();
   vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
@@ -544,8 +561,7 @@ void vtkFXToonPass::Render(const vtkRenderState* s)
     vtkFXRenderUtilities::Release(this->TileMask, window);
     vtkFXRenderUtilities::Release(this->Edges, window);
     vtkFXRenderUtilities::Release(this->EdgeFrameBuffer, window);
-    vtkFXRenderUtilities::Release(this->EdgeMask, window);
-    vtkFXRenderUtilities::Release(this->EdgeMaskFrameBuffer, window);
+    this->ReleaseEdgeMask(window);
     return;
   }
   if (!this->GBuffer || !this->GBuffer->GetChannelTexture(GB::LinearDepth) ||
@@ -569,9 +585,8 @@ void vtkFXToonPass::Render(const vtkRenderState* s)
 void vtkFXToonPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkFXRenderUtilities::ReleaseQuad(this->EdgeQuad, w);
-  vtkFXRenderUtilities::ReleaseQuad(this->EdgeMaskQuad, w);
-  vtkFXRenderUtilities::Release(this->EdgeMask, w);
-  vtkFXRenderUtilities::Release(this->EdgeMaskFrameBuffer, w);
+  this->ReleaseEdgeMask(w);
+  this->EdgeMaskFailed = false;
   this->LineTiles->ReleaseGraphicsResources();
   vtkFXRenderUtilities::Release(this->TileMask, w);
   vtkFXRenderUtilities::Release(this->Edges, w);

@@ -239,6 +239,7 @@ protected:
   std::string BandCode() const;
   bool FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
   bool MakeEdgeMask(vtkOpenGLRenderWindow* window, vtkTextureObject* depth, const int size[2]);
+  void ReleaseEdgeMask(vtkWindow* window);
   /** Texel offsets a line pixel reads marks from (first, last) at `height` rows. */
   void GetLineWindow(int height, int window[2]) const;
   void ClearTileMask(vtkOpenGLRenderWindow* window, const int size[2]);
@@ -273,6 +274,7 @@ protected:
   vtkSmartPointer<vtkTextureObject> EdgeMask;
   vtkSmartPointer<vtkOpenGLFramebufferObject> EdgeMaskFrameBuffer;
   vtkFXRenderUtilities::FullScreenQuad EdgeMaskQuad;
+  bool EdgeMaskFailed = false;
   vtkNew<vtkOpenGLVertexArrayObject> LineTiles; // no attributes: a 4-vertex strip per tile
   std::string LineSource; // the lines' fragment shader, generated
   bool LineSourceGathers = true; // UseTextureGather when LineSource was made

@@ -515,6 +515,18 @@ int CheckTileCulling(vtkRenderWindow* window)
     FX_CHECK(differingFetched == 0,
       differingFetched << " bytes differ without textureGather at " << width << " px");
   }
+  // One pass switched from skipping the background to not and back (its
+  // edges quad moves off the far plane and back): the same bytes.
+  vtkNew<vtkFXToonPass> toon;
+  toon->SetLineReferenceHeight(301);
+  std::vector<unsigned char> switched[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    toon->SetSkipBackgroundEdges(i != 1);
+    switched[i] = RenderBunny(window, toon);
+  }
+  FX_CHECK(!switched[0].empty() && switched[0] == switched[1] && switched[1] == switched[2],
+    "switching SkipBackgroundEdges on one pass changed the lines");
   return EXIT_SUCCESS;
 }
 
