@@ -1240,14 +1240,22 @@ bool vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
   {
     return false;
   }
+  // Unshadowed where the shader cannot run, and where the G-buffer's depth
+  // (1: no surface) keeps it from running (SkipBackground).
+  vtkTextureObject* surfaces = this->SkipBackground ? this->GBuffer->GetDepthTexture() : nullptr;
+  this->LookUpQuad.AtFarPlane = surfaces != nullptr;
   vtkShaderProgram* program =
     vtkFXRenderUtilities::ReadyQuad(this->LookUpQuad, window, fs);
-  if (!program)
+  if (!program || surfaces)
   {
     const float unshadowed[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
     vtkFXRenderUtilities::ClearTargets(1, unshadowed);
+  }
+  if (!program)
+  {
     return true;
   }
+  target.SkipWhereDepthIsOne(surfaces);
   depth->Activate();
   program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());
   vtkFXRenderUtilities::SetFrustumRayUniforms(program, ren);
@@ -1410,6 +1418,7 @@ void vtkFXAVSMPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ShadowMapSize: " << this->ShadowMapSize << "\n";
+  os << indent << "SkipBackground: " << this->SkipBackground << "\n";
   os << indent << "NumberOfNodes: " << this->NumberOfNodes << " (" << this->Nodes() << " used)\n";
   os << indent << "Exact: " << this->Exact << "\n";
   os << indent << "Representation: "

@@ -215,6 +215,17 @@ public:
   ///@}
 
   /**
+   * Look the shadows up only at pixels that hold a surface (default on):
+   * the look-up pass is depth-tested against the G-buffer's depth, which
+   * rejects the background before the shader runs (on llvmpipe it halved
+   * the look-up of scene:particles, 66 -> 34-52 ms at 1280x720, AVSM-8).
+   * The result is the same either way; off is for comparison.
+   */
+  vtkSetMacro(SkipBackground, bool);
+  vtkGetMacro(SkipBackground, bool);
+  vtkBooleanMacro(SkipBackground, bool);
+
+  /**
    * Measure the capture, resolve and look-up of each frame with a
    * glFinish between them (default off: it stalls the pipeline; for
    * benchmarks).
@@ -374,6 +385,7 @@ protected:
 
   vtkIdType CapturedFragments = 0;
   vtkIdType Capacity = 0;
+  bool SkipBackground = true;
   vtkIdType CapacityLimit = 0;
   vtkIdType StoredFragments = 0; // nodes this frame's lists hold
   bool WarnedOverflow = false;

@@ -218,7 +218,11 @@ vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow
   vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
   const std::vector<vtkTextureObject*>& targets, int width, int height)
   : State(window->GetState())
+  , FrameBuffer(nullptr)
+  , Size{ width, height }
   , Viewport(window->GetState())
+  , DepthFunc(window->GetState())
+  , DepthMask(window->GetState())
   , DepthTest(window->GetState(), GL_DEPTH_TEST)
   , Blend(window->GetState(), GL_BLEND)
   , Scissor(window->GetState(), GL_SCISSOR_TEST)
@@ -226,6 +230,7 @@ vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow
   this->State->PushFramebufferBindings();
   FitFramebuffer(framebuffer, window, width, height);
   framebuffer->Bind();
+  this->FrameBuffer = framebuffer;
   if (targets.empty())
   {
     glFramebufferParameteri(GL_DRAW_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_WIDTH, width);
@@ -244,7 +249,27 @@ vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow
 
 vtkFXRenderUtilities::RenderTargetScope::~RenderTargetScope()
 {
+  if (this->DepthAttached)
+  {
+    // (the framebuffer outlives the scope; the depth texture may not)
+    this->FrameBuffer->RemoveDepthAttachment();
+  }
   this->State->PopFramebufferBindings();
+}
+
+bool vtkFXRenderUtilities::RenderTargetScope::SkipWhereDepthIsOne(vtkTextureObject* depth)
+{
+  if (!depth || static_cast<int>(depth->GetWidth()) != this->Size[0] ||
+    static_cast<int>(depth->GetHeight()) != this->Size[1])
+  {
+    return false;
+  }
+  this->FrameBuffer->AddDepthAttachment(depth);
+  this->DepthAttached = true;
+  this->State->vtkglEnable(GL_DEPTH_TEST);
+  this->State->vtkglDepthFunc(GL_GREATER);
+  this->State->vtkglDepthMask(GL_FALSE);
+  return true;
 }
 
 bool vtkFXRenderUtilities::RenderTargetScope::IsComplete() const

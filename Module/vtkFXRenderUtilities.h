@@ -216,13 +216,31 @@ public:
      */
     bool IsComplete() const;
 
+    /**
+     * Until the scope ends, a quad drawn at the far plane
+     * (FullScreenQuad::AtFarPlane) shades only the pixels where `depth`, a
+     * depth texture of the target's size, is below 1: it becomes the depth
+     * attachment, tested with GL_GREATER and never written. The test runs
+     * before the fragment shader, and a software rasteriser (llvmpipe)
+     * then skips whole 4x4 blocks, where a discard or a branch in the
+     * shader saves nothing. Pixels left out keep what the target held:
+     * clear it first to what the shader writes there. Returns false, and
+     * does nothing, when `depth` is nullptr or not of the target's size.
+     */
+    bool SkipWhereDepthIsOne(vtkTextureObject* depth);
+
   private:
     RenderTargetScope(vtkOpenGLRenderWindow* window,
       vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
       const std::vector<vtkTextureObject*>& targets, int width, int height);
 
     vtkOpenGLState* State;
+    vtkOpenGLFramebufferObject* FrameBuffer;
+    int Size[2];
+    bool DepthAttached = false;
     vtkOpenGLState::ScopedglViewport Viewport;
+    vtkOpenGLState::ScopedglDepthFunc DepthFunc;
+    vtkOpenGLState::ScopedglDepthMask DepthMask;
     vtkOpenGLState::ScopedglEnableDisable DepthTest;
     vtkOpenGLState::ScopedglEnableDisable Blend;
     vtkOpenGLState::ScopedglEnableDisable Scissor;

@@ -335,9 +335,6 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   {
     this->ReleaseEdgeMask(window);
   }
-  vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
   vtkFXRenderUtilities::RenderTargetScope target(window, this->EdgeFrameBuffer, this->Edges);
   this->EdgeQuad.AtFarPlane = masked;
   vtkShaderProgram* program =
@@ -348,14 +345,10 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   }
   if (masked)
   {
-    // Rejected pixels keep "no mark"; the quad at the far plane passes
-    // GL_GREATER where the mask is 0.
+    // Rejected pixels keep "no mark".
     const float noMark[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-    glClearBufferfv(GL_COLOR, 0, noMark);
-    this->EdgeFrameBuffer->AddDepthAttachment(this->EdgeMask);
-    state->vtkglEnable(GL_DEPTH_TEST);
-    state->vtkglDepthFunc(GL_GREATER);
-    state->vtkglDepthMask(GL_FALSE);
+    vtkFXRenderUtilities::ClearTargets(1, noMark);
+    target.SkipWhereDepthIsOne(this->EdgeMask);
   }
   this->TilesFlagged = flag;
   if (flag)
@@ -391,10 +384,6 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
     program->SetUniformi("fxTileMask", 0);
   }
   this->EdgeQuad.Helper->Render();
-  if (masked)
-  {
-    this->EdgeFrameBuffer->RemoveDepthAttachment(); // (the mask may go next frame)
-  }
   if (this->TilesFlagged)
   {
     glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);

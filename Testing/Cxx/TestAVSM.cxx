@@ -143,12 +143,14 @@ vtkRenderer* GroundScene(vtkRenderWindow* window, bool parallel, vtkActor** grou
 // `frames` frames and returns the visibility per pixel (rows bottom-up).
 // With spotHeight > 0 the light is a spot light that high over the origin,
 // pointing at (spotAimX, 0, 0), with a cone of spotCone degrees (90 or
-// more: a positional light shining every way, six views).
+// more: a positional light shining every way, six views). A view angle
+// above 54 degrees shows background around the ground.
 std::vector<float> Visibility(vtkRenderWindow* window, vtkFXAVSMPass* avsm,
   const std::vector<vtkSmartPointer<vtkActor>>& casters, bool parallel, int frames = 1,
-  double spotHeight = 0.0, double spotCone = 60.0, double spotAimX = 0.0)
+  double spotHeight = 0.0, double spotCone = 60.0, double spotAimX = 0.0, double viewAngle = 22.0)
 {
   vtkRenderer* renderer = GroundScene(window, parallel);
+  renderer->GetActiveCamera()->SetViewAngle(viewAngle);
   if (spotHeight > 0.0)
   {
     renderer->RemoveAllLights();
@@ -1044,6 +1046,30 @@ int TestAVSM(int, char*[])
               << idle->GetCapacity() << " nodes allocated" << std::endl;
     FX_CHECK(idle->GetCapacity() == 0 && !idle->GetOutputTexture("visibility"),
       "an AVSM without casters holds " << idle->GetCapacity() << " nodes");
+  }
+  // The look-up at surface pixels only (SkipBackground) or at every pixel:
+  // the same visibility, compressed and exact, under the splats and a slab,
+  // seen at 80 degrees so that background surrounds the ground.
+  for (bool exact : { false, true })
+  {
+    std::vector<float> visibility[2];
+    for (int skip : { 0, 1 })
+    {
+      auto avsm = MakeAVSM(8, exact, true);
+      avsm->SetSkipBackground(skip != 0);
+      visibility[skip] = Visibility(window, avsm,
+        { Splats({ { 0.0, 0.0, 2.0 }, { 0.3, 0.0, 2.5 } }, 0.6, 0.5), Quad(-10, 0, 1, 0.3) }, false,
+        1, 0.0, 60.0, 0.0, 80.0);
+    }
+    const size_t n = visibility[0].size();
+    const bool backgroundCorner = n > 0 && visibility[0][0] == 1.0f && visibility[0][n - 1] == 1.0f;
+    const auto shadowed =
+      std::count_if(visibility[0].begin(), visibility[0].end(), [](float t) { return t < 0.9f; });
+    std::cout << (exact ? "exact" : "AVSM-8") << " look-up with and without the background: "
+              << (visibility[0] == visibility[1] ? "the same" : "different") << ", " << shadowed
+              << " pixels shadowed" << std::endl;
+    FX_CHECK(n > 0 && backgroundCorner && shadowed > 1000 && visibility[0] == visibility[1],
+      "skipping the background changed the " << (exact ? "exact" : "AVSM-8") << " visibility");
   }
   // An actor of opacity 0 whose back faces have a property of their own
   // that is not transparent still casts.
