@@ -16,6 +16,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkTransform.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
@@ -491,7 +492,11 @@ void vtkFXCompositePass::Draw(vtkOpenGLRenderer* ren)
   state->vtkglDepthMask(GL_TRUE);
   if (this->UsedDepthPrepass)
   {
-    this->DrawDepthPrepass(ren);
+    this->UsedDepthBlit = this->BlitDepth(ren);
+    if (!this->UsedDepthBlit)
+    {
+      this->DrawDepthPrepass(ren);
+    }
     // The framebuffer's depth was the clear value (1) everywhere: below 1
     // now exactly where the pre-pass wrote a surface. The lighting quad,
     // at the far plane, passes there only.
@@ -549,6 +554,49 @@ bool vtkFXCompositePass::CanUseDepthPrepass(vtkOpenGLRenderer* ren)
   return vtkFXRenderUtilities::ReadyQuad(this->DepthQuad, window, vtkFXCompositeDepthFS) != nullptr;
 }
 
+bool vtkFXCompositePass::BlitDepth(vtkOpenGLRenderer* ren)
+{
+  // (the G-buffer keeps the renderer's depth format, so a blit copies its
+  // depth in one go where the target has one sample; refused once, the
+  // blit is not tried again until the resources are released)
+  if (!this->UseDepthBlit || this->DepthBlitRefused)
+  {
+    return false;
+  }
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkOpenGLState* state = window->GetState();
+  vtkTextureObject* depth = this->GBuffer->GetDepthTexture();
+  const int width = static_cast<int>(depth->GetWidth());
+  const int height = static_cast<int>(depth->GetHeight());
+  GLint viewport[4];
+  state->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+  if (viewport[2] != width || viewport[3] != height)
+  {
+    return false;
+  }
+  vtkFXRenderUtilities::FitFramebuffer(this->DepthReadFrameBuffer, window, width, height);
+  state->PushFramebufferBindings();
+  this->DepthReadFrameBuffer->Bind();
+  this->DepthReadFrameBuffer->AddDepthAttachment(depth);
+  this->DepthReadFrameBuffer->DeactivateDrawBuffers();
+  this->DepthReadFrameBuffer->DeactivateReadBuffer();
+  state->PopFramebufferBindings();
+
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST); // (a blit obeys the scissor)
+  state->PushReadFramebufferBinding();
+  this->DepthReadFrameBuffer->Bind(GL_READ_FRAMEBUFFER);
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+  glBlitFramebuffer(0, 0, width, height, viewport[0], viewport[1], viewport[0] + width,
+    viewport[1] + height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  const bool copied = glGetError() == GL_NO_ERROR;
+  state->PopReadFramebufferBinding();
+  this->DepthBlitRefused = !copied;
+  return copied;
+}
+
 void vtkFXCompositePass::DrawDepthPrepass(vtkOpenGLRenderer* ren)
 {
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
@@ -569,6 +617,7 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
   this->UsedDepthPrepass = false;
+  this->UsedDepthBlit = false;
   vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   if (!ren || !this->GBuffer || !this->GBuffer->GetDepthTexture() ||
     !this->GBuffer->GetChannelTexture(GB::Albedo))
@@ -628,6 +677,8 @@ void vtkFXCompositePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkFXRenderUtilities::ReleaseQuad(this->Quad, w);
   vtkFXRenderUtilities::ReleaseQuad(this->DepthQuad, w);
+  vtkFXRenderUtilities::Release(this->DepthReadFrameBuffer, w);
+  this->DepthBlitRefused = false;
   vtkFXRenderUtilities::Release(this->LightTexture, w);
   if (this->LightTiles)
   {
@@ -647,6 +698,7 @@ void vtkFXCompositePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseEmission: " << this->UseEmission << "\n";
   os << indent << "MaximumUniformLights: " << this->MaximumUniformLights << "\n";
   os << indent << "UseDepthPrepass: " << this->UseDepthPrepass << "\n";
+  os << indent << "UseDepthBlit: " << this->UseDepthBlit << "\n";
   os << indent << "Contributors:";
   for (const auto& contributor : this->Contributors)
   {

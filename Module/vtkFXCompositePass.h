@@ -54,6 +54,7 @@
 #include <vector>
 
 class vtkFXEffectPass;
+class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
@@ -130,6 +131,21 @@ public:
    * UseDepthPrepass).
    */
   vtkGetMacro(UsedDepthPrepass, bool);
+
+  ///@{
+  /**
+   * Write the pre-pass's depth with one blit where the framebuffer allows
+   * it (default on): the G-buffer keeps the renderer's depth format, so
+   * only a multisampled target refuses (then a full-screen pass writes it,
+   * and the blit is not tried again until ReleaseGraphicsResources). The
+   * result is the same either way; off is for comparison.
+   */
+  vtkSetMacro(UseDepthBlit, bool);
+  vtkGetMacro(UseDepthBlit, bool);
+  vtkBooleanMacro(UseDepthBlit, bool);
+  /** Whether the last Render() wrote the depth with a blit. */
+  vtkGetMacro(UsedDepthBlit, bool);
+  ///@}
 
   /**
    * Most lights served by VTK's per-light uniforms (0..64, default 8); with
@@ -228,6 +244,7 @@ protected:
   void Draw(vtkOpenGLRenderer* ren);
   bool CanUseDepthPrepass(vtkOpenGLRenderer* ren);
   void DrawDepthPrepass(vtkOpenGLRenderer* ren);
+  bool BlitDepth(vtkOpenGLRenderer* ren);
 
   vtkFXGBufferPass* GBuffer = nullptr;
   double OcclusionDiffuseStrength = 1.0;
@@ -253,6 +270,10 @@ protected:
   vtkFXRenderUtilities::FullScreenQuad DepthQuad; // the depth pre-pass
   bool UseDepthPrepass = true;
   bool UsedDepthPrepass = false;
+  bool UseDepthBlit = true;
+  bool UsedDepthBlit = false;
+  bool DepthBlitRefused = false;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> DepthReadFrameBuffer; // reads the G-buffer's depth
 
 private:
   vtkFXCompositePass(const vtkFXCompositePass&) = delete;

@@ -314,7 +314,7 @@ vtkTextureObject* vtkFXGBufferPass::GetDepthTexture()
 
 int vtkFXGBufferPass::GetBytesPerPixel() const
 {
-  int bytes = this->DepthTexture ? vtkFXRenderUtilities::GetBytesPerTexel(vtkFXRenderUtilities::Depth32F) : 0;
+  int bytes = this->DepthTexture ? vtkFXRenderUtilities::GetBytesPerTexel(this->DepthFormat) : 0; // (4 for every depth format)
   for (int c = 0; c < NumberOfChannels; ++c)
   {
     if (this->AllocatedChannels & ChannelBit(c))
@@ -371,8 +371,11 @@ void vtkFXGBufferPass::UpdateTargets(vtkOpenGLRenderWindow* window, int width, i
       vtkFXRenderUtilities::Release(this->Textures[c], window);
     }
   }
+  // The renderer's own depth format (its framebuffer is still bound), so
+  // that the composite can copy this depth into it with one blit.
+  this->DepthFormat = vtkFXRenderUtilities::GetReadDepthFormat(window);
   vtkFXRenderUtilities::EnsureTexture(
-    this->DepthTexture, window, width, height, vtkFXRenderUtilities::Depth32F);
+    this->DepthTexture, window, width, height, this->DepthFormat);
   this->AllocatedChannels = wanted;
 
   // Attach the allocated channels in channel order, packed from attachment 0.

@@ -38,7 +38,8 @@
  *                        effect runs and a visible prop perturbs its normal
  *                        (PerturbsNormal); otherwise it equals Normal and
  *                        GetGeometricNormalTexture() returns Normal's.
- * plus a 32-bit float hardware depth texture that is always allocated.
+ * plus a hardware depth texture (the renderer's depth format) that is
+ * always allocated.
  *
  * Cost: one geometry pass with up to 7 render targets; memory is
  * GetBytesPerPixel() x viewport pixels. The mappers rebuild their shaders
@@ -134,7 +135,9 @@ public:
   vtkTextureObject* GetGeometricNormalTexture();
 
   /**
-   * The hardware depth texture (DEPTH_COMPONENT32F, 1.0 = no surface).
+   * The hardware depth texture (1.0 = no surface), in the depth format of
+   * the framebuffer the renderer draws into (VTK 9.1's window: 32-bit fixed
+   * point), so that one blit copies it there.
    */
   vtkTextureObject* GetDepthTexture();
 
@@ -264,6 +267,7 @@ protected:
   bool HDRMaterial = false;
   unsigned int RequiredChannels;
   unsigned int AllocatedChannels = 0;
+  int DepthFormat = -1; // a vtkFXRenderUtilities::TextureFormat
   unsigned int NumberOfTargets = 0;
   vtkSmartPointer<vtkTextureObject> Textures[NumberOfChannels];
   vtkSmartPointer<vtkTextureObject> DepthTexture;

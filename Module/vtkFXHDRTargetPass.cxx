@@ -42,44 +42,6 @@ int vtkFXHDRTargetPass::GetBytesPerPixel() const
     (this->Depth ? vtkFXRenderUtilities::GetBytesPerTexel(this->DepthFormat) : 0);
 }
 
-int vtkFXHDRTargetPass::MatchingDepthFormat(vtkOpenGLRenderWindow* window)
-{
-  // A depth blit needs the same depth format on both sides: read what the
-  // framebuffer being read keeps (VTK 9.1's window framebuffer: 32-bit
-  // fixed point; others: 24-bit fixed, with or without stencil, or 32-bit
-  // float). A multisampled source is fine: the blit resolves it.
-  GLint readFramebuffer = 0;
-  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
-  const GLenum attachment = readFramebuffer ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
-  GLint bits = 0, type = GL_NONE, stencil = 0;
-  glGetFramebufferAttachmentParameteriv(
-    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
-  glGetFramebufferAttachmentParameteriv(
-    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
-  glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER,
-    readFramebuffer ? GL_STENCIL_ATTACHMENT : GL_STENCIL, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
-    &stencil);
-  if (bits == 32 && type == GL_FLOAT && stencil == 0)
-  {
-    return vtkFXRenderUtilities::Depth32F;
-  }
-  if (bits == 32 && type == GL_UNSIGNED_NORMALIZED && stencil == 0)
-  {
-    return vtkFXRenderUtilities::Depth32;
-  }
-  if (bits == 24)
-  {
-    return stencil == 8 ? vtkFXRenderUtilities::Depth24Stencil8 : vtkFXRenderUtilities::Depth24;
-  }
-  vtkDebugMacro("depth attachment: " << bits << " bits, type " << type << ", stencil " << stencil);
-  // Not one to copy: the one VTK 9.1's translucent pass allocates for this
-  // window (vtkOrderIndependentTranslucentPass), which copies the target's
-  // depth into it.
-  return window->GetStencilCapable() ? vtkFXRenderUtilities::Depth24Stencil8
-    : window->GetDepthBufferSize() == 32 ? vtkFXRenderUtilities::Depth32
-                                          : vtkFXRenderUtilities::Depth24;
-}
-
 bool vtkFXHDRTargetPass::CopyIn(vtkOpenGLState* state, int x, int y, int width, int height, bool depth)
 {
   // The current read framebuffer is what the renderer drew into so far.
@@ -154,7 +116,7 @@ void vtkFXHDRTargetPass::Render(const vtkRenderState* s)
   const int height = std::max(viewport[3], 1);
 
   const bool keepDepth = ren->GetPreserveDepthBuffer() || !ren->GetErase();
-  this->DepthFormat = this->MatchingDepthFormat(window);
+  this->DepthFormat = vtkFXRenderUtilities::GetReadDepthFormat(window);
   vtkFXRenderUtilities::EnsureTexture(
     this->Color, window, width, height, vtkFXRenderUtilities::RGBA16F);
   vtkFXRenderUtilities::EnsureTexture(this->Depth, window, width, height, this->DepthFormat);

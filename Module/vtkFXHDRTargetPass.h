@@ -77,7 +77,6 @@ protected:
   vtkFXHDRTargetPass();
   ~vtkFXHDRTargetPass() override;
 
-  int MatchingDepthFormat(vtkOpenGLRenderWindow* window);
   // Returns whether the depth was copied (else it is cleared to far).
   bool CopyIn(vtkOpenGLState* state, int x, int y, int width, int height, bool depth);
   void WriteBack(vtkOpenGLRenderWindow* window);

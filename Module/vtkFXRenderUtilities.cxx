@@ -108,6 +108,43 @@ bool vtkFXRenderUtilities::EnsureTexture(vtkSmartPointer<vtkTextureObject>& text
   return true;
 }
 
+int vtkFXRenderUtilities::GetReadDepthFormat(vtkOpenGLRenderWindow* window)
+{
+  // A depth blit needs the same depth format on both sides: read what the
+  // framebuffer being read keeps (VTK 9.1's window framebuffer: 32-bit
+  // fixed point; others: 24-bit fixed, with or without stencil, or 32-bit
+  // float). A multisampled source is fine: the blit resolves it.
+  GLint readFramebuffer = 0;
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
+  const GLenum attachment = readFramebuffer ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
+  GLint bits = 0, type = GL_NONE, stencil = 0;
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+  glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER,
+    readFramebuffer ? GL_STENCIL_ATTACHMENT : GL_STENCIL, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
+    &stencil);
+  if (bits == 32 && type == GL_FLOAT && stencil == 0)
+  {
+    return Depth32F;
+  }
+  if (bits == 32 && type == GL_UNSIGNED_NORMALIZED && stencil == 0)
+  {
+    return Depth32;
+  }
+  if (bits == 24)
+  {
+    return stencil == 8 ? Depth24Stencil8 : Depth24;
+  }
+  // Not one to copy: the one VTK 9.1's translucent pass allocates for this
+  // window (vtkOrderIndependentTranslucentPass), which copies the target's
+  // depth into it.
+  return window->GetStencilCapable() ? Depth24Stencil8
+    : window->GetDepthBufferSize() == 32 ? Depth32
+                                          : Depth24;
+}
+
 void vtkFXRenderUtilities::FitFramebuffer(vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
   vtkOpenGLRenderWindow* window, int width, int height)
 {

@@ -70,6 +70,14 @@ public:
     vtkOpenGLRenderWindow* window, int width, int height, int format);
 
   /**
+   * The TextureFormat of the bound read framebuffer's depth buffer, so that
+   * a depth blit from or to it works (both sides of a depth blit must have
+   * one format); where it has none of the depth formats above, the one
+   * VTK 9.1's translucent pass would allocate for `window`.
+   */
+  static int GetReadDepthFormat(vtkOpenGLRenderWindow* window);
+
+  /**
    * A full-screen quad and the fragment source its program was built from,
    * made by ReadyQuad and freed by ReleaseQuad.
    */

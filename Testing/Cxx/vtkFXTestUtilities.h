@@ -303,6 +303,16 @@ inline std::vector<float> Download(vtkTextureObject* texture, int components)
       values[i] = bytes[i] / 255.0f;
     }
   }
+  else if (type == VTK_UNSIGNED_INT)
+  {
+    // (a 32-bit fixed-point depth texture, as the G-buffer keeps when the
+    // window does)
+    const unsigned int* words = static_cast<const unsigned int*>(data);
+    for (size_t i = 0; i < n; ++i)
+    {
+      values[i] = static_cast<float>(words[i] / 4294967295.0);
+    }
+  }
   pbo->UnmapPackedBuffer();
   pbo->Delete();
   return values;
