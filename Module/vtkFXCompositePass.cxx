@@ -559,7 +559,9 @@ bool vtkFXCompositePass::BlitDepth(vtkOpenGLRenderer* ren)
   // (the G-buffer keeps the renderer's depth format, so a blit copies its
   // depth in one go where the target has one sample; refused once, the
   // blit is not tried again until the resources are released)
-  if (!this->UseDepthBlit || this->DepthBlitRefused)
+  GLint target = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+  if (!this->UseDepthBlit || (this->DepthBlitRefused && this->RefusingFramebuffer == target))
   {
     return false;
   }
@@ -586,14 +588,18 @@ bool vtkFXCompositePass::BlitDepth(vtkOpenGLRenderer* ren)
   state->vtkglDisable(GL_SCISSOR_TEST); // (a blit obeys the scissor)
   state->PushReadFramebufferBinding();
   this->DepthReadFrameBuffer->Bind(GL_READ_FRAMEBUFFER);
-  while (glGetError() != GL_NO_ERROR)
+  // (what earlier steps left is not this blit's refusal)
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
   {
   }
   glBlitFramebuffer(0, 0, width, height, viewport[0], viewport[1], viewport[0] + width,
     viewport[1] + height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
   const bool copied = glGetError() == GL_NO_ERROR;
   state->PopReadFramebufferBinding();
+  // (refused by one target, e.g. a multisampled window, the blit is tried
+  // again for another, e.g. the HDR target)
   this->DepthBlitRefused = !copied;
+  this->RefusingFramebuffer = target;
   return copied;
 }
 

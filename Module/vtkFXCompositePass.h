@@ -137,7 +137,8 @@ public:
    * Write the pre-pass's depth with one blit where the framebuffer allows
    * it (default on): the G-buffer keeps the renderer's depth format, so
    * only a multisampled target refuses (then a full-screen pass writes it,
-   * and the blit is not tried again until ReleaseGraphicsResources). The
+   * and the blit is not tried again for that target until
+   * ReleaseGraphicsResources). The
    * result is the same either way; off is for comparison.
    */
   vtkSetMacro(UseDepthBlit, bool);
@@ -273,6 +274,7 @@ protected:
   bool UseDepthBlit = true;
   bool UsedDepthBlit = false;
   bool DepthBlitRefused = false;
+  int RefusingFramebuffer = -1; // the draw framebuffer that refused it
   vtkSmartPointer<vtkOpenGLFramebufferObject> DepthReadFrameBuffer; // reads the G-buffer's depth
 
 private:

@@ -48,7 +48,7 @@ bool vtkFXHDRTargetPass::CopyIn(vtkOpenGLState* state, int x, int y, int width, 
   // Colour and depth blit separately: a refused depth blit must not cost
   // the colour.
   this->FrameBuffer->Bind(GL_DRAW_FRAMEBUFFER);
-  while (glGetError() != GL_NO_ERROR)
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
   {
   }
   glBlitFramebuffer(

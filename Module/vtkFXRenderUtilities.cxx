@@ -114,17 +114,35 @@ int vtkFXRenderUtilities::GetReadDepthFormat(vtkOpenGLRenderWindow* window)
   // framebuffer being read keeps (VTK 9.1's window framebuffer: 32-bit
   // fixed point; others: 24-bit fixed, with or without stencil, or 32-bit
   // float). A multisampled source is fine: the blit resolves it.
+  // (an attachment point that holds nothing answers only its object type:
+  // any other query of it is a GL error, so it is asked first)
   GLint readFramebuffer = 0;
   glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
   const GLenum attachment = readFramebuffer ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
+  const GLenum stencilAttachment = readFramebuffer ? GL_STENCIL_ATTACHMENT : GL_STENCIL;
+  const auto holds = [](GLenum point) {
+    GLint object = GL_NONE;
+    glGetFramebufferAttachmentParameteriv(
+      GL_READ_FRAMEBUFFER, point, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &object);
+    return object != GL_NONE;
+  };
   GLint bits = 0, type = GL_NONE, stencil = 0;
-  glGetFramebufferAttachmentParameteriv(
-    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
-  glGetFramebufferAttachmentParameteriv(
-    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
-  glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER,
-    readFramebuffer ? GL_STENCIL_ATTACHMENT : GL_STENCIL, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
-    &stencil);
+  if (holds(attachment))
+  {
+    glGetFramebufferAttachmentParameteriv(
+      GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
+    glGetFramebufferAttachmentParameteriv(
+      GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+    // (a packed depth-stencil texture attached as depth only, as VTK 9.1
+    // attaches its own, reports its stencil bits here)
+    glGetFramebufferAttachmentParameteriv(
+      GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &stencil);
+  }
+  if (stencil == 0 && holds(stencilAttachment))
+  {
+    glGetFramebufferAttachmentParameteriv(
+      GL_READ_FRAMEBUFFER, stencilAttachment, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &stencil);
+  }
   if (bits == 32 && type == GL_FLOAT && stencil == 0)
   {
     return Depth32F;

@@ -102,14 +102,17 @@ vec3 fxDebugColor()
 
 void main()
 {
+#if FX_WRITES_DEPTH
   float hardwareDepth = texture(fxHardwareDepth, texCoord).r;
   if (hardwareDepth >= 1.0)
   {
     discard; // background: keep what the renderer cleared
   }
-#if FX_WRITES_DEPTH
   gl_FragDepth = hardwareDepth;
 #endif
+  // (after the depth pre-pass, the depth test has already left the
+  // background out: a depth the pre-pass copied exactly, within 2^-25 of
+  // 1, can read as 1.0 here and must not be discarded)
   vec4 albedo = texture(fxAlbedo, texCoord);
   vec3 color = albedo.rgb; // unlit fragments store their final colour here
   bool lit = false;
