@@ -709,6 +709,32 @@ int TestDepthPrepass()
         input << ": the depth blit changed the image");
     }
   }
+  // A window asked for 4 samples: with the pre-pass (a blit where the
+  // window's framebuffer takes one, a pass otherwise) the image is the
+  // same as one pass's.
+  {
+    auto msaa = vtkFXTest::MakeWindow(200, 150);
+    msaa->SetMultiSamples(4);
+    vtkNew<vtkRenderer> renderer;
+    msaa->AddRenderer(renderer);
+    std::string error;
+    FX_CHECK(vtkFXScenes::Populate(renderer, "scene:mixed", vtkFXScenes::Options(), error), error);
+    vtkNew<vtkFXPipelinePass> pipeline;
+    renderer->SetPass(pipeline);
+    vtkFXCompositePass* composite = pipeline->GetCompositePass();
+    std::vector<unsigned char> colour[2];
+    for (int prepass : { 0, 1 })
+    {
+      composite->SetUseDepthPrepass(prepass != 0);
+      msaa->Render();
+      colour[prepass] = vtkFXScenes::Capture(msaa);
+    }
+    std::cout << "multisampled window: pre-pass " << composite->GetUsedDepthPrepass()
+              << ", as a blit " << composite->GetUsedDepthBlit() << ", largest colour difference "
+              << vtkFXScenes::MaxDifference(colour[0], colour[1]) << "/255" << std::endl;
+    FX_CHECK(composite->GetUsedDepthPrepass() && !colour[0].empty() && colour[0] == colour[1],
+      "multisampled window: the pre-pass changed the image");
+  }
   // Where the depth buffer holds more than the clear value, one pass.
   vtkRenderer* renderer = window->GetRenderers()->GetFirstRenderer();
   auto* pipeline = vtkFXPipelinePass::SafeDownCast(renderer->GetPass());
