@@ -21,9 +21,10 @@
  * buffer, so VTK's translucent, volume and overlay steps that follow are
  * depth-tested as usual. Background pixels are left untouched.
  *
- * Cost: a full-screen depth pre-pass (one texture read per pixel), then a
- * lighting pass whose depth test leaves out the background before the
- * fragment shader runs (see UseDepthPrepass), with one texture read per
+ * Cost: a depth pre-pass (one blit of the G-buffer's depth, or where the
+ * framebuffer refuses it a full-screen pass of one texture read per
+ * pixel), then a lighting pass whose depth test leaves out the background
+ * before the fragment shader runs (see UseDepthPrepass), with one texture read per
  * allocated channel and a loop over the lights per surface pixel (on the
  * light-texture path, over the lights of the pixel's tile, with 5 texel
  * reads per light, 4 without culling, and building the tiles' lists on the
