@@ -205,22 +205,22 @@ vtkShaderProgram* vtkFXRenderUtilities::ReadyQuad(
   // At the far plane, z = w: window depth 1 exactly (the clip test keeps
   // z = w).
   const int vertexShader = (quad.OneTriangle ? 1 : 0) + (quad.AtFarPlane ? 2 : 0);
-  std::string vertexSource = vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader();
-  if (vertexShader != 0)
-  {
-    vertexSource = std::string("//VTK::System::Dec\n"
-                               "in vec4 ndCoordIn;\n"
-                               "in vec2 texCoordIn;\n"
-                               "out vec2 texCoord;\n"
-                               "void main()\n"
-                               "{\n") +
-      (quad.OneTriangle ? "  gl_Position = vec4(2.0 * ndCoordIn.xy + 1.0, "
-                          : "  gl_Position = vec4(ndCoordIn.xy, ") +
-      (quad.AtFarPlane ? "1.0, 1.0);\n" : "0.0, 1.0);\n") +
-      (quad.OneTriangle ? "  texCoord = 2.0 * texCoordIn;\n" : "  texCoord = texCoordIn;\n") + "}\n";
-  }
   if (!quad.Helper || quad.Source != fragmentSource || quad.BuiltVertexShader != vertexShader)
   {
+    // (built only with the quad: ReadyQuad runs every frame)
+    const std::string vertexSource = vertexShader == 0
+      ? vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader()
+      : std::string("//VTK::System::Dec\n"
+                    "in vec4 ndCoordIn;\n"
+                    "in vec2 texCoordIn;\n"
+                    "out vec2 texCoord;\n"
+                    "void main()\n"
+                    "{\n") +
+        (quad.OneTriangle ? "  gl_Position = vec4(2.0 * ndCoordIn.xy + 1.0, "
+                          : "  gl_Position = vec4(ndCoordIn.xy, ") +
+        (quad.AtFarPlane ? "1.0, 1.0);\n" : "0.0, 1.0);\n") +
+        (quad.OneTriangle ? "  texCoord = 2.0 * texCoordIn;\n" : "  texCoord = texCoordIn;\n") +
+        "}\n";
     quad.Helper.reset(
       new vtkOpenGLQuadHelper(window, vertexSource.c_str(), fragmentSource.c_str(), ""));
     quad.Source = fragmentSource;

@@ -87,10 +87,11 @@ public:
     std::string Source;
     /**
      * Draw one triangle over the viewport instead of two (ReadyQuad
-     * rebuilds the quad when this or AtFarPlane changed). On llvmpipe, a loop whose trip count differs
-     * between neighbouring pixels ends early in 2x2 groups that the quad's
-     * diagonal splits; a single triangle has no inner edge, so such loops
-     * are safe. texCoord is 0..1 over the viewport either way.
+     * rebuilds the quad when this or AtFarPlane changed). On llvmpipe, a
+     * loop whose trip count differs between neighbouring pixels ends early
+     * in 2x2 groups that the quad's diagonal splits; a single triangle has
+     * no inner edge, so such loops are safe. texCoord is 0..1 over the
+     * viewport either way.
      */
     bool OneTriangle = false;
     /**
@@ -106,8 +107,9 @@ public:
   /**
    * Make `quad` a full-screen quad whose fragment shader is `fragmentSource`,
    * rebuilding it only when the source or the quad's flags (OneTriangle,
-   * AtFarPlane) differ from those it was built with, and bind its program. Returns the bound program, or nullptr (with
-   * an error) when the shader does not compile.
+   * AtFarPlane) differ from those it was built with, and bind its program.
+   * Returns the bound program, or nullptr (with an error) when the shader
+   * does not compile.
    */
   static vtkShaderProgram* ReadyQuad(
     FullScreenQuad& quad, vtkOpenGLRenderWindow* window, const std::string& fragmentSource);
