@@ -576,13 +576,10 @@ bool vtkFXCompositePass::BlitDepth(vtkOpenGLRenderer* ren)
   {
     return false;
   }
-  vtkFXRenderUtilities::FitFramebuffer(this->DepthReadFrameBuffer, window, width, height);
-  state->PushFramebufferBindings();
-  this->DepthReadFrameBuffer->Bind();
-  this->DepthReadFrameBuffer->AddDepthAttachment(depth);
-  this->DepthReadFrameBuffer->DeactivateDrawBuffers();
-  this->DepthReadFrameBuffer->DeactivateReadBuffer();
-  state->PopFramebufferBindings();
+  if (!vtkFXRenderUtilities::MakeDepthOnlyFramebuffer(this->DepthReadFrameBuffer, window, depth))
+  {
+    return false;
+  }
 
   vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST); // (a blit obeys the scissor)

@@ -182,6 +182,24 @@ void vtkFXRenderUtilities::FitFramebuffer(vtkSmartPointer<vtkOpenGLFramebufferOb
   }
 }
 
+bool vtkFXRenderUtilities::MakeDepthOnlyFramebuffer(
+  vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer, vtkOpenGLRenderWindow* window,
+  vtkTextureObject* depth)
+{
+  vtkOpenGLState* state = window->GetState();
+  FitFramebuffer(framebuffer, window, static_cast<int>(depth->GetWidth()),
+    static_cast<int>(depth->GetHeight()));
+  state->PushFramebufferBindings();
+  framebuffer->Bind();
+  framebuffer->AddDepthAttachment(depth);
+  // (through VTK: without colour buffers, complete before GL 4.1 too)
+  framebuffer->DeactivateDrawBuffers();
+  framebuffer->DeactivateReadBuffer();
+  const bool complete = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  state->PopFramebufferBindings();
+  return complete;
+}
+
 void vtkFXRenderUtilities::ClearTargets(int targets, const float value[4])
 {
   // (glClearBuffer ignores the clear colour, so vtkOpenGLState's copy of

@@ -125,6 +125,15 @@ public:
     vtkOpenGLRenderWindow* window, int width, int height);
 
   /**
+   * Makes `framebuffer` (created for `window` if there is none) one whose
+   * only attachment is the depth texture `depth`, with its draw and read
+   * buffers off: a target for depth-only draws or a source for depth
+   * blits. The bindings stay as they were. Returns whether it is complete.
+   */
+  static bool MakeDepthOnlyFramebuffer(vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
+    vtkOpenGLRenderWindow* window, vtkTextureObject* depth);
+
+  /**
    * Fills the bound framebuffer's first colour target with `value` and its
    * other `targets - 1` with 0: what a pass writes when its shader failed,
    * so that consumers read a defined "no effect" instead of old texels.

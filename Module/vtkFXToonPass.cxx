@@ -253,6 +253,11 @@ bool vtkFXToonPass::MakeEdgeMask(
 {
   vtkFXRenderUtilities::EnsureTexture(
     this->EdgeMask, window, size[0], size[1], vtkFXRenderUtilities::Depth32F);
+  if (!vtkFXRenderUtilities::MakeDepthOnlyFramebuffer(
+        this->EdgeMaskFrameBuffer, window, this->EdgeMask))
+  {
+    return false;
+  }
   std::string fs = vtkFXToonEdgeMaskFS;
   vtkShaderProgram::Substitute(
     fs, "//VTK::System::Dec", GatherDefinesFor(this->UseTextureGather), false);
@@ -264,15 +269,8 @@ bool vtkFXToonPass::MakeEdgeMask(
   vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
   vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
   state->PushFramebufferBindings();
-  vtkFXRenderUtilities::FitFramebuffer(this->EdgeMaskFrameBuffer, window, size[0], size[1]);
   this->EdgeMaskFrameBuffer->Bind();
-  this->EdgeMaskFrameBuffer->AddDepthAttachment(this->EdgeMask);
-  this->EdgeMaskFrameBuffer->DeactivateDrawBuffers();
-  this->EdgeMaskFrameBuffer->DeactivateReadBuffer();
-  vtkShaderProgram* program =
-    glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE
-    ? vtkFXRenderUtilities::ReadyQuad(this->EdgeMaskQuad, window, fs)
-    : nullptr;
+  vtkShaderProgram* program = vtkFXRenderUtilities::ReadyQuad(this->EdgeMaskQuad, window, fs);
   if (program)
   {
     state->vtkglViewport(0, 0, size[0], size[1]);
