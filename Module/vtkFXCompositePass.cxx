@@ -561,7 +561,7 @@ bool vtkFXCompositePass::BlitDepth(vtkOpenGLRenderer* ren)
   // blit is not tried again until the resources are released)
   GLint target = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
-  if (!this->UseDepthBlit || (this->DepthBlitRefused && this->RefusingFramebuffer == target))
+  if (!this->UseDepthBlit || this->RefusingFramebuffer == target)
   {
     return false;
   }
@@ -595,8 +595,7 @@ bool vtkFXCompositePass::BlitDepth(vtkOpenGLRenderer* ren)
   state->PopReadFramebufferBinding();
   // (refused by one target, e.g. a multisampled window, the blit is tried
   // again for another, e.g. the HDR target)
-  this->DepthBlitRefused = !copied;
-  this->RefusingFramebuffer = target;
+  this->RefusingFramebuffer = copied ? -1 : target;
   return copied;
 }
 
@@ -681,7 +680,7 @@ void vtkFXCompositePass::ReleaseGraphicsResources(vtkWindow* w)
   vtkFXRenderUtilities::ReleaseQuad(this->Quad, w);
   vtkFXRenderUtilities::ReleaseQuad(this->DepthQuad, w);
   vtkFXRenderUtilities::Release(this->DepthReadFrameBuffer, w);
-  this->DepthBlitRefused = false;
+  this->RefusingFramebuffer = -1;
   vtkFXRenderUtilities::Release(this->LightTexture, w);
   if (this->LightTiles)
   {

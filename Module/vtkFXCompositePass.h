@@ -274,8 +274,7 @@ protected:
   bool UsedDepthPrepass = false;
   bool UseDepthBlit = true;
   bool UsedDepthBlit = false;
-  bool DepthBlitRefused = false;
-  int RefusingFramebuffer = -1; // the draw framebuffer that refused it
+  int RefusingFramebuffer = -1; // the draw framebuffer that last refused the blit; -1: none
   vtkSmartPointer<vtkOpenGLFramebufferObject> DepthReadFrameBuffer; // reads the G-buffer's depth
 
 private:
