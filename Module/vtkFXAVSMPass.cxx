@@ -639,8 +639,9 @@ bool vtkFXAVSMPass::EnsureBuffers()
   {
     if (!this->ReportedAllocationFailure)
     {
-      vtkErrorMacro("AVSM: the list heads of " << texels << " shadow-map texels (" << this->GetNumberOfViews()
-        << " views of " << this->ShadowMapSize << "^2) need " << (texels * 4) / (1 << 20)
+      vtkErrorMacro("AVSM: the list heads of "
+        << texels << " shadow-map texels (" << this->GetNumberOfViews() << " views of "
+        << this->ShadowMapSize << "^2) need " << (texels * 4) / (1 << 20)
         << " MiB, more than one OpenGL storage block holds (" << blockBytes / (1 << 20)
         << " MiB); no shadows of translucent props (lower ShadowMapSize).");
       this->ReportedAllocationFailure = true;
