@@ -763,6 +763,43 @@ int TestAVSM(int, char*[])
     }
   }
 
+  // List heads beyond one storage block: a positional light's six views
+  // of 4096^2 texels need 384 MiB of heads (4 bytes per texel), above
+  // llvmpipe's 128 MiB block. The pass says so once, however many frames,
+  // allocates nothing for them, and the frame is the one the pipeline
+  // draws with the pass disabled: no shadows of translucent props.
+  {
+    GLint64 blockBytes = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &blockBytes);
+    const long long heads = 6LL * 4096 * 4096 * 4;
+    if (heads <= blockBytes)
+    {
+      std::cout << "list heads over a storage block: not tried, this OpenGL's block holds "
+                << blockBytes << " bytes" << std::endl;
+    }
+    else
+    {
+      auto avsm = MakeAVSM(8, false, true);
+      avsm->SetShadowMapSize(4096);
+      vtkFXTest::ErrorCounter failed(avsm);
+      const auto v =
+        Visibility(window, avsm, { Quad(-10, 0, 1, 0.3) }, true, 3, 6.0, 120.0);
+      std::cout << "list heads over a storage block: " << failed.Count << " error(s): "
+                << failed.Last << std::endl;
+      FX_CHECK(avsm->GetNumberOfViews() == 0 && v.empty(),
+        "a visibility texture (" << v.size() << " values) without lists");
+      FX_CHECK(failed.Count == 1 && failed.Last.find("list heads") != std::string::npos,
+        failed.Count << " errors for list heads over a storage block, not 1");
+      const auto unshadowed = vtkFXScenes::Capture(window);
+      avsm->EnabledOff();
+      window->Render();
+      const auto disabled = vtkFXScenes::Capture(window);
+      FX_CHECK(!unshadowed.empty() && unshadowed == disabled,
+        "the frame without lists differs from the frame without the pass");
+      FX_CHECK(glGetError() == GL_NO_ERROR, "an OpenGL error after the refused lists");
+    }
+  }
+
   // A list buffer of 1 fragment per texel for up to 3 surfaces per texel:
   // the first frame drops fragments (and says so), the second is right.
   {
