@@ -88,10 +88,10 @@ float fxCurveAt(float z)
 // A segment's two nodes, entry <= exit, each after the nodes at or before
 // its depth, in one pass from the end down: nodes past the exit move up
 // two, nodes between entry and exit one. Every array index is a constant
-// once the loop is unrolled: node i reads nodes i - 1 and i - 2 and
-// selects, where it used to read the node at an index chosen at run time,
-// which cost the particles' resolve 15-20% more on llvmpipe (an array
-// indexed at run time cannot be kept in registers).
+// once the loop is unrolled: node i reads itself and nodes i - 1 and
+// i - 2 and selects, where it used to read the node at an index chosen
+// at run time, which cost the particles' resolve 15-20% more on llvmpipe
+// (an array indexed at run time cannot be kept in registers).
 void fxAddNodes(float entry, float entryTau, float exitDepth, float exitTau)
 {
   float entryTr = exp(-entryTau);
