@@ -1,6 +1,7 @@
 #include "vtkFXBloomPass.h"
 
 #include "vtkFXBloomDownsampleFS.h"
+#include "vtkFXBloomPrefilterFS.h"
 #include "vtkFXBloomUpsampleFS.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXRenderUtilities.h"
@@ -233,6 +234,51 @@ vtkShaderProgram* vtkFXBloomPass::ReadyProgram(
   return vtkFXRenderUtilities::ReadyQuad(this->Quads[which], window, fs);
 }
 
+bool vtkFXBloomPass::Prefilter(
+  vtkOpenGLRenderWindow* window, vtkTextureObject* color, vtkTextureObject* emission)
+{
+  const int width = static_cast<int>(color->GetWidth());
+  const int height = static_cast<int>(color->GetHeight());
+  vtkFXRenderUtilities::EnsureTexture(
+    this->Prefiltered, window, width, height, vtkFXRenderUtilities::RGBA16F);
+  SetFilterAndMirror(this->Prefiltered);
+  std::string fs = vtkFXBloomPrefilterFS;
+  vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
+    std::string("//VTK::System::Dec\n#define FX_EMISSION ") + (emission ? "1" : "0") + "\n",
+    false);
+  vtkFXRenderUtilities::RenderTargetScope target(window, this->PrefilterTarget, this->Prefiltered);
+  vtkShaderProgram* program = target.IsComplete()
+    ? this->ReadyProgram(PrefilterProgram, window, fs)
+    : nullptr;
+  if (!program)
+  {
+    return false;
+  }
+  color->Activate();
+  program->SetUniformi("fxColor", color->GetTextureUnit());
+  if (emission)
+  {
+    emission->Activate();
+    program->SetUniformi("fxEmission", emission->GetTextureUnit());
+  }
+  program->SetUniformf("fxThreshold", static_cast<float>(this->Threshold));
+  program->SetUniformf("fxKnee", static_cast<float>(this->Knee * this->Threshold));
+  this->Quads[PrefilterProgram].Helper->Render();
+  color->Deactivate();
+  if (emission)
+  {
+    emission->Deactivate();
+  }
+  return true;
+}
+
+void vtkFXBloomPass::ReleasePrefilter(vtkWindow* window)
+{
+  vtkFXRenderUtilities::ReleaseQuad(this->Quads[PrefilterProgram], window);
+  vtkFXRenderUtilities::Release(this->Prefiltered, window);
+  vtkFXRenderUtilities::Release(this->PrefilterTarget, window);
+}
+
 bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject* color, int levels)
 {
   vtkTextureObject* emission =
@@ -242,7 +288,17 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
   {
     return false;
   }
-  vtkTextureObject* full = emission ? emission : color;
+  // With a threshold the first step reads the prefiltered image as it
+  // reads any level; otherwise the emission channel, bilinearly.
+  if (threshold && !this->Prefilter(window, color, emission))
+  {
+    return false;
+  }
+  if (!threshold)
+  {
+    this->ReleasePrefilter(window);
+  }
+  vtkTextureObject* full = threshold ? this->Prefiltered.GetPointer() : emission;
   int width = static_cast<int>(full->GetWidth());
   int height = static_cast<int>(full->GetHeight());
   for (int k = 0; k < levels; ++k)
@@ -257,11 +313,10 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
 
     std::string fs = vtkFXBloomDownsampleFS;
     const bool first = k == 0;
+    const bool readsEmission = first && !threshold;
     vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
-      std::string("//VTK::System::Dec\n#define FX_FIRST ") + (first ? "1" : "0") +
-        "\n#define FX_EMISSION " + (emission ? "1" : "0") + "\n#define FX_THRESHOLD " +
-        (threshold ? "1" : "0") + "\n#define FX_KARIS " +
-        (first && this->FireflySuppression ? "1" : "0") + "\n",
+      std::string("//VTK::System::Dec\n#define FX_FIRST ") + (readsEmission ? "1" : "0") +
+        "\n#define FX_KARIS " + (first && this->FireflySuppression ? "1" : "0") + "\n",
       false);
     vtkFXRenderUtilities::RenderTargetScope target(window, level.DownTarget, level.Down);
     int rect[4];
@@ -274,46 +329,23 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
     }
     const float texel[2] = { 1.0f / sourceSize[0], 1.0f / sourceSize[1] };
     program->SetUniform2f("fxSourceTexel", texel);
-    std::vector<vtkTextureObject*> read;
-    if (first)
+    vtkTextureObject* source = readsEmission ? emission
+      : first                                ? this->Prefiltered.GetPointer()
+                                             : this->Levels[k - 1]->Down.GetPointer();
+    source->Activate();
+    program->SetUniformi(readsEmission ? "fxEmission" : "fxSource", source->GetTextureUnit());
+    if (readsEmission)
     {
-      // The sources are other passes' textures, filtered nearest: read them
-      // bilinearly through a sampler object instead of changing them.
-      if (emission)
-      {
-        read.push_back(emission);
-        emission->Activate();
-        program->SetUniformi("fxEmission", emission->GetTextureUnit());
-      }
-      if (threshold)
-      {
-        read.push_back(color);
-        color->Activate();
-        program->SetUniformi("fxColor", color->GetTextureUnit());
-        program->SetUniformf("fxThreshold", static_cast<float>(this->Threshold));
-        program->SetUniformf("fxKnee", static_cast<float>(this->Knee * this->Threshold));
-      }
-      for (vtkTextureObject* t : read)
-      {
-        glBindSampler(t->GetTextureUnit(), this->LinearSampler);
-      }
-    }
-    else
-    {
-      vtkTextureObject* above = this->Levels[k - 1]->Down;
-      read.push_back(above);
-      above->Activate();
-      program->SetUniformi("fxSource", above->GetTextureUnit());
+      // The G-buffer's channel is another pass's texture, filtered nearest:
+      // read it bilinearly through a sampler object instead of changing it.
+      glBindSampler(source->GetTextureUnit(), this->LinearSampler);
     }
     this->Quads[first ? FirstDown : Down].Helper->Render();
-    for (vtkTextureObject* t : read)
+    if (readsEmission)
     {
-      if (first)
-      {
-        glBindSampler(t->GetTextureUnit(), 0);
-      }
-      t->Deactivate();
+      glBindSampler(source->GetTextureUnit(), 0);
     }
+    source->Deactivate();
   }
   return true;
 }
@@ -462,6 +494,7 @@ void vtkFXBloomPass::ReleaseGraphicsResources(vtkWindow* w)
     level->Release(w);
   }
   this->Levels.clear();
+  this->ReleasePrefilter(w);
   if (this->LinearSampler)
   {
     if (auto* window = vtkOpenGLRenderWindow::SafeDownCast(w))

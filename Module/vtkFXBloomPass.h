@@ -38,10 +38,13 @@
  * Cost: one pass per level down and up, drawn only over the part of the
  * image the glow can reach (the emissive props' screen rectangle widened by
  * 4 deviations of the widest level; the whole image with a threshold), the first at half resolution with
- * 13 bilinear source reads per texel (plus 36 texel reads with a
- * threshold, which is applied per texel before any averaging), each next one
+ * 13 bilinear source reads per texel, each next one
  * at a quarter of the texels of the one before, 4 bilinear reads per
- * texel up; one full-resolution pass of 4 bilinear reads, blended. Memory: two RGBA16F textures per level
+ * texel up; one full-resolution pass of 4 bilinear reads, blended. With a
+ * threshold, first a full-resolution pass of 2 texel reads (colour and
+ * emission) applies it per texel, before any averaging, into an RGBA16F
+ * image the first step reads (8 bytes per pixel, kept only while a
+ * threshold is set). Memory: two RGBA16F textures per level
  * (about 2 x 8 / 3 bytes per full-resolution pixel).
  */
 #ifndef vtkFXBloomPass_h
@@ -168,6 +171,9 @@ protected:
 
   struct Level;
   bool Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject* color, int levels);
+  /** With a threshold: the glow's source per full-resolution texel, into Prefiltered. */
+  bool Prefilter(vtkOpenGLRenderWindow* window, vtkTextureObject* color, vtkTextureObject* emission);
+  void ReleasePrefilter(vtkWindow* window);
   void Upsample(vtkOpenGLRenderWindow* window, int levels);
   void AddGlow(vtkOpenGLRenderWindow* window); // adds GetGlowTexture()
   vtkShaderProgram* ReadyProgram(int which, vtkOpenGLRenderWindow* window, const std::string& fs);
@@ -183,6 +189,10 @@ protected:
   bool ReadsEmission = true; // this frame: UseEmission and some prop emits (HasWork)
 
   std::vector<std::unique_ptr<Level>> Levels;
+  // With a threshold: the emission plus the lit light above the threshold,
+  // full resolution (RGBA16F), what the first step down reads.
+  vtkSmartPointer<vtkTextureObject> Prefiltered;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> PrefilterTarget;
   // World bounds of the emissive props (from HasWork), and the pixels of
   // the viewport the glow can reach, x0 y0 x1 y1 (ends excluded): the
   // pyramid and the final add draw there only.
@@ -193,6 +203,7 @@ protected:
   {
     FirstDown = 0,
     Down,
+    PrefilterProgram,
     Up,
     Final,
     NumberOfPrograms

@@ -62,6 +62,9 @@ public:
     const std::string fs = "//VTK::System::Dec\nin vec2 texCoord;\nuniform float big;\n"
                            "//VTK::Output::Dec\n"
                            "void main() {\n"
+                           // (texCoord read, so that the quad's attribute stays in the
+                           // program whatever the paint does with `color`)
+                           "  if (texCoord.x < -1.0) discard;\n"
                            "  ivec2 p = ivec2(gl_FragCoord.xy);\n"
                            "  float zero = texCoord.x < -1.0 ? 1.0 : 0.0;\n"
                            "  vec4 color = vec4(zero * big);\n" +

@@ -1,0 +1,61 @@
+//VTK::System::Dec
+// vtkFXBloomPrefilterFS: what glows, per full-resolution texel, when the
+// bloom has a threshold: the lit HDR colour's part above the threshold,
+// with a quadratic soft knee (the curve of Unity's and Unreal's bloom
+// prefilters): for brightness b (largest component), threshold t and
+// knee k,
+//   weight = max(b - t, min(max(b - t + k, 0), 2k)^2 / (4k)) / b,
+// plus the emission channel (FX_EMISSION). Thresholding is not linear, so
+// it comes per texel, before any averaging (a bilinear tap across an edge
+// between 2 and 0 would read 1 and lose what the 2 had above the
+// threshold); the first step down then reads this image with its 13
+// bilinear taps like any level, where it used to threshold the 36 texels
+// under its taps itself (36 texel reads per half-resolution texel, 9
+// times the texels read here).
+// Every texel is finite before any filter averages it: NaN counts as 0 and
+// anything above 65504 (the largest half float, +inf included) as 65504,
+// the sum too, so no pixel spreads NaN and none weighs more than it is.
+// With both sources, the threshold applies to the lit colour minus the
+// emission (the light the surface reflects; its emission, part of the lit
+// colour too, glows in full from the channel: counted once).
+
+in vec2 texCoord;
+
+uniform sampler2D fxColor;    // the lit HDR image
+uniform sampler2D fxEmission; // FX_EMISSION (finite: vtkFXGBufferPass's fxFiniteEmission)
+uniform float fxThreshold;
+uniform float fxKnee;         // knee x threshold
+
+//VTK::Output::Dec
+
+vec3 fxFinite(vec3 c)
+{
+  c = mix(c, vec3(0.0), bvec3(isnan(c.x), isnan(c.y), isnan(c.z)));
+  return clamp(c, 0.0, 65504.0);
+}
+
+// (`lit`: finite)
+vec3 fxAboveThreshold(vec3 lit)
+{
+  float brightness = max(lit.r, max(lit.g, lit.b));
+  float soft = clamp(brightness - fxThreshold + fxKnee, 0.0, 2.0 * fxKnee);
+  soft = soft * soft / (4.0 * fxKnee + 1e-5);
+  return lit * (max(brightness - fxThreshold, soft) / max(brightness, 1e-5));
+}
+
+void main()
+{
+  if (texCoord.x < -1.0)
+  {
+    discard; // never: keeps the quad's texture coordinates in the program
+  }
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  vec3 lit = fxFinite(texelFetch(fxColor, texel, 0).rgb);
+#if FX_EMISSION
+  vec3 emission = texelFetch(fxEmission, texel, 0).rgb;
+  vec3 glow = emission + fxAboveThreshold(max(lit - emission, 0.0));
+#else
+  vec3 glow = fxAboveThreshold(lit);
+#endif
+  gl_FragData[0] = vec4(min(glow, 65504.0), 1.0);
+}
