@@ -56,6 +56,10 @@ enum Buffer
   NumberOfBuffers = 4
 };
 const GLsizeiptr NodeBytes = 16;
+// FXAVSMCounter: the fragment count at byte 0, the longest list at byte
+// 64 (a cache line of its own, see vtkFXAVSMLists.glsl).
+const GLsizeiptr CounterBytes = 68;
+const GLintptr LongestListOffset = 64;
 const vtkIdType MaximumCapacity = vtkIdType(1) << 27; // 2 GiB of nodes
 const int MaximumListPerTexel = 64; // segments one texel's resolve inserts in order
 
@@ -656,7 +660,7 @@ bool vtkFXAVSMPass::EnsureBuffers()
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CountsBuffer]);
     allocated = AllocateBuffer(GL_SHADER_STORAGE_BUFFER, texels * 4, GL_DYNAMIC_DRAW) && allocated;
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CounterBuffer]);
-    allocated = AllocateBuffer(GL_SHADER_STORAGE_BUFFER, 8, GL_DYNAMIC_READ) && allocated;
+    allocated = AllocateBuffer(GL_SHADER_STORAGE_BUFFER, CounterBytes, GL_DYNAMIC_READ) && allocated;
     this->BufferTexels = allocated ? texels : 0; // retried next frame
   }
   const vtkIdType wanted =
@@ -879,13 +883,13 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
   vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   // Empty lists, nothing counted.
   const GLuint end = 0xFFFFFFFFu;
-  const GLuint zeros[2] = { 0, 0 };
+  const GLuint zeros[CounterBytes / 4] = {};
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[HeadsBuffer]);
   glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &end);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CountsBuffer]);
   glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, zeros);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CounterBuffer]);
-  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 8, zeros);
+  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, CounterBytes, zeros);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 
   {
@@ -921,7 +925,8 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
 
   GLuint counter[2] = { 0, 0 }; // fragments, longest list
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CounterBuffer]);
-  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 8, counter);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4, &counter[0]);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, LongestListOffset, 4, &counter[1]);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   const GLuint counted = counter[0];
   this->CapturedFragments = counted;

@@ -201,6 +201,12 @@ public:
   vtkGetMacro(CapturedFragments, vtkIdType);
   vtkGetMacro(Capacity, vtkIdType);
   /**
+   * The longest list of the last capture, in fragments (what the exact
+   * look-up of translucent receivers walks; at most 30000 / (4 x casting
+   * lights)).
+   */
+  vtkGetMacro(LongestList, vtkIdType);
+  /**
    * The most fragments the list buffer can hold: what one shader storage
    * block can address (GL_MAX_SHADER_STORAGE_BLOCK_SIZE, 128 MiB on
    * llvmpipe: 8 Mi fragments of 16 bytes), at most 2^27. Fragments beyond

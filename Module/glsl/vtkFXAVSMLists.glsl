@@ -39,7 +39,10 @@ layout(std430) buffer FXAVSMNodes
 };
 layout(std430) buffer FXAVSMCounter
 {
-  uint fxAVSMNodeCount;   // every fragment counts, stored or not
+  uint fxAVSMNodeCount; // every fragment counts, stored or not
+  // (the longest list on a cache line of its own: every fragment reads it
+  // while others add to the count)
+  uint fxAVSMCounterPadding[15];
   uint fxAVSMLongestList; // the longest list stored
 };
 layout(std430) buffer FXAVSMCounts

@@ -384,6 +384,13 @@ int CheckArrivalOrder(vtkRenderWindow* window)
       FX_CHECK(avsm->GetLongestListTexel(x, y) && avsm->GetTexelCurve(x, y, depths, tau) &&
           static_cast<int>(depths.size()) == nodes && static_cast<int>(tau.size()) == nodes,
         "AVSM-" << nodes << ": no curve at the longest list's texel");
+      // The frame's longest list, which fragments raise without reading it
+      // atomically (the exact look-up walks that far), is that texel's.
+      std::vector<double> entries, opticalDepths;
+      FX_CHECK(avsm->GetTexelFragments(x, y, entries, opticalDepths) &&
+          avsm->GetLongestList() == static_cast<vtkIdType>(entries.size()) && entries.size() > 4,
+        "AVSM-" << nodes << ": longest list " << avsm->GetLongestList() << ", the longest texel's "
+                << entries.size());
       const size_t texel = static_cast<size_t>(y) * avsm->GetCurveTexture(0)->GetWidth() + x;
       for (int i = 0; i < nodes; ++i)
       {
