@@ -436,7 +436,9 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
   }
   vtkTextureObject* emission =
     this->ReadsEmission && this->GBuffer ? this->GBuffer->GetChannelTexture(GB::Emission) : nullptr;
-  vtkTextureObject* full = emission ? emission : color;
+  // The size the pyramid starts from: what Downsample's first step reads
+  // (the prefiltered lit image with a threshold, else the emission).
+  vtkTextureObject* full = this->Threshold >= 0.0 && color ? color : (emission ? emission : color);
   if (!full)
   {
     vtkErrorMacro("vtkFXBloomPass needs the G-buffer's emission channel or a threshold on the "

@@ -41,10 +41,10 @@
  * 13 bilinear source reads per texel, each next one
  * at a quarter of the texels of the one before, 4 bilinear reads per
  * texel up; one full-resolution pass of 4 bilinear reads, blended. With a
- * threshold, first a full-resolution pass of 2 texel reads (colour and
- * emission) applies it per texel, before any averaging, into an RGBA16F
- * image the first step reads (8 bytes per pixel, kept only while a
- * threshold is set). Memory: two RGBA16F textures per level
+ * threshold, first a full-resolution pass of one texel read (two when some
+ * prop emits: colour and emission) applies it per texel, before any
+ * averaging, into an RGBA16F image the first step reads (8 bytes per
+ * pixel, kept only while a threshold is set). Memory: two RGBA16F textures per level
  * (about 2 x 8 / 3 bytes per full-resolution pixel).
  */
 #ifndef vtkFXBloomPass_h
