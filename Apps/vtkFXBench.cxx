@@ -35,6 +35,19 @@ double Median(std::vector<double> v)
   return n == 0 ? -1.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
 }
 
+double PairedRatio(const std::vector<double>& a, const std::vector<double>& b)
+{
+  std::vector<double> ratios;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
+  {
+    if (b[i] > 0.0)
+    {
+      ratios.push_back(a[i] / b[i]);
+    }
+  }
+  return Median(ratios);
+}
+
 bool OpenReport(const Options& o, const std::string& name, std::ofstream& csv, std::string& path,
   const std::string& extraColumns)
 {

@@ -33,6 +33,12 @@ struct Options
 
 double Median(std::vector<double> v);
 
+// The median of the frame-by-frame ratios a[i] / b[i] of two series timed
+// in turn (interleaved): a slow spell of the machine slows both frames of a
+// pair, so it moves this less than it moves the ratio of the two medians.
+// -1 without pairs.
+double PairedRatio(const std::vector<double>& a, const std::vector<double>& b);
+
 // Opens DIR/<name>.csv with the shared report's header (scene, method,
 // setting, ms, rmse, psnr, then `extraColumns`, comma-separated); false,
 // with a message, when it cannot.
