@@ -166,8 +166,9 @@ double vtkFXBloomPass::GetLevelSigma(int k)
   double variance = 0.0;
   for (int j = 0; j < k; ++j)
   {
-    variance += 1.75 * std::pow(4.0, j);                   // down from level j
-    variance += 0.4375 * std::pow(4.0, j + 1); // up from level j + 1
+    variance += 1.75 * std::pow(4.0, j); // down from level j
+    // up from level j + 1: a tent, or (j = 0) the last step's bilinear read
+    variance += (j == 0 ? 0.1875 : 0.4375) * std::pow(4.0, j + 1);
   }
   return std::sqrt(variance);
 }

@@ -8,7 +8,8 @@
  * pyramid by repeated 13-tap downsampling (Jimenez 2014; firefly
  * suppression by Karis averaging on the first step), climbs back with 3x3
  * tent upsampling, each level adding an equal share, and adds Intensity
- * times the result onto the pipeline's HDR target. Each filter is
+ * times the result onto the pipeline's HDR target (the last step, to full
+ * resolution, reads bilinearly). Each filter is
  * normalised, so the glow's total equals Intensity times the total of the
  * source (the emission plus the light above the threshold), with
  * FireflySuppression off (it deliberately takes energy from isolated
@@ -40,7 +41,7 @@
  * 4 deviations of the widest level; the whole image with a threshold), the first at half resolution with
  * 13 bilinear source reads per texel, each next one
  * at a quarter of the texels of the one before, 4 bilinear reads per
- * texel up; one full-resolution pass of 4 bilinear reads, blended. With a
+ * texel up; one full-resolution pass of 1 bilinear read, blended. With a
  * threshold, first a full-resolution pass of one texel read (two when some
  * prop emits: colour and emission) applies it per texel, before any
  * averaging, into an RGBA16F image the first step reads (8 bytes per
@@ -135,8 +136,10 @@ public:
    * texels^2, plus their 2x2 bilinear boxes, 0.25); up, a tent step from a
    * level of texel size 2^m adds 0.4375 x 4^m (at twice the resolution the
    * four half-texel taps weigh the coarse texels 1/8, 4/8, 3/8 per axis,
-   * a quarter of a texel off centre: variance 7/16). So level k's glow is
-   * close to a Gaussian of that deviation (1.9, 4.2, 8.6, 17.2, 34.5, ...
+   * a quarter of a texel off centre: variance 7/16), and the last step,
+   * to full resolution, one bilinear read a quarter of a texel off centre
+   * (weights 3/4, 1/4: variance 3/16), 0.75. So level k's glow is
+   * close to a Gaussian of that deviation (1.6, 4.1, 8.5, 17.2, 34.5, ...
    * pixels), and the whole glow close to the mean of those Gaussians: the
    * reference vtkfx-bench bloom compares with.
    */

@@ -11,7 +11,11 @@
 // k brought up, and with sum w_k = 1 its total equals the source's total
 // (energy kept: each normalised filter moves light, never adds any).
 // FX_FINAL: the last step, to full resolution, scaled by the intensity and
-// added onto the image by blending (no own share).
+// added onto the image by blending (no own share), with one bilinear read
+// instead of the tent: at full resolution the glow is already smooth, and
+// the three reads saved were a fifth of the bloom's time (vtkfx-bench bloom:
+// the same RMSE against the exact glow within 1%); the blur it adds, 3/16
+// of a coarse texel^2 instead of 7/16, is in GetLevelSigma.
 
 in vec2 texCoord;
 
@@ -36,12 +40,12 @@ void main()
   vec2 fine = gl_FragCoord.xy - vec2(fxOrigin);
   vec2 uv = 0.5 * fine * fxCoarseTexel;
   vec2 t = 0.5 * fxCoarseTexel;
+#if FX_FINAL
+  gl_FragData[0] = vec4(fxIntensity * fxCoarseScale * texture(fxCoarse, uv).rgb, 0.0);
+#else
   vec3 tent = texture(fxCoarse, uv + t).rgb + texture(fxCoarse, uv - t).rgb +
     texture(fxCoarse, uv + vec2(t.x, -t.y)).rgb + texture(fxCoarse, uv + vec2(-t.x, t.y)).rgb;
   tent *= 0.25 * fxCoarseScale;
-#if FX_FINAL
-  gl_FragData[0] = vec4(fxIntensity * tent, 0.0);
-#else
   gl_FragData[0] = vec4(fxShare * texelFetch(fxLevel, ivec2(fine), 0).rgb + tent, 1.0);
 #endif
 }
