@@ -261,21 +261,13 @@ bool vtkFXToonPass::MakeEdgeMask(
   std::string fs = vtkFXToonEdgeMaskFS;
   vtkShaderProgram::Substitute(
     fs, "//VTK::System::Dec", GatherDefinesFor(this->UseTextureGather), false);
-  vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglViewport viewportSaver(state);
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-  state->PushFramebufferBindings();
-  this->EdgeMaskFrameBuffer->Bind();
+  // (the scope saves and restores the framebuffer, viewport and depth,
+  // blend and scissor state; its framebuffer keeps the mask as its depth)
+  vtkFXRenderUtilities::RenderTargetScope target(window, this->EdgeMaskFrameBuffer, size[0], size[1]);
   vtkShaderProgram* program = vtkFXRenderUtilities::ReadyQuad(this->EdgeMaskQuad, window, fs);
   if (program)
   {
-    state->vtkglViewport(0, 0, size[0], size[1]);
-    state->vtkglDisable(GL_BLEND);
-    state->vtkglDisable(GL_SCISSOR_TEST);
+    vtkOpenGLState* state = window->GetState();
     state->vtkglEnable(GL_DEPTH_TEST); // (depth is written only with the test on)
     state->vtkglDepthFunc(GL_ALWAYS);
     state->vtkglDepthMask(GL_TRUE);
@@ -285,7 +277,6 @@ bool vtkFXToonPass::MakeEdgeMask(
     this->EdgeMaskQuad.Helper->Render();
     depth->Deactivate();
   }
-  state->PopFramebufferBindings();
   return program != nullptr;
 }
 
