@@ -233,7 +233,13 @@ bool vtkFXToonPass::CanFlagLineTiles()
   const bool imageStores = glewIsSupported("GL_ARB_shader_image_load_store");
   const bool textureClears =
     glewIsSupported("GL_VERSION_4_4") || glewIsSupported("GL_ARB_clear_texture");
-  return imageStores && textureClears;
+  // (the marks' framebuffer has no colour attachment)
+  const bool noAttachments =
+    glewIsSupported("GL_VERSION_4_3") || glewIsSupported("GL_ARB_framebuffer_no_attachments");
+  // (a flagged tile is drawn as a point as wide as the tile)
+  float pointSizes[2] = { 1.0f, 1.0f };
+  glGetFloatv(GL_POINT_SIZE_RANGE, pointSizes);
+  return imageStores && textureClears && noAttachments && pointSizes[1] >= LineTileSize;
 }
 
 void vtkFXToonPass::ClearTileMask(vtkOpenGLRenderWindow* window, const int size[2])
@@ -288,10 +294,25 @@ void vtkFXToonPass::ReleaseEdgeMask(vtkWindow* window)
   vtkFXRenderUtilities::Release(this->EdgeMaskFrameBuffer, window);
 }
 
+std::string vtkFXToonPass::EdgesSource(bool imageStores) const
+{
+  std::string fs = vtkFXToonEdgesFS;
+  vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
+    std::string(GatherDefinesFor(this->UseTextureGather)) + "#define FX_SILHOUETTES " +
+      (this->Silhouettes ? "1" : "0") + "\n#define FX_CREASES " + (this->Creases ? "1" : "0") +
+      "\n#define FX_TILE " + std::to_string(LineTileSize) + "\n" +
+      (imageStores
+          ? "#extension GL_ARB_shader_image_load_store : enable\n#define FX_TILE_MASK 1\n"
+          : "#define FX_TILE_MASK 0\n"),
+    false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXViewPosition::Dec", vtkFXViewPosition, false);
+  return fs;
+}
+
 bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* window)
 {
   vtkTextureObject* depth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
-  vtkTextureObject* normal = this->GBuffer->GetChannelTexture(GB::Normal);
   const int size[2] = { static_cast<int>(depth->GetWidth()), static_cast<int>(depth->GetHeight()) };
   vtkFXRenderUtilities::EnsureTexture(
     this->Edges, window, size[0], size[1], vtkFXRenderUtilities::R8);
@@ -299,23 +320,61 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   this->Edges->SetWrapS(vtkTextureObject::ClampToBorder);
   this->Edges->SetWrapT(vtkTextureObject::ClampToBorder);
   this->Edges->SetBorderColor(0.0f, 0.0f, 0.0f, 0.0f);
-  const bool flag = this->CullLineTiles && CanFlagLineTiles();
   this->TilesFlagged = false;
-  std::string fs = vtkFXToonEdgesFS;
-  vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
-    std::string(GatherDefinesFor(this->UseTextureGather)) + "#define FX_SILHOUETTES " + (this->Silhouettes ? "1" : "0") +
-      "\n#define FX_CREASES " + (this->Creases ? "1" : "0") + "\n#define FX_TILE " +
-      std::to_string(LineTileSize) + "\n" +
-      (flag
-          ? "#extension GL_ARB_shader_image_load_store : enable\n#define FX_TILE_MASK 1\n"
-          : "#define FX_TILE_MASK 0\n"),
-    false);
-  vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
-  vtkShaderProgram::Substitute(fs, "//VTK::FXViewPosition::Dec", vtkFXViewPosition, false);
+  if (this->CullLineTiles && CanFlagLineTiles())
+  {
+    this->ReleaseEdgeMask(window);
+    this->TilesFlagged = this->StoreEdgeMarks(s, window, size);
+    return this->TilesFlagged;
+  }
+  vtkFXRenderUtilities::Release(this->TileMask, window); // culling off: no flags kept
+  return this->DrawEdgeMarks(s, window, size);
+}
+
+bool vtkFXToonPass::StoreEdgeMarks(
+  const vtkRenderState* s, vtkOpenGLRenderWindow* window, const int size[2])
+{
+  // Both images start with no mark; the shader stores the marks and flags.
+  const unsigned char zero = 0;
+  glClearTexImage(this->Edges->GetHandle(), 0, GL_RED, GL_UNSIGNED_BYTE, &zero);
+  this->ClearTileMask(window, size);
+  // No colour attachment: the shader writes images. The G-buffer's depth
+  // leaves out the pixels without a surface (they have no marks that a
+  // covered neighbour does not store).
+  vtkFXRenderUtilities::RenderTargetScope target(window, this->MarkFrameBuffer, size[0], size[1]);
+  vtkTextureObject* surfaces =
+    this->SkipBackgroundEdges ? this->GBuffer->GetDepthTexture() : nullptr;
+  this->EdgeQuad.AtFarPlane = surfaces != nullptr;
+  vtkShaderProgram* program =
+    vtkFXRenderUtilities::ReadyQuad(this->EdgeQuad, window, this->EdgesSource(true));
+  if (!program)
+  {
+    return false;
+  }
+  target.SkipWhereDepthIsOne(surfaces);
+  int lineWindow[2];
+  this->GetLineWindow(this->OutputRows, lineWindow);
+  program->SetUniform2i("fxLineWindow", lineWindow);
+  glBindImageTexture(0, this->TileMask->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
+  glBindImageTexture(1, this->Edges->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
+  program->SetUniformi("fxTileMask", 0);
+  program->SetUniformi("fxEdges", 1);
+  this->RenderEdgesQuad(s, program, size);
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
+  glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
+  // The lines read both as textures; the next frame clears them with
+  // glClearTexImage.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  return true;
+}
+
+bool vtkFXToonPass::DrawEdgeMarks(
+  const vtkRenderState* s, vtkOpenGLRenderWindow* window, const int size[2])
+{
   // (a mask that could not be made is not tried again until the
   // resources are released)
   const bool masked = this->SkipBackgroundEdges && !this->EdgeMaskFailed &&
-    this->MakeEdgeMask(window, depth, size);
+    this->MakeEdgeMask(window, this->GBuffer->GetChannelTexture(GB::LinearDepth), size);
   if (this->SkipBackgroundEdges && !masked)
   {
     this->EdgeMaskFailed = true;
@@ -327,7 +386,7 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   vtkFXRenderUtilities::RenderTargetScope target(window, this->EdgeFrameBuffer, this->Edges);
   this->EdgeQuad.AtFarPlane = masked;
   vtkShaderProgram* program =
-    vtkFXRenderUtilities::ReadyQuad(this->EdgeQuad, window, fs);
+    vtkFXRenderUtilities::ReadyQuad(this->EdgeQuad, window, this->EdgesSource(false));
   if (!program)
   {
     return false;
@@ -339,15 +398,15 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
     vtkFXRenderUtilities::ClearTargets(1, noMark);
     target.SkipWhereDepthIsOne(this->EdgeMask);
   }
-  this->TilesFlagged = flag;
-  if (flag)
-  {
-    this->ClearTileMask(window, size);
-  }
-  else
-  {
-    vtkFXRenderUtilities::Release(this->TileMask, window); // culling off: no flags kept
-  }
+  this->RenderEdgesQuad(s, program, size);
+  return true;
+}
+
+void vtkFXToonPass::RenderEdgesQuad(
+  const vtkRenderState* s, vtkShaderProgram* program, const int size[2])
+{
+  vtkTextureObject* depth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
+  vtkTextureObject* normal = this->GBuffer->GetChannelTexture(GB::Normal);
   depth->Activate();
   normal->Activate();
   program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());
@@ -363,26 +422,9 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
       : 0.0f);
   program->SetUniformf(
     "fxCreaseCosine", static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(this->CreaseAngle))));
-  if (this->TilesFlagged)
-  {
-    int lineWindow[2];
-    this->GetLineWindow(this->OutputRows, lineWindow);
-    program->SetUniform2i("fxLineWindow", lineWindow);
-    glBindImageTexture(
-      0, this->TileMask->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
-    program->SetUniformi("fxTileMask", 0);
-  }
   this->EdgeQuad.Helper->Render();
-  if (this->TilesFlagged)
-  {
-    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
-    // The lines' vertex shader reads the flags as a texture; the next
-    // frame clears them with glClearTexImage.
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-  }
   depth->Deactivate();
   normal->Deactivate();
-  return true;
 }
 
 std::string vtkFXToonPass::MidpointCode(int first, int last)
@@ -460,6 +502,33 @@ std::string vtkFXToonPass::MidpointCode(int first, int last)
   return code.str();
 }
 
+void vtkFXToonPass::DrawFlaggedTiles(vtkShaderProgram* program, vtkOpenGLRenderWindow* window,
+  const int viewport[4], const int size[2])
+{
+  const int tiles[2] = { (size[0] + LineTileSize - 1) / LineTileSize,
+    (size[1] + LineTileSize - 1) / LineTileSize };
+  const int padded[2] = { tiles[0] * LineTileSize, tiles[1] * LineTileSize };
+  program->SetUniformi("fxTileSize", LineTileSize);
+  program->SetUniformi("fxTilesPerRow", tiles[0]);
+  program->SetUniform2i("fxPaddedSize", padded);
+  // One point per tile (see vtkFXToonLineTilesVS) in a viewport padded to
+  // whole tiles; the scissor box is the image.
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglViewport savedViewport(state);
+  vtkOpenGLState::ScopedglScissor savedScissor(state);
+  vtkOpenGLState::ScopedglEnableDisable savedScissorTest(state, GL_SCISSOR_TEST);
+  float pointSize = 1.0f;
+  state->vtkglGetFloatv(GL_POINT_SIZE, &pointSize);
+  state->vtkglViewport(viewport[0], viewport[1], padded[0], padded[1]);
+  state->vtkglScissor(viewport[0], viewport[1], size[0], size[1]);
+  state->vtkglEnable(GL_SCISSOR_TEST);
+  // (the size the shader writes, and the one GL takes where VTK left
+  // GL_PROGRAM_POINT_SIZE off)
+  state->vtkglPointSize(static_cast<float>(LineTileSize));
+  glDrawArrays(GL_POINTS, 0, tiles[0] * tiles[1]);
+  state->vtkglPointSize(pointSize);
+}
+
 void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* window)
 {
   const int size[2] = { static_cast<int>(this->Edges->GetWidth()),
@@ -510,20 +579,21 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
     color[i] = static_cast<float>(c >= 0.0 ? std::min(c, 65504.0) : 0.0);
   }
   program->SetUniform3f("fxLineColor", color);
-  // Without flags, one tile as large as the image (many small quads cost
-  // more than one large one); the sampler then reads the edges, unused.
-  const int tileSize[2] = { this->TilesFlagged ? LineTileSize : size[0],
-    this->TilesFlagged ? LineTileSize : size[1] };
-  const int tiles[2] = { (size[0] + tileSize[0] - 1) / tileSize[0],
-    (size[1] + tileSize[1] - 1) / tileSize[1] };
-  program->SetUniform2i("fxTileSize", tileSize);
-  program->SetUniformi("fxTilesPerRow", tiles[0]);
   vtkTextureObject* mask = this->TilesFlagged ? this->TileMask.Get() : this->Edges.Get();
   mask->Activate();
   program->SetUniformi("fxTileMask", mask->GetTextureUnit());
   program->SetUniformi("fxEveryTile", this->TilesFlagged ? 0 : 1);
   this->LineTiles->Bind();
-  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, tiles[0] * tiles[1]);
+  if (this->TilesFlagged)
+  {
+    this->DrawFlaggedTiles(program, window, viewport, size);
+  }
+  else
+  {
+    // Without flags, one quad over the image (the sampler then reads the
+    // edges, unused).
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  }
   this->LineTiles->Release();
   mask->Deactivate();
   this->Edges->Deactivate();
@@ -539,6 +609,7 @@ void vtkFXToonPass::Render(const vtkRenderState* s)
     vtkFXRenderUtilities::Release(this->TileMask, window);
     vtkFXRenderUtilities::Release(this->Edges, window);
     vtkFXRenderUtilities::Release(this->EdgeFrameBuffer, window);
+    vtkFXRenderUtilities::Release(this->MarkFrameBuffer, window);
     this->ReleaseEdgeMask(window);
     return;
   }
@@ -569,6 +640,7 @@ void vtkFXToonPass::ReleaseGraphicsResources(vtkWindow* w)
   vtkFXRenderUtilities::Release(this->TileMask, w);
   vtkFXRenderUtilities::Release(this->Edges, w);
   vtkFXRenderUtilities::Release(this->EdgeFrameBuffer, w);
+  vtkFXRenderUtilities::Release(this->MarkFrameBuffer, w);
 }
 
 void vtkFXToonPass::PrintSelf(ostream& os, vtkIndent indent)

@@ -35,16 +35,19 @@
  * Writes: composite code (bands); lines blended onto the image (the
  * framebuffer, or the HDR target when another effect has the pipeline keep
  * one). With lines on, its stage is PostProcess, otherwise Composite.
- * Cost: bands, a few instructions per light and pixel; lines, a mask
- * pass of one gather per pixel (SkipBackgroundEdges), then a pass of 3
- * gathers of G-buffer 2x2 blocks per pixel that can have an edge into an
- * R8 edge texture (1 byte per pixel; it also flags, in an R8 texture of
- * one byte per 8x8 tile, the tiles lines can reach: CullLineTiles), and a
- * pass over the flagged tiles of 1 (lines under 1 px), 4 (under 3 px) or
- * 9 (under 5 px) gathers of edge blocks per pixel (wider lines read
- * texel by texel up to the two nearest marks). Where GL lacks
- * textureGather (GLSL 4.00 or ARB_gpu_shader5), each gather becomes 4
- * texel fetches.
+ * Cost: bands, a few instructions per light and pixel; lines, an edges
+ * pass over the pixels with a surface (the G-buffer's depth test rejects
+ * the others before the shader: SkipBackgroundEdges) of 5 gathers of
+ * G-buffer 2x2 blocks per pixel, which stores the marks into an R8 edge
+ * texture (1 byte per pixel) and flags, in an R8 texture of one byte per
+ * 8x8 tile, the tiles lines can reach (CullLineTiles); then the lines, one
+ * point per flagged tile, of 1 (lines under 1 px), 4 (under 3 px) or 9
+ * (under 5 px) gathers of edge blocks per pixel (wider lines read texel
+ * by texel up to the two nearest marks). Without image stores (or with
+ * CullLineTiles off) the edges are the colour output of a pass over the
+ * pixels that a mask pass (one gather per pixel) lets through, and the
+ * lines cover the whole image. Where GL lacks textureGather (GLSL 4.00 or
+ * ARB_gpu_shader5), each gather becomes 4 texel fetches.
  */
 #ifndef vtkFXToonPass_h
 #define vtkFXToonPass_h
@@ -157,22 +160,27 @@ public:
 
   /**
    * Draw lines only over the 8x8-pixel tiles that a marked pixel side can
-   * reach (default on). The edges pass flags those tiles with image stores
-   * (GL 4.2 and texture clears, GL 4.4, or their ARB extensions); without
-   * them, or with this off, lines are drawn over the whole image. The
-   * image is the same either way; off is for comparison.
+   * reach (default on). The edges pass stores its marks and flags those
+   * tiles with image stores (GL 4.2, texture clears, GL 4.4, and
+   * framebuffers without attachments, GL 4.3, or their ARB extensions;
+   * points 8 pixels wide); without them, or with this off, its marks are
+   * its colour output and lines are drawn over the whole image. The image
+   * is the same either way; off is for comparison.
    */
   vtkSetMacro(CullLineTiles, bool);
   vtkGetMacro(CullLineTiles, bool);
   vtkBooleanMacro(CullLineTiles, bool);
 
   /**
-   * Find edges only at pixels that can have one (default on): a depth
-   * image of the pixels where the pixel, its right neighbour or the one
-   * above holds a surface (one pass of one gather per pixel, 4 bytes per
-   * pixel) rejects the others before the edges shader runs, which a
-   * software rasteriser otherwise runs in full on every background
-   * pixel. The image is the same either way; off is for comparison.
+   * Find edges only at pixels that need it (default on): with culled line
+   * tiles, the G-buffer's depth rejects the pixels without a surface
+   * before the edges shader runs (a covered pixel stores the marks of its
+   * background neighbours too); otherwise a depth image of the pixels
+   * where the pixel, its right neighbour or the one above holds a surface
+   * (one pass of one gather per pixel, 4 bytes per pixel) rejects the
+   * others. A software rasteriser otherwise runs the shader in full on
+   * every background pixel. The image is the same either way; off is for
+   * comparison.
    */
   vtkSetMacro(SkipBackgroundEdges, bool);
   vtkGetMacro(SkipBackgroundEdges, bool);
@@ -195,8 +203,9 @@ public:
   bool GetLineTilesCulled() const { return this->TilesFlagged; }
 
   /**
-   * Whether the current OpenGL context can flag line tiles (image stores
-   * and texture clears). Needs a current context.
+   * Whether the current OpenGL context can flag line tiles (image stores,
+   * texture clears, framebuffers without attachments and points as wide
+   * as a tile; see CullLineTiles). Needs a current context.
    */
   static bool CanFlagLineTiles();
 
@@ -238,12 +247,22 @@ protected:
 
   std::string BandCode() const;
   bool FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
+  /** The edges shader, marks as image stores or as its colour output. */
+  std::string EdgesSource(bool imageStores) const;
+  /** Marks and tile flags by image stores, at covered pixels only. */
+  bool StoreEdgeMarks(const vtkRenderState* s, vtkOpenGLRenderWindow* window, const int size[2]);
+  /** Marks as the colour output, at pixels the edge mask lets through. */
+  bool DrawEdgeMarks(const vtkRenderState* s, vtkOpenGLRenderWindow* window, const int size[2]);
+  void RenderEdgesQuad(const vtkRenderState* s, vtkShaderProgram* program, const int size[2]);
   bool MakeEdgeMask(vtkOpenGLRenderWindow* window, vtkTextureObject* depth, const int size[2]);
   void ReleaseEdgeMask(vtkWindow* window);
   /** Texel offsets a line pixel reads marks from (first, last) at `height` rows. */
   void GetLineWindow(int height, int window[2]) const;
   void ClearTileMask(vtkOpenGLRenderWindow* window, const int size[2]);
   void DrawLines(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
+  /** The lines over the flagged tiles only: one point per tile. */
+  void DrawFlaggedTiles(vtkShaderProgram* program, vtkOpenGLRenderWindow* window,
+    const int viewport[4], const int size[2]);
   /**
    * The lines shader's reads of the 2x2 mark blocks of texel offsets
    * first..last, and its pick of the nearest marked side midpoints.
@@ -268,7 +287,8 @@ protected:
   bool TilesFlagged = false; // this frame's edges pass flagged the tiles
   vtkSmartPointer<vtkTextureObject> Edges;
   vtkSmartPointer<vtkTextureObject> TileMask; // R8, one texel per 8x8 tile: lines reach it
-  vtkSmartPointer<vtkOpenGLFramebufferObject> EdgeFrameBuffer;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> EdgeFrameBuffer; // Edges as colour
+  vtkSmartPointer<vtkOpenGLFramebufferObject> MarkFrameBuffer;  // none: image stores
   vtkFXRenderUtilities::FullScreenQuad EdgeQuad;
   // Depth32F, 0 where the edges pass can mark (SkipBackgroundEdges)
   vtkSmartPointer<vtkTextureObject> EdgeMask;

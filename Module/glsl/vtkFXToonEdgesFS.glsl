@@ -22,7 +22,15 @@
 // With FX_TILE_MASK (image stores: GL 4.2 / ARB_shader_image_load_store) a
 // marked pixel also flags, in fxTileMask, the FX_TILE x FX_TILE tiles of
 // the pixels whose lines can reach it (vtkFXToonLineTilesVS draws only
-// those).
+// those), and the marks themselves are image stores into fxEdges (cleared
+// to no mark): then the pass needs to run at covered pixels only (the
+// G-buffer's depth test rejects the rest before the shader), because a
+// covered pixel also writes the marks of its left and lower neighbours
+// where those are background. A background pixel's marks say only whether
+// its right and upper neighbours are covered, which both covered
+// neighbours that write them know, so they write the same value. Without
+// image stores the marks are the pass's colour output, and every pixel
+// that can have one runs (vtkFXToonEdgeMaskFS).
 
 // Texels are addressed through gl_FragCoord; texCoord is read once only so
 // that the quad's texture-coordinate attribute stays in the program
@@ -44,6 +52,7 @@ uniform float fxCreaseCosine;
 // shader: with image stores it would otherwise run after it, and reject
 // nothing's cost.
 layout(early_fragment_tests) in;
+layout(r8) uniform writeonly image2D fxEdges;
 layout(r8) uniform writeonly image2D fxTileMask;
 uniform ivec2 fxLineWindow; // texel offsets a line pixel reads: first, last
 #endif
@@ -78,6 +87,41 @@ fxSurface fxSurfaceAt(ivec2 texel)
 {
   ivec2 t = min(texel, fxGBufferSize - 1);
   return fxSurfaceOf(texelFetch(fxLinearDepth, t, 0).r, texelFetch(fxNormal, t, 0).rg);
+}
+
+float fxDepthAt(ivec2 texel)
+{
+  return texelFetch(fxLinearDepth, clamp(texel, ivec2(0), fxGBufferSize - 1), 0).r;
+}
+#endif
+
+#if FX_TILE_MASK
+// Both marks of a texel in one byte (0, 1/3, 2/3, 1: r, its right side,
+// g, its upper side), so that one gather reads four pixels' marks in
+// vtkFXToonLinesFS. The image holds no mark where nothing is stored.
+void fxStoreMarks(ivec2 texel, float r, float g)
+{
+  if (r + g > 0.0)
+  {
+    imageStore(fxEdges, texel, vec4((r + 2.0 * g) / 3.0));
+  }
+}
+
+// Flags the tiles whose lines can reach a mark of the texels `first` ..
+// `last`: pixel q reads the marks of texels q + fxLineWindow.x ..
+// q + fxLineWindow.y, so texel t's reach pixels t - fxLineWindow.y ..
+// t - fxLineWindow.x.
+void fxFlagTiles(ivec2 first, ivec2 last)
+{
+  ivec2 firstTile = max(first - fxLineWindow.y, 0) / FX_TILE;
+  ivec2 lastTile = max(last - fxLineWindow.x, 0) / FX_TILE;
+  for (int y = firstTile.y; y <= lastTile.y; ++y)
+  {
+    for (int x = firstTile.x; x <= lastTile.x; ++x)
+    {
+      imageStore(fxTileMask, ivec2(x, y), vec4(1.0));
+    }
+  }
 }
 #endif
 
@@ -139,23 +183,40 @@ void main()
     ndcStep.y * (fxRayOrigin[2] + above.depth * fxRayDirection[2]);
   float r = texel.x + 1 < fxGBufferSize.x ? fxSeparated(here, right, toRight) : 0.0;
   float g = texel.y + 1 < fxGBufferSize.y ? fxSeparated(here, above, toAbove) : 0.0;
+#if FX_TILE_MASK
+  fxStoreMarks(texel, r, g);
+  // A covered pixel also stores the marks of its left and lower
+  // neighbours where those are background (see the top of this file): a
+  // background pixel's right (upper) side is marked where its right
+  // (upper) neighbour is covered.
+#if FX_GATHER
+  // (w) left, (x) above it; (w) below, (z) right of it
+  vec4 leftBlock = textureGather(fxLinearDepth, vec2(texel + ivec2(0, 1)) / vec2(fxGBufferSize), 0);
+  vec4 lowerBlock = textureGather(fxLinearDepth, vec2(texel + ivec2(1, 0)) / vec2(fxGBufferSize), 0);
+  vec2 left = leftBlock.wx;
+  vec2 lower = lowerBlock.wz;
+#else
+  vec2 left = vec2(fxDepthAt(texel + ivec2(-1, 0)), fxDepthAt(texel + ivec2(-1, 1)));
+  vec2 lower = vec2(fxDepthAt(texel + ivec2(0, -1)), fxDepthAt(texel + ivec2(1, -1)));
+#endif
+  // (NaN depth is background, as everywhere in this pass)
+  bool leftMarked = here.covered && texel.x > 0 && !(left.x > 0.0);
+  bool lowerMarked = here.covered && texel.y > 0 && !(lower.x > 0.0);
+  fxStoreMarks(texel - ivec2(1, 0), leftMarked ? 1.0 : 0.0,
+    (leftMarked && texel.y + 1 < fxGBufferSize.y && left.y > 0.0) ? 1.0 : 0.0);
+  fxStoreMarks(texel - ivec2(0, 1),
+    (lowerMarked && texel.x + 1 < fxGBufferSize.x && lower.y > 0.0) ? 1.0 : 0.0,
+    lowerMarked ? 1.0 : 0.0);
+  if (r + g > 0.0 || leftMarked || lowerMarked)
+  {
+    // One loop for the three texels (it may flag a tile that only the
+    // unmarked diagonal neighbour would reach: lines are then drawn over
+    // it and find no mark).
+    fxFlagTiles(texel - ivec2(1), texel);
+  }
+#else
   // Both marks in one byte (0, 1/3, 2/3, 1), so one gather reads four
   // pixels' marks in vtkFXToonLinesFS.
   gl_FragData[0] = vec4((r + 2.0 * g) / 3.0, 0.0, 0.0, 1.0);
-#if FX_TILE_MASK
-  if (r + g > 0.0)
-  {
-    // Pixel q reads the marks of texels q + first .. q + last, so this
-    // texel's reach pixels texel - last .. texel - first.
-    ivec2 firstTile = max(texel - fxLineWindow.y, 0) / FX_TILE;
-    ivec2 lastTile = max(texel - fxLineWindow.x, 0) / FX_TILE;
-    for (int y = firstTile.y; y <= lastTile.y; ++y)
-    {
-      for (int x = firstTile.x; x <= lastTile.x; ++x)
-      {
-        imageStore(fxTileMask, ivec2(x, y), vec4(1.0));
-      }
-    }
-  }
 #endif
 }
