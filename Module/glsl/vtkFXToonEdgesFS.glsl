@@ -156,20 +156,37 @@ void main()
   }
   ivec2 texel = ivec2(gl_FragCoord.xy);
 #if FX_GATHER
-  // One gather per value fetches the 2x2 block whose corner is this
-  // pixel's: (w) here, (z) right, (x) above; a software rasteriser pays
-  // per fetch, and three gathers replace six fetches.
-  vec2 corner = vec2(texel + 1) / vec2(fxGBufferSize);
-  vec4 depths = textureGather(fxLinearDepth, corner, 0);
+  // One gather per value fetches a 2x2 block; a software rasteriser pays
+  // per fetch. The normals: the block whose corner is this pixel's, (w)
+  // here, (z) right, (x) above.
+  vec2 texelSize = 1.0 / vec2(fxGBufferSize);
+  vec2 corner = vec2(texel + 1) * texelSize;
   vec4 normalX = textureGather(fxNormal, corner, 0);
   vec4 normalY = textureGather(fxNormal, corner, 1);
-  fxSurface here = fxSurfaceOf(depths.w, vec2(normalX.w, normalY.w));
-  fxSurface right = fxSurfaceOf(depths.z, vec2(normalX.z, normalY.z));
-  fxSurface above = fxSurfaceOf(depths.x, vec2(normalX.x, normalY.x));
+#if FX_TILE_MASK
+  // The depths, also of the left and lower neighbours (see the marks
+  // below), from the blocks to the left, (x) left-above, (y) above,
+  // (z) here, (w) left, and below, (x) here, (y) right, (z) below-right,
+  // (w) below.
+  vec4 leftBlock = textureGather(fxLinearDepth, vec2(texel + ivec2(0, 1)) * texelSize, 0);
+  vec4 lowerBlock = textureGather(fxLinearDepth, vec2(texel + ivec2(1, 0)) * texelSize, 0);
+  vec3 depths = vec3(leftBlock.z, lowerBlock.y, leftBlock.y); // here, right, above
+  vec2 left = leftBlock.wx;   // left, and the one above it
+  vec2 lower = lowerBlock.wz; // below, and the one right of it
+#else
+  vec3 depths = textureGather(fxLinearDepth, corner, 0).wzx; // here, right, above
+#endif
+  fxSurface here = fxSurfaceOf(depths.x, vec2(normalX.w, normalY.w));
+  fxSurface right = fxSurfaceOf(depths.y, vec2(normalX.z, normalY.z));
+  fxSurface above = fxSurfaceOf(depths.z, vec2(normalX.x, normalY.x));
 #else
   fxSurface here = fxSurfaceAt(texel);
   fxSurface right = fxSurfaceAt(texel + ivec2(1, 0));
   fxSurface above = fxSurfaceAt(texel + ivec2(0, 1));
+#if FX_TILE_MASK
+  vec2 left = vec2(fxDepthAt(texel + ivec2(-1, 0)), fxDepthAt(texel + ivec2(-1, 1)));
+  vec2 lower = vec2(fxDepthAt(texel + ivec2(0, -1)), fxDepthAt(texel + ivec2(1, -1)));
+#endif
 #endif
   // The neighbours' positions relative to this one's, from one frustum
   // ray (fxViewPosition is affine in the image point): P(x + h) - P(x) =
@@ -189,16 +206,6 @@ void main()
   // neighbours where those are background (see the top of this file): a
   // background pixel's right (upper) side is marked where its right
   // (upper) neighbour is covered.
-#if FX_GATHER
-  // (w) left, (x) above it; (w) below, (z) right of it
-  vec4 leftBlock = textureGather(fxLinearDepth, vec2(texel + ivec2(0, 1)) / vec2(fxGBufferSize), 0);
-  vec4 lowerBlock = textureGather(fxLinearDepth, vec2(texel + ivec2(1, 0)) / vec2(fxGBufferSize), 0);
-  vec2 left = leftBlock.wx;
-  vec2 lower = lowerBlock.wz;
-#else
-  vec2 left = vec2(fxDepthAt(texel + ivec2(-1, 0)), fxDepthAt(texel + ivec2(-1, 1)));
-  vec2 lower = vec2(fxDepthAt(texel + ivec2(0, -1)), fxDepthAt(texel + ivec2(1, -1)));
-#endif
   // (NaN depth is background, as everywhere in this pass)
   bool leftMarked = here.covered && texel.x > 0 && !(left.x > 0.0);
   bool lowerMarked = here.covered && texel.y > 0 && !(lower.x > 0.0);
