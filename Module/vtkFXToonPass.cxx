@@ -325,9 +325,12 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   {
     this->ReleaseEdgeMask(window);
     this->TilesFlagged = this->StoreEdgeMarks(s, window, size);
-    return this->TilesFlagged;
+    if (this->TilesFlagged)
+    {
+      return true;
+    }
   }
-  vtkFXRenderUtilities::Release(this->TileMask, window); // culling off: no flags kept
+  vtkFXRenderUtilities::Release(this->TileMask, window); // no flags kept
   return this->DrawEdgeMarks(s, window, size);
 }
 
@@ -347,11 +350,11 @@ bool vtkFXToonPass::StoreEdgeMarks(
   this->EdgeQuad.AtFarPlane = surfaces != nullptr;
   vtkShaderProgram* program =
     vtkFXRenderUtilities::ReadyQuad(this->EdgeQuad, window, this->EdgesSource(true));
-  if (!program)
-  {
-    return false;
-  }
   target.SkipWhereDepthIsOne(surfaces);
+  if (!program || !target.IsComplete())
+  {
+    return false; // (the caller draws the marks as colour instead)
+  }
   int lineWindow[2];
   this->GetLineWindow(this->OutputRows, lineWindow);
   program->SetUniform2i("fxLineWindow", lineWindow);
@@ -364,7 +367,9 @@ bool vtkFXToonPass::StoreEdgeMarks(
   glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
   // The lines read both as textures; the next frame clears them with
   // glClearTexImage.
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  // (and a frame with culling switched off draws into Edges)
+  glMemoryBarrier(
+    GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   return true;
 }
 
@@ -484,8 +489,8 @@ std::string vtkFXToonPass::MidpointCode(int first, int last)
   // Wide lines: a loop over the same list (a few hundred midpoints would
   // make the straight-line code too long). It runs to the end: past the
   // second mark fxTake changes nothing, and on llvmpipe a loop whose trip
-  // count differs between neighbouring pixels goes wrong along the tile
-  // quads' diagonals (FullScreenQuad::OneTriangle).
+  // count differs between neighbouring pixels goes wrong along a quad's
+  // diagonal (FullScreenQuad::OneTriangle; the whole-image quad has one).
   code << "  const vec3 midpoints[" << midpoints.size() << "] = vec3[](";
   for (size_t i = 0; i < midpoints.size(); ++i)
   {
@@ -519,8 +524,19 @@ void vtkFXToonPass::DrawFlaggedTiles(vtkShaderProgram* program, vtkOpenGLRenderW
   vtkOpenGLState::ScopedglEnableDisable savedScissorTest(state, GL_SCISSOR_TEST);
   float pointSize = 1.0f;
   state->vtkglGetFloatv(GL_POINT_SIZE, &pointSize);
+  // (within the caller's scissor box, where it has one)
+  int box[4] = { viewport[0], viewport[1], viewport[0] + size[0], viewport[1] + size[1] };
+  if (state->GetEnumState(GL_SCISSOR_TEST))
+  {
+    int scissor[4];
+    state->vtkglGetIntegerv(GL_SCISSOR_BOX, scissor);
+    box[0] = std::max(box[0], scissor[0]);
+    box[1] = std::max(box[1], scissor[1]);
+    box[2] = std::min(box[2], scissor[0] + scissor[2]);
+    box[3] = std::min(box[3], scissor[1] + scissor[3]);
+  }
   state->vtkglViewport(viewport[0], viewport[1], padded[0], padded[1]);
-  state->vtkglScissor(viewport[0], viewport[1], size[0], size[1]);
+  state->vtkglScissor(box[0], box[1], std::max(box[2] - box[0], 0), std::max(box[3] - box[1], 0));
   state->vtkglEnable(GL_SCISSOR_TEST);
   // (the size the shader writes, and the one GL takes where VTK left
   // GL_PROGRAM_POINT_SIZE off)
@@ -582,16 +598,20 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
   vtkTextureObject* mask = this->TilesFlagged ? this->TileMask.Get() : this->Edges.Get();
   mask->Activate();
   program->SetUniformi("fxTileMask", mask->GetTextureUnit());
-  program->SetUniformi("fxEveryTile", this->TilesFlagged ? 0 : 1);
+  // A point's square has no rule for samples on its sides, so a
+  // multisampled target gets the quad over the whole image.
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  const bool points = this->TilesFlagged && samples <= 1;
+  program->SetUniformi("fxEveryTile", points ? 0 : 1);
   this->LineTiles->Bind();
-  if (this->TilesFlagged)
+  if (points)
   {
     this->DrawFlaggedTiles(program, window, viewport, size);
   }
   else
   {
-    // Without flags, one quad over the image (the sampler then reads the
-    // edges, unused).
+    // One quad over the image (the sampler then reads the edges, unused).
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
   }
   this->LineTiles->Release();

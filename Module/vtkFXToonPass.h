@@ -37,7 +37,7 @@
  * one). With lines on, its stage is PostProcess, otherwise Composite.
  * Cost: bands, a few instructions per light and pixel; lines, an edges
  * pass over the pixels with a surface (the G-buffer's depth test rejects
- * the others before the shader: SkipBackgroundEdges) of 5 gathers of
+ * the others before the shader: SkipBackgroundEdges) of 4 gathers of
  * G-buffer 2x2 blocks per pixel, which stores the marks into an R8 edge
  * texture (1 byte per pixel) and flags, in an R8 texture of one byte per
  * 8x8 tile, the tiles lines can reach (CullLineTiles); then the lines, one
@@ -164,8 +164,9 @@ public:
    * tiles with image stores (GL 4.2, texture clears, GL 4.4, and
    * framebuffers without attachments, GL 4.3, or their ARB extensions;
    * points 8 pixels wide); without them, or with this off, its marks are
-   * its colour output and lines are drawn over the whole image. The image
-   * is the same either way; off is for comparison.
+   * its colour output and lines are drawn over the whole image, as they
+   * are on a multisampled target. The image is the same either way; off
+   * is for comparison.
    */
   vtkSetMacro(CullLineTiles, bool);
   vtkGetMacro(CullLineTiles, bool);
@@ -290,12 +291,13 @@ protected:
   vtkSmartPointer<vtkOpenGLFramebufferObject> EdgeFrameBuffer; // Edges as colour
   vtkSmartPointer<vtkOpenGLFramebufferObject> MarkFrameBuffer;  // none: image stores
   vtkFXRenderUtilities::FullScreenQuad EdgeQuad;
-  // Depth32F, 0 where the edges pass can mark (SkipBackgroundEdges)
+  // Depth32F, 0 where the edges pass can mark (SkipBackgroundEdges,
+  // marks drawn as colour: without image stores or with CullLineTiles off)
   vtkSmartPointer<vtkTextureObject> EdgeMask;
   vtkSmartPointer<vtkOpenGLFramebufferObject> EdgeMaskFrameBuffer;
   vtkFXRenderUtilities::FullScreenQuad EdgeMaskQuad;
   bool EdgeMaskFailed = false;
-  vtkNew<vtkOpenGLVertexArrayObject> LineTiles; // no attributes: a 4-vertex strip per tile
+  vtkNew<vtkOpenGLVertexArrayObject> LineTiles; // no attributes: a point per tile, or one strip
   std::string LineSource; // the lines' fragment shader, generated
   bool LineSourceGathers = true; // UseTextureGather when LineSource was made
   int LineSourceWindow[2] = { 0, 0 };           // for this line window

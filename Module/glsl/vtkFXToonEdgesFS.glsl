@@ -26,11 +26,14 @@
 // to no mark): then the pass needs to run at covered pixels only (the
 // G-buffer's depth test rejects the rest before the shader), because a
 // covered pixel also writes the marks of its left and lower neighbours
-// where those are background. A background pixel's marks say only whether
-// its right and upper neighbours are covered, which both covered
-// neighbours that write them know, so they write the same value. Without
-// image stores the marks are the pass's colour output, and every pixel
-// that can have one runs (vtkFXToonEdgeMaskFS).
+// where those are background. A background pixel's marks (silhouettes
+// only) say whether its right and upper neighbours are covered, which
+// both covered neighbours that write them know, so they write the same
+// value. "Covered" is linear depth above 0 here, below 1 in the depth
+// test: they differ only for a fragment at the far plane (window depth 1,
+// which the composite shows as background), whose own marks are then not
+// stored. Without image stores the marks are the pass's colour output,
+// and every pixel that can have one runs (vtkFXToonEdgeMaskFS).
 
 // Texels are addressed through gl_FragCoord; texCoord is read once only so
 // that the quad's texture-coordinate attribute stays in the program
@@ -48,9 +51,8 @@ uniform float fxSilhouetteThreshold; // fraction of the depth
 uniform float fxParallelDepth;
 uniform float fxCreaseCosine;
 #if FX_TILE_MASK
-// The depth test against the edge mask (vtkFXToonEdgeMaskFS) before the
-// shader: with image stores it would otherwise run after it, and reject
-// nothing's cost.
+// The depth test against the G-buffer's depth before the shader: with
+// image stores it would otherwise run after it, and reject nothing's cost.
 layout(early_fragment_tests) in;
 layout(r8) uniform writeonly image2D fxEdges;
 layout(r8) uniform writeonly image2D fxTileMask;
@@ -206,9 +208,10 @@ void main()
   // neighbours where those are background (see the top of this file): a
   // background pixel's right (upper) side is marked where its right
   // (upper) neighbour is covered.
-  // (NaN depth is background, as everywhere in this pass)
-  bool leftMarked = here.covered && texel.x > 0 && !(left.x > 0.0);
-  bool lowerMarked = here.covered && texel.y > 0 && !(lower.x > 0.0);
+  // (NaN depth is background, as everywhere in this pass; without
+  // silhouettes a background pixel has no mark)
+  bool leftMarked = FX_SILHOUETTES != 0 && here.covered && texel.x > 0 && !(left.x > 0.0);
+  bool lowerMarked = FX_SILHOUETTES != 0 && here.covered && texel.y > 0 && !(lower.x > 0.0);
   fxStoreMarks(texel - ivec2(1, 0), leftMarked ? 1.0 : 0.0,
     (leftMarked && texel.y + 1 < fxGBufferSize.y && left.y > 0.0) ? 1.0 : 0.0);
   fxStoreMarks(texel - ivec2(0, 1),

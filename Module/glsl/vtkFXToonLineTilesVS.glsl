@@ -15,8 +15,10 @@
 // themselves (2.5 ms for 14400 tiles at 1280x720). The viewport is padded
 // to whole tiles, so that a partial tile's centre is inside it; the
 // scissor box keeps its pixels in the image. Where there are no flags
-// (no image stores, or points too small for a tile), fxEveryTile draws
-// one quad over the image (a strip of four vertices); tests compare both.
+// (no image stores, or points too small for a tile), or the target is
+// multisampled (a point's square has no rule for samples on its sides),
+// fxEveryTile draws one quad over the image (a strip of four vertices);
+// tests compare both.
 
 uniform sampler2D fxTileMask;
 uniform int fxTileSize;

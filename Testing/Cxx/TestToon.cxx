@@ -450,11 +450,20 @@ std::vector<unsigned char> RenderMoved(vtkRenderWindow* window, double scale, do
 // The bunny with lines of `width` pixels, drawn over flagged tiles only or
 // over the whole image, at 403x301 (tiles of 8 px do not divide it); edges
 // found where they can be only (skipBackground) or everywhere.
+// `kinds`: 1 silhouettes, 2 creases (at 10 degrees, so the bunny has
+// some), 3 both (creases at the default angle).
 std::vector<unsigned char> RenderLines(vtkRenderWindow* window, double width, bool cull,
-  bool lines, bool* culled = nullptr, bool gather = true, bool skipBackground = true)
+  bool lines, bool* culled = nullptr, bool gather = true, bool skipBackground = true,
+  int kinds = 3)
 {
   window->SetSize(403, 301);
   vtkNew<vtkFXToonPass> toon;
+  toon->SetSilhouettes((kinds & 1) != 0);
+  toon->SetCreases((kinds & 2) != 0);
+  if (kinds == 2)
+  {
+    toon->SetCreaseAngle(10.0);
+  }
   toon->SetLineReferenceHeight(301);
   toon->SetLineWidth(width);
   toon->SetCullLineTiles(cull);
@@ -515,6 +524,45 @@ int CheckTileCulling(vtkRenderWindow* window)
     FX_CHECK(differingFetched == 0,
       differingFetched << " bytes differ without textureGather at " << width << " px");
   }
+  // Each kind of line alone (a background pixel beside the bunny has a
+  // mark only with silhouettes on).
+  for (int kinds : { 1, 2 })
+  {
+    const auto culled = RenderLines(window, 2.0, true, true, nullptr, true, true, kinds);
+    const auto whole = RenderLines(window, 2.0, false, true, nullptr, true, true, kinds);
+    const auto none = RenderLines(window, 2.0, true, false, nullptr, true, true, kinds);
+    size_t differing = 0, lined = 0;
+    for (size_t i = 0; i < culled.size() && i < whole.size() && i < none.size(); ++i)
+    {
+      differing += culled[i] != whole[i] ? 1 : 0;
+      lined += culled[i] != none[i] ? 1 : 0;
+    }
+    const char* kind = kinds == 1 ? "silhouettes" : "creases";
+    std::cout << kind << " alone: " << lined << " bytes changed by lines, culled and whole "
+              << "images differ in " << differing << std::endl;
+    FX_CHECK(!culled.empty() && culled.size() == whole.size() && none.size() == whole.size(),
+      "the bunny did not render");
+    FX_CHECK(lined > 100, "no " << kind << " drawn");
+    FX_CHECK(differing == 0, differing << " bytes differ with tile culling, " << kind << " alone");
+  }
+  // A multisampled window: its framebuffer gets the whole-image quad (a
+  // point's square has no rule for samples on its sides), with the marks
+  // stored as images or drawn as colour: the same bytes either way.
+  {
+    auto multisampled = vtkFXTest::MakeWindow(403, 301);
+    multisampled->SetMultiSamples(4);
+    std::vector<unsigned char> images[2];
+    for (bool cull : { true, false })
+    {
+      vtkNew<vtkFXToonPass> toon;
+      toon->SetLineReferenceHeight(301);
+      toon->SetCullLineTiles(cull);
+      images[cull ? 0 : 1] = RenderBunny(multisampled, toon);
+    }
+    FX_CHECK(!images[0].empty() && images[0] == images[1],
+      "in a multisampled window, culled and whole-image lines differ by up to "
+        << vtkFXScenes::MaxDifference(images[0], images[1]) << "/255");
+  }
   // One pass switched from skipping the background to not and back (its
   // edges quad moves off the far plane and back): the same bytes.
   vtkNew<vtkFXToonPass> toon;
@@ -533,7 +581,7 @@ int CheckTileCulling(vtkRenderWindow* window)
 // A renderer whose viewport is the right half of a 402x301 window draws
 // the lines a 201x301 window draws: the same bytes in that half (the
 // edges texture starts at the viewport's corner, gl_FragCoord at the
-// window's; the tile quads are placed in the viewport).
+// window's; the flagged tiles' points are placed in the viewport).
 int CheckOffsetViewport(vtkRenderWindow* window)
 {
   // (both cameras framed for the viewport's aspect)
