@@ -83,7 +83,8 @@ public:
 
   /**
    * Depth tolerance as a fraction of the pixel's depth (0.0001..1, default
-   * 0.05): taps whose depth differs by this much weigh exp(-1/2).
+   * 0.05): taps whose depth differs by this much weigh 1/2 (the Cauchy
+   * weight 1 / (1 + r^2) of the relative difference r in units of it).
    */
   vtkFXSetClampMacro(DepthSigma, double, 1e-4, 1.0);
   vtkGetMacro(DepthSigma, double);

@@ -97,7 +97,23 @@ vtkFXBloomPass::vtkFXBloomPass()
   this->Stage = PostProcess;
 }
 
-vtkFXBloomPass::~vtkFXBloomPass() = default;
+vtkFXBloomPass::~vtkFXBloomPass()
+{
+  // (vtkRenderer::SetPass does not release the pass it replaces: the
+  // sampler, a bare GL name, goes here while its context lives)
+  this->ReleaseSampler();
+}
+
+void vtkFXBloomPass::ReleaseSampler()
+{
+  if (this->LinearSampler && this->SamplerWindow)
+  {
+    this->SamplerWindow->MakeCurrent();
+    glDeleteSamplers(1, &this->LinearSampler);
+  }
+  this->LinearSampler = 0;
+  this->SamplerWindow = nullptr;
+}
 
 bool vtkFXBloomPass::HasWork(const vtkFXSceneInfo& scene)
 {
@@ -351,7 +367,7 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
   return true;
 }
 
-void vtkFXBloomPass::Upsample(vtkOpenGLRenderWindow* window, int levels)
+bool vtkFXBloomPass::Upsample(vtkOpenGLRenderWindow* window, int levels)
 {
   // Equal shares: the glow is the mean of the levels brought up.
   const float share = 1.0f / levels;
@@ -373,7 +389,7 @@ void vtkFXBloomPass::Upsample(vtkOpenGLRenderWindow* window, int levels)
     vtkShaderProgram* program = this->ReadyProgram(Up, window, fs);
     if (!program)
     {
-      return;
+      return false;
     }
     coarse->Activate();
     level.Down->Activate();
@@ -389,11 +405,16 @@ void vtkFXBloomPass::Upsample(vtkOpenGLRenderWindow* window, int levels)
     coarse->Deactivate();
     level.Down->Deactivate();
   }
+  return true;
 }
 
 void vtkFXBloomPass::AddGlow(vtkOpenGLRenderWindow* window)
 {
   vtkTextureObject* glow = this->GetGlowTexture();
+  if (!glow)
+  {
+    return;
+  }
   std::string fs = vtkFXBloomUpsampleFS;
   vtkShaderProgram::Substitute(
     fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define FX_FINAL 1\n", false);
@@ -446,8 +467,14 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
                   "HDR target's image.");
     return;
   }
+  if (this->LinearSampler && this->SamplerWindow != window)
+  {
+    this->ReleaseSampler(); // (made in another window's context)
+    window->MakeCurrent();
+  }
   if (!this->LinearSampler)
   {
+    this->SamplerWindow = window;
     glGenSamplers(1, &this->LinearSampler);
     glSamplerParameteri(this->LinearSampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glSamplerParameteri(this->LinearSampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -479,9 +506,8 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
     // No step up: an earlier frame's upsampled glow must not linger.
     vtkFXRenderUtilities::Release(this->Levels[0]->Up, window);
   }
-  if (this->Downsample(window, color, levels))
+  if (this->Downsample(window, color, levels) && this->Upsample(window, levels))
   {
-    this->Upsample(window, levels);
     this->AddGlow(window);
   }
 }
@@ -498,15 +524,7 @@ void vtkFXBloomPass::ReleaseGraphicsResources(vtkWindow* w)
   }
   this->Levels.clear();
   this->ReleasePrefilter(w);
-  if (this->LinearSampler)
-  {
-    if (auto* window = vtkOpenGLRenderWindow::SafeDownCast(w))
-    {
-      window->MakeCurrent();
-    }
-    glDeleteSamplers(1, &this->LinearSampler);
-    this->LinearSampler = 0;
-  }
+  this->ReleaseSampler();
 }
 
 void vtkFXBloomPass::PrintSelf(ostream& os, vtkIndent indent)

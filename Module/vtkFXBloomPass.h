@@ -56,6 +56,7 @@
 #include "vtkFXSetGet.h" // for vtkFXSetClampMacro
 #include "vtkFXRenderUtilities.h" // for the full-screen quads
 #include "vtkSmartPointer.h"
+#include "vtkWeakPointer.h" // for the sampler's window
 
 #include <memory>
 #include <string>
@@ -177,7 +178,7 @@ protected:
   /** With a threshold: the glow's source per full-resolution texel, into Prefiltered. */
   bool Prefilter(vtkOpenGLRenderWindow* window, vtkTextureObject* color, vtkTextureObject* emission);
   void ReleasePrefilter(vtkWindow* window);
-  void Upsample(vtkOpenGLRenderWindow* window, int levels);
+  bool Upsample(vtkOpenGLRenderWindow* window, int levels);
   void AddGlow(vtkOpenGLRenderWindow* window); // adds GetGlowTexture()
   vtkShaderProgram* ReadyProgram(int which, vtkOpenGLRenderWindow* window, const std::string& fs);
   void ComputeGlowRect(vtkRenderer* ren, int width, int height, int levels);
@@ -202,6 +203,8 @@ protected:
   double EmissiveBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
   int GlowRect[4] = { 0, 0, 0, 0 };
   unsigned int LinearSampler = 0; // GL sampler for reading the G-buffer's emission bilinearly
+  vtkWeakPointer<vtkOpenGLRenderWindow> SamplerWindow; // whose context made it
+  void ReleaseSampler();
   enum
   {
     FirstDown = 0,

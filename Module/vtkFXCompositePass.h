@@ -76,7 +76,7 @@ public:
   /**
    * Channel to show instead of the lit image (a vtkFXGBufferPass::Channel),
    * or -1 (default) for the lit image. Normals show as 0.5 + 0.5 n, linear
-   * depth as a grey ramp from the nearest to the farthest covered pixel.
+   * depth as a grey ramp over the camera's clipping range (near black).
    */
   vtkSetClampMacro(DebugChannel, int, -1, vtkFXGBufferPass::NumberOfChannels - 1);
   vtkGetMacro(DebugChannel, int);
@@ -138,8 +138,8 @@ public:
    * Write the pre-pass's depth with one blit where the framebuffer allows
    * it (default on): the G-buffer keeps the renderer's depth format, so
    * only a multisampled target refuses (then a full-screen pass writes it,
-   * and the blit is not tried again for that target until
-   * ReleaseGraphicsResources). The
+   * and the blit is not tried again for that target while it stays the
+   * target: the last refusing one is remembered). The
    * result is the same either way; off is for comparison.
    */
   vtkSetMacro(UseDepthBlit, bool);

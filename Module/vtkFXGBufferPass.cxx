@@ -392,6 +392,15 @@ void vtkFXGBufferPass::UpdateTargets(vtkOpenGLRenderWindow* window, int width, i
   this->FrameBuffer->AddDepthAttachment(this->DepthTexture);
   this->NumberOfTargets = attachment;
   this->FrameBuffer->ActivateDrawBuffers(attachment);
+  if (glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE &&
+    !this->WarnedIncomplete)
+  {
+    // (say, no memory for this many channels at this size: the opaque
+    // props will not show)
+    vtkErrorMacro("The G-buffer of " << width << " x " << height << " pixels, " << attachment
+                                     << " channels, could not be made.");
+    this->WarnedIncomplete = true;
+  }
 }
 
 void vtkFXGBufferPass::ClearTargets()

@@ -267,6 +267,7 @@ protected:
   bool HDRMaterial = false;
   unsigned int RequiredChannels;
   unsigned int AllocatedChannels = 0;
+  bool WarnedIncomplete = false; // the framebuffer could not be made (said once)
   int DepthFormat = -1; // a vtkFXRenderUtilities::TextureFormat
   unsigned int NumberOfTargets = 0;
   vtkSmartPointer<vtkTextureObject> Textures[NumberOfChannels];

@@ -53,6 +53,12 @@ bool vtkFXHDRTargetPass::CopyIn(vtkOpenGLState* state, int x, int y, int width, 
   }
   glBlitFramebuffer(
     x, y, x + width, y + height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  if (glGetError() != GL_NO_ERROR && !this->WarnedColorCopy)
+  {
+    vtkWarningMacro("The framebuffer's colour cannot be copied into the HDR target; effects "
+                    "draw over the background there.");
+    this->WarnedColorCopy = true;
+  }
   bool copied = false;
   if (depth)
   {
@@ -128,7 +134,23 @@ void vtkFXHDRTargetPass::Render(const vtkRenderState* s)
   this->FrameBuffer->AddColorAttachment(0, this->Color);
   this->FrameBuffer->AddDepthAttachment(this->Depth);
   this->FrameBuffer->ActivateDrawBuffers(1);
+  const bool complete = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
   state->PopFramebufferBindings();
+  if (!complete)
+  {
+    // (say, no memory for an RGBA16F image this large) Drawn as if there
+    // were no HDR target: into the renderer's framebuffer, values clamped
+    // to its range, rather than writing back an empty image.
+    if (!this->WarnedIncomplete)
+    {
+      vtkWarningMacro("The HDR target of " << width << " x " << height
+                                           << " pixels could not be made; drawing without it.");
+      this->WarnedIncomplete = true;
+    }
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    return;
+  }
   {
     vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
     state->vtkglDisable(GL_SCISSOR_TEST);

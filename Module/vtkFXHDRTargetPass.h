@@ -84,6 +84,8 @@ protected:
   vtkRenderPass* DelegatePass = nullptr;
   int DepthFormat = -1;
   bool WarnedDepthFormat = false;
+  bool WarnedColorCopy = false;
+  bool WarnedIncomplete = false;
   vtkSmartPointer<vtkTextureObject> Color;
   vtkSmartPointer<vtkTextureObject> Depth;
   vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;

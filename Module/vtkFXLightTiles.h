@@ -5,7 +5,8 @@
  * The viewport is cut into TileSize x TileSize pixel tiles; each light
  * goes into the list of every tile its sphere of influence covers on the
  * screen (the bounding rectangle of the sphere's projected bounding box;
- * a sphere reaching the camera's near plane covers every tile). A light's
+ * a sphere reaching the camera's plane covers every tile, unless Build is
+ * given the visible depth range, as the composite does). A light's
  * sphere of influence ends where VTK's attenuation, 1 / (a0 + a1 d + a2 d^2),
  * brings the most it can add to a colour (twice its intensity times
  * colour: diffuse and specular coefficients at most 1 each) below a

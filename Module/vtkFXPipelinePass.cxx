@@ -849,7 +849,23 @@ void vtkFXPipelinePass::ScheduleSelectionFrame()
 
 void vtkFXPipelinePass::Render(const vtkRenderState* s)
 {
-  this->LastWindow = s->GetRenderer()->GetRenderWindow();
+  vtkRenderer* renderer = s->GetRenderer();
+  vtkRenderWindow* window = renderer->GetRenderWindow();
+  if (this->LastWindow && this->LastWindow != window)
+  {
+    // GL objects belong to one context (framebuffers and vertex arrays are
+    // never shared): moved to another window, the pipeline starts afresh.
+    this->ReleaseGraphicsResources(this->LastWindow);
+  }
+  if (this->LastRenderer && this->LastRenderer != renderer && !this->WarnedSharedPipeline)
+  {
+    vtkWarningMacro("This vtkFXPipelinePass renders for more than one renderer: its buffers "
+                    "follow the last one, so each render reallocates them. Give each renderer "
+                    "a pipeline of its own.");
+    this->WarnedSharedPipeline = true;
+  }
+  this->LastRenderer = renderer;
+  this->LastWindow = window;
   const bool selecting = s->GetRenderer()->GetSelector() != nullptr;
   if (selecting)
   {

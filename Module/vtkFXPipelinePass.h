@@ -28,7 +28,10 @@
  *
  * Reads the renderer's props and lights; writes the renderer's framebuffer,
  * depth-tested against what it holds (layered renderers that preserve the
- * depth buffer keep what the layers below drew).
+ * depth buffer keep what the layers below drew). One pipeline serves one
+ * renderer: its buffers follow the renderer it last drew, so a pipeline
+ * shared by two renderers reallocates them at every render (it warns once),
+ * and one moved to another window releases its GL objects first.
  * Per-pass GPU times (vtkOpenGLRenderTimer, results a frame or more late)
  * and the list of passes that ran are exposed for benchmarks and tests.
  *
@@ -65,6 +68,7 @@ class vtkFXTimedSequencePass;
 class vtkFXTranslucentPass;
 class vtkLightsPass;
 class vtkOpaquePass;
+class vtkRenderer;
 class vtkOverlayPass;
 class vtkVolumetricPass;
 class vtkWindow;
@@ -271,6 +275,8 @@ protected:
   vtkSmartPointer<vtkFXSSAOPass> SSAOPass;
   vtkSmartPointer<vtkFXBilateralBlurPass> OcclusionBlurPass;
   vtkWeakPointer<vtkWindow> LastWindow; // to release effects removed between frames
+  vtkWeakPointer<vtkRenderer> LastRenderer; // one renderer per pipeline (warned otherwise)
+  bool WarnedSharedPipeline = false;
   vtkFXSceneInfo LastScene;
   std::vector<std::string> LastPasses;
   std::string ScheduleProblems;

@@ -62,9 +62,13 @@ public:
   static int GetBytesPerTexel(int format);
 
   /**
-   * Make `texture` a width x height 2D texture of the given format, with
-   * nearest filtering and clamped edges. Allocates only when it is missing or
-   * its size or format differ; returns true when it (re)allocated.
+   * Make `texture` a width x height 2D texture of the given format.
+   * Allocates only when it is missing or its size or format differ, and
+   * then sets nearest filtering and clamped edges (a texture kept from an
+   * earlier frame keeps whatever filtering and wrapping callers set);
+   * returns true when it (re)allocated. An allocation OpenGL refuses (no
+   * memory) leaves a texture that makes a framebuffer incomplete: callers
+   * check RenderTargetScope::IsComplete.
    */
   static bool EnsureTexture(vtkSmartPointer<vtkTextureObject>& texture,
     vtkOpenGLRenderWindow* window, int width, int height, int format);

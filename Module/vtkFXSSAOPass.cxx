@@ -323,6 +323,20 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   this->AddExtensionTargets(ren, static_cast<int>(this->Occlusion->GetWidth()),
     static_cast<int>(this->Occlusion->GetHeight()), targets);
   vtkFXRenderUtilities::RenderTargetScope target(window, this->FrameBuffer, targets);
+  if (!target.IsComplete())
+  {
+    // (say, no memory for the occlusion texture) No output: the composite
+    // then reads no occlusion, rather than an empty texture's zeros.
+    if (!this->WarnedIncomplete)
+    {
+      vtkErrorMacro("The occlusion texture of " << this->Occlusion->GetWidth() << " x "
+                                                << this->Occlusion->GetHeight()
+                                                << " texels could not be made; no occlusion.");
+      this->WarnedIncomplete = true;
+    }
+    vtkFXRenderUtilities::Release(this->Occlusion, window);
+    return;
+  }
   vtkShaderProgram* program =
     vtkFXRenderUtilities::ReadyQuad(this->Quad, window, fs);
   if (!program)

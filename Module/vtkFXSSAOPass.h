@@ -207,6 +207,7 @@ protected:
   double Bias = 0.02;
   bool HalfResolution = true;
   double EffectiveRadius = 0.0;
+  bool WarnedIncomplete = false; // the occlusion texture could not be made (said once)
   int Channels = 1; // values the estimator writes per texel: 1 or 3
   int TileSize = 4; // side of the tile of per-pixel rotations: 4 or 8
 

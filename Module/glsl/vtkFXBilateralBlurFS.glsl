@@ -103,7 +103,10 @@ float fxGuideWeight(float d0, vec3 n0, vec4 g)
   {
     return 0.0; // background never contributes
   }
-  float r = (g.w - d0) / (fxDepthSigma * d0);
+  // (the tolerance kept a normal float: at depths below about 1e-34 world
+  // units, past what the occlusion passes serve but not what a blur of
+  // another input may see, the product underflows, and 0 / 0 is NaN)
+  float r = (g.w - d0) / max(fxDepthSigma * d0, 1e-37);
   // c^FX_NORMAL_POWER (0..32) by squaring, unrolled at compile time (the
   // bit tests are constant and fold away): a loop here, nested in the
   // taps' loop, cost llvmpipe a quarter of a directional occlusion frame

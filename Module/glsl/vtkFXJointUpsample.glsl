@@ -28,7 +28,7 @@ vec4 fxJointUpsample(sampler2D lowResolution, bool depthInValue, sampler2D depth
       vec4 v = texelFetch(lowResolution, q, 0);
       float d = depthInValue ? v[depthComponent] : texelFetch(depths, q, 0)[depthComponent];
       float bilinear = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
-      float r = (d - d0) / (depthSigma * d0);
+      float r = (d - d0) / max(depthSigma * d0, 1e-37); // (see vtkFXBilateralBlurFS)
       float w = d > 0.0 ? bilinear / (1.0 + r * r) : 0.0;
       sum += w * v;
       total += w;

@@ -904,12 +904,81 @@ int TestHDRRobustness()
   return EXIT_SUCCESS;
 }
 
+// One pipeline serves one renderer. Moved to a renderer of another window
+// (GL objects of one context are not valid in another), it draws there
+// what a fresh pipeline draws; shared by two renderers of one window, it
+// warns once.
+int TestPipelineOwner()
+{
+  vtkNew<vtkFXPipelinePass> moving;
+  std::vector<unsigned char> images[2];
+  // (both windows live on: the pipeline moves between two contexts)
+  vtkSmartPointer<vtkRenderWindow> windows[2] = { vtkFXTest::MakeWindow(200, 150),
+    vtkFXTest::MakeWindow(200, 150) };
+  for (int w : { 0, 1 })
+  {
+    vtkRenderWindow* window = windows[w];
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    std::string error;
+    FX_CHECK(vtkFXScenes::Populate(renderer, "scene:corner", vtkFXScenes::Options(), error), error);
+    vtkFXTest::ErrorCounter errors(moving);
+    renderer->SetPass(moving);
+    window->Render();
+    // (a name of the other context's framebuffers or vertex arrays raises
+    // GL errors here, even where this context happens to have one)
+    window->MakeCurrent();
+    const GLenum glError = glGetError();
+    images[w] = vtkFXScenes::Capture(window);
+    FX_CHECK(glError == GL_NO_ERROR, "GL error " << glError << " in window " << w);
+    FX_CHECK(errors.Count == 0, "the pipeline in window " << w << ": " << errors.Last);
+    if (w == 1)
+    {
+      vtkNew<vtkFXPipelinePass> fresh;
+      renderer->SetPass(fresh);
+      window->Render();
+      const auto expected = vtkFXScenes::Capture(window);
+      std::cout << "a pipeline moved to a second window: largest difference from a fresh one "
+                << vtkFXScenes::MaxDifference(expected, images[1]) << "/255" << std::endl;
+      FX_CHECK(!expected.empty() && expected == images[1],
+        "a pipeline moved to another window draws what a fresh one draws");
+    }
+    renderer->SetPass(nullptr);
+  }
+  FX_CHECK(images[0] == images[1], "the same scene in two windows of one size");
+  // Two renderers of one window, one pipeline: one warning over frames.
+  auto window = vtkFXTest::MakeWindow(200, 150);
+  vtkNew<vtkRenderer> left, right;
+  left->SetViewport(0.0, 0.0, 0.5, 1.0);
+  right->SetViewport(0.5, 0.0, 1.0, 1.0);
+  window->AddRenderer(left);
+  window->AddRenderer(right);
+  std::string error;
+  FX_CHECK(vtkFXScenes::Populate(left, "scene:corner", vtkFXScenes::Options(), error) &&
+      vtkFXScenes::Populate(right, "scene:corner", vtkFXScenes::Options(), error),
+    error);
+  vtkNew<vtkFXPipelinePass> shared;
+  vtkFXTest::EventCounter warnings(shared, vtkCommand::WarningEvent);
+  left->SetPass(shared);
+  right->SetPass(shared);
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    window->Render();
+  }
+  std::cout << "one pipeline on two renderers: " << warnings.Count << " warning(s): "
+            << warnings.Last << std::endl;
+  FX_CHECK(warnings.Count == 1, "a pipeline shared by two renderers warns once");
+  left->SetPass(nullptr);
+  right->SetPass(nullptr);
+  return EXIT_SUCCESS;
+}
+
 int TestFrameStructure(int, char*[])
 {
   auto window = vtkFXTest::MakeWindow(400, 300);
   SharedWindow = window;
   for (auto test : { TestStages, TestConnections, TestHooks, TestManyLights, TestLayers,
-         TestDepthPrepass, TestEmission, TestHDRIdentity, TestHDRRobustness })
+         TestDepthPrepass, TestEmission, TestHDRIdentity, TestHDRRobustness, TestPipelineOwner })
   {
     if (test() != EXIT_SUCCESS)
     {
