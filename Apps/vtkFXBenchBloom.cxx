@@ -269,6 +269,7 @@ int BenchBloom(const Options& o)
     return 1;
   }
   const double intensity = 0.5; // vtkFXBloomPass's default
+  int skipped = 0;                // inputs without emission
   std::vector<Method> methods = MakeMethods(intensity);
   for (auto& m : methods)
   {
@@ -306,6 +307,7 @@ int BenchBloom(const Options& o)
     if (emission.empty())
     {
       std::cerr << "vtkfx-bench: " << input << " has nothing emissive: no glow to measure\n";
+      ++skipped;
       continue;
     }
     timer->StartTimer();
@@ -344,6 +346,12 @@ int BenchBloom(const Options& o)
       o.Out + "/bloom-" + tag + ".png");
     WriteRGBStrip({ &reference, &ours.Image, &methods[3].Image, &none.Image }, o.Width, o.Height,
       o.Out + "/bloom-strip-" + tag + ".png");
+  }
+  if (skipped == static_cast<int>(o.Inputs.size()))
+  {
+    std::cerr << "vtkfx-bench: no input has anything emissive; " << csvPath
+              << " holds no measurement\n";
+    return 1;
   }
   std::cout << "wrote " << csvPath << " (" << o.Width << "x" << o.Height << ", median of "
             << o.Frames << " interleaved frames)\n";

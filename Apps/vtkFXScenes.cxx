@@ -876,10 +876,10 @@ bool PopulateBuiltIn(vtkRenderer* renderer, const std::string& name, std::string
     return PopulateMolecule(renderer, vtkFXScenes::DataDirectory() + "/1crn.pdb", error);
   else
   {
-    error = "unknown scene '" + name + "'; built-in scenes:";
-    for (const auto& n : vtkFXScenes::BuiltInSceneNames())
+    // (CheckInput words the message; a listed name never gets here)
+    if (vtkFXScenes::CheckInput(name, error))
     {
-      error += " " + n;
+      error = "scene '" + name + "' is listed but not built";
     }
     return false;
   }
@@ -899,6 +899,30 @@ std::vector<std::string> vtkFXScenes::BuiltInSceneNames()
     "scene:composite", "scene:splats", "scene:lights", "scene:mixed", "scene:volume", "scene:edges",
     "scene:molecule", "scene:glow", "scene:pointlights", "scene:isoshadow", "scene:cloud",
     "scene:particles", "scene:bumps", "scene:normalmap", "scene:terrain" };
+}
+
+bool vtkFXScenes::CheckInput(const std::string& input, std::string& error)
+{
+  if (input.rfind("scene:", 0) == 0)
+  {
+    const auto names = BuiltInSceneNames();
+    if (std::find(names.begin(), names.end(), input) != names.end())
+    {
+      return true;
+    }
+    error = "unknown scene '" + input + "'; built-in scenes:";
+    for (const auto& n : names)
+    {
+      error += " " + n;
+    }
+    return false;
+  }
+  if (!FileReadable(input))
+  {
+    error = "cannot open '" + input + "'";
+    return false;
+  }
+  return true;
 }
 
 bool vtkFXScenes::Populate(vtkRenderer* renderer, const std::string& input,
@@ -1203,6 +1227,8 @@ bool vtkFXScenes::LoadRGB(const std::string& path, std::vector<unsigned char>& r
   {
     return false;
   }
+  // Grey (1 component) or grey and alpha (2): the grey in all three
+  // channels; RGB or RGBA: the colour (alpha is not compared).
   const int comps = scalars->GetNumberOfComponents();
   size[0] = image->GetDimensions()[0];
   size[1] = image->GetDimensions()[1];
@@ -1211,7 +1237,7 @@ bool vtkFXScenes::LoadRGB(const std::string& path, std::vector<unsigned char>& r
   {
     for (int c = 0; c < 3; ++c)
     {
-      rgb.push_back(scalars->GetValue(i * comps + std::min(c, comps - 1)));
+      rgb.push_back(scalars->GetValue(i * comps + (comps < 3 ? 0 : c)));
     }
   }
   return true;

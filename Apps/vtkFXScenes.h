@@ -31,6 +31,12 @@ struct Options
 };
 
 /**
+ * Whether INPUT names a built-in scene or a readable file, before any
+ * work; otherwise false and a message in `error`.
+ */
+bool CheckInput(const std::string& input, std::string& error);
+
+/**
  * Fill `renderer` with INPUT: a built-in scene name or a file VTK can read
  * (.obj, .ply, .stl, .vtp, .vtk, .pdb). Frames the camera. On failure returns
  * false and puts a message in `error`; the renderer is then left empty.
@@ -91,8 +97,9 @@ double AddPointLights(vtkRenderer* renderer, int count, const double bounds[6], 
 std::vector<unsigned char> Capture(vtkRenderWindow* window);
 
 /**
- * A PNG file as RGB bytes (bottom row first, as Capture), and its size;
- * false when it cannot be read.
+ * An 8-bit PNG file (grey, grey and alpha, RGB or RGBA) as RGB bytes
+ * (bottom row first, as Capture; grey in all three, alpha dropped), and its
+ * size; false when it cannot be read or has 16-bit samples.
  */
 bool LoadRGB(const std::string& path, std::vector<unsigned char>& rgb, int size[2]);
 }

@@ -15,6 +15,7 @@
 // frame time over N frames (PSNR over the pixels that show data), and
 // prints the time ratios (to VTK, and to vtkFX without effects) and the
 // pipeline's per-pass GPU times per scene.
+#include "vtkFXArguments.h"
 #include "vtkFXBench.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
@@ -185,9 +186,7 @@ int main(int argc, char* argv[])
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    if (a == "--out" && i + 1 < argc)
-      o.Out = argv[++i];
-    else if (a == "--falloff")
+    if (a == "--falloff")
     {
       const std::string f = i + 1 < argc ? argv[++i] : "";
       if (f != "binary" && f != "cuberoot")
@@ -197,20 +196,30 @@ int main(int argc, char* argv[])
       }
       o.Falloff = f == "binary" ? 0 : 1;
     }
-    else if (a == "--max-vtk-lights" && i + 1 < argc)
-      o.MaxVTKLights = std::max(0, std::atoi(argv[++i]));
-    else if (a == "--frames" && i + 1 < argc)
-      o.Frames = std::max(1, std::atoi(argv[++i]));
-    else if (a == "--size" && i + 1 < argc)
+    else if (a == "--max-vtk-lights" || a == "--frames" || a == "--size" || a == "--out")
     {
-      char x = 0;
-      std::istringstream in(argv[++i]);
-      if (!(in >> o.Width >> x >> o.Height) || x != 'x' || o.Width < 1 || o.Height < 1)
+      if (i + 1 >= argc)
       {
-        std::cerr << "vtkfx-bench: bad --size\n";
+        std::cerr << "vtkfx-bench: " << a << " needs a value\n";
         return 2;
       }
-      o.SizeGiven = true;
+      const std::string v = argv[++i];
+      const bool ok = a == "--out" ? !v.empty()
+        : a == "--max-vtk-lights" ? vtkFXArguments::ParseInt(v, 0, 1024, o.MaxVTKLights)
+        : a == "--frames"         ? vtkFXArguments::ParseInt(v, 1, 100000, o.Frames)
+                                  : vtkFXArguments::ParseSize(v, o.Width, o.Height);
+      if (!ok)
+      {
+        std::cerr << "vtkfx-bench: bad " << a << " '" << v << "' ("
+                  << (a == "--out"          ? "a directory"
+                       : a == "--size"       ? "WxH, 1 to 16384 pixels a side"
+                       : a == "--frames"     ? "a whole number, 1 to 100000"
+                                             : "a whole number, 0 to 1024")
+                  << ")\n";
+        return 2;
+      }
+      o.Out = a == "--out" ? v : o.Out;
+      o.SizeGiven = o.SizeGiven || a == "--size";
     }
     else if (a == "--help" || a == "-h")
     {
@@ -235,6 +244,17 @@ int main(int argc, char* argv[])
     std::cerr << "vtkfx-bench: " << (o.Out.empty() ? "--out DIR is required" : "unknown benchmark '" + o.Effect + "'") << "\n";
     Usage(std::cerr);
     return 2;
+  }
+  // Every input checked before any work: a typo in the last one must not
+  // cost the first one's run.
+  for (const std::string& input : o.Inputs)
+  {
+    std::string error;
+    if (!vtkFXScenes::CheckInput(input, error))
+    {
+      std::cerr << "vtkfx-bench: " << error << "\n";
+      return 1;
+    }
   }
   vtksys::SystemTools::MakeDirectory(o.Out);
   const std::string data = vtkFXScenes::DataDirectory();

@@ -3,6 +3,7 @@
 //
 //   vtkfx-compare A.png B.png [--min-psnr DB]
 // Exits 1 when the images differ in size or the PSNR is below --min-psnr.
+#include "vtkFXArguments.h"
 #include "vtkFXScenes.h"
 
 #include "vtkNew.h"
@@ -25,7 +26,7 @@ int main(int argc, char* argv[])
   {
     if (!vtkFXScenes::LoadRGB(argv[i], i == 1 ? a : b, i == 1 ? sa : sb))
     {
-      std::cerr << "vtkfx-compare: cannot read '" << argv[i] << "' as a PNG image\n";
+      std::cerr << "vtkfx-compare: cannot read '" << argv[i] << "' as an 8-bit PNG image\n";
       return 2;
     }
   }
@@ -42,7 +43,13 @@ int main(int argc, char* argv[])
   }
   const double psnr = vtkFXScenes::PSNR(a, b);
   std::cout << "PSNR " << psnr << " dB, largest difference " << maxDiff << "/255\n";
-  if (argc == 5 && psnr < std::atof(argv[4]))
+  double minimum = 0.0;
+  if (argc == 5 && !vtkFXArguments::ParseInRange(argv[4], -1e6, 1e6, minimum))
+  {
+    std::cerr << "vtkfx-compare: bad --min-psnr '" << argv[4] << "' (a number of dB)\n";
+    return 2;
+  }
+  if (argc == 5 && psnr < minimum)
   {
     std::cerr << "vtkfx-compare: PSNR below " << argv[4] << " dB\n";
     return 1;

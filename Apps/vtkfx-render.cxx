@@ -7,6 +7,7 @@
 //                [--ao-radius R | --ao-radius-fraction F]
 //                [--ao-quality low|medium|high] [--ao-falloff binary|cuberoot]
 //                [--do-method hemisphere|horizon]
+#include "vtkFXArguments.h"
 #include "vtkFXScenes.h"
 
 #include "vtkFXAVSMPass.h"
@@ -89,54 +90,6 @@ void Usage(std::ostream& os)
   os << "\n";
 }
 
-bool ParseSize(const std::string& text, int& w, int& h)
-{
-  char x = 0;
-  std::istringstream in(text);
-  long lw = 0, lh = 0;
-  if (!(in >> lw >> x >> lh) || (x != 'x' && x != 'X') || !in.eof())
-  {
-    return false;
-  }
-  if (lw < 1 || lh < 1 || lw > 16384 || lh > 16384)
-  {
-    return false;
-  }
-  w = static_cast<int>(lw);
-  h = static_cast<int>(lh);
-  return true;
-}
-
-bool ParseInt(const std::string& text, int lo, int hi, int& value)
-{
-  char* end = nullptr;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || v < lo || v > hi)
-  {
-    return false;
-  }
-  value = static_cast<int>(v);
-  return true;
-}
-
-// A decimal number (digits, '.', an exponent) in [lo, hi]: no hexadecimal,
-// no spaces, nothing that a float uniform would turn into 0 or infinity.
-bool ParseInRange(const std::string& text, double lo, double hi, double& value)
-{
-  if (text.empty() || text.find_first_not_of("0123456789.eE+-") != std::string::npos)
-  {
-    return false;
-  }
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (*end != '\0' || !(v >= lo && v <= hi))
-  {
-    return false;
-  }
-  value = v;
-  return true;
-}
-
 // The index of `text` among `names`, or -1.
 int IndexOf(const std::string& text, const std::vector<std::string>& names)
 {
@@ -166,7 +119,7 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
     }
     else if (a == "--size")
     {
-      if (!value(v) || !ParseSize(v, args.Width, args.Height))
+      if (!value(v) || !vtkFXArguments::ParseSize(v, args.Width, args.Height))
       {
         error = "bad --size '" + v + "' (expected WxH, each 1..16384)";
         return false;
@@ -198,8 +151,8 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
     {
       const bool fraction = a == "--ao-radius-fraction";
       if (!value(v) ||
-        !(fraction ? ParseInRange(v, 1e-6, 10.0, args.AORadiusFraction)
-                   : ParseInRange(v, 1e-30, 1e30, args.AORadius)))
+        !(fraction ? vtkFXArguments::ParseInRange(v, 1e-6, 10.0, args.AORadiusFraction)
+                   : vtkFXArguments::ParseInRange(v, 1e-30, 1e30, args.AORadius)))
       {
         error = "bad " + a + " '" + v + "' (expected a decimal number " +
           (fraction ? std::string("from 1e-6 to 10: a fraction of the data's diagonal)")
@@ -241,7 +194,7 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
       args.Ground = false;
     else if (a == "--frames")
     {
-      if (!value(v) || !ParseInt(v, 1, 100000, args.Frames))
+      if (!value(v) || !vtkFXArguments::ParseInt(v, 1, 100000, args.Frames))
       {
         error = "bad --frames '" + v + "' (expected 1..100000)";
         return false;
@@ -312,7 +265,8 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
   }
   if (has("blur") && !has("ssao"))
   {
-    error = "effect 'blur' blurs an occlusion effect: use --effects ssao,blur";
+    error = has("do") ? "'do' blurs its own channels: give --effects do (not do,blur)"
+                      : "effect 'blur' blurs an occlusion effect: use --effects ssao,blur";
     return false;
   }
   if (has("toon") && has("lines"))
@@ -338,6 +292,11 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
   if (args.PlainVTK && !args.Effects.empty())
   {
     error = "--plain-vtk renders VTK's own image: it takes no --effects";
+    return false;
+  }
+  if (args.PlainVTK && !args.DebugChannel.empty())
+  {
+    error = "--plain-vtk renders VTK's own image: it has no --debug-channel (a G-buffer's)";
     return false;
   }
   return true;
