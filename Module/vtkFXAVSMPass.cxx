@@ -185,7 +185,10 @@ vtkFXAVSMPass::vtkFXAVSMPass()
   this->ResolveQuad.OneTriangle = true; // its walks stop at each texel's count
 }
 
-vtkFXAVSMPass::~vtkFXAVSMPass() = default;
+vtkFXAVSMPass::~vtkFXAVSMPass()
+{
+  this->ReleaseBuffers();
+}
 
 int vtkFXAVSMPass::Nodes() const
 {
@@ -624,12 +627,18 @@ void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
   view.SliceRange[1] = static_cast<float>(std::min(1.0, std::max(lo, hi)));
 }
 
-bool vtkFXAVSMPass::EnsureBuffers()
+bool vtkFXAVSMPass::EnsureBuffers(vtkOpenGLRenderWindow* window)
 {
   const vtkIdType texels = vtkIdType(this->AtlasSize[0]) * this->AtlasSize[1];
+  if (this->Buffers[HeadsBuffer] && this->BuffersWindow != window)
+  {
+    this->ReleaseBuffers(); // (made in another window's context)
+    window->MakeCurrent();
+  }
   if (!this->Buffers[HeadsBuffer])
   {
     glGenBuffers(NumberOfBuffers, this->Buffers);
+    this->BuffersWindow = window;
     this->BufferTexels = 0;
     this->Capacity = 0;
   }
@@ -641,15 +650,13 @@ bool vtkFXAVSMPass::EnsureBuffers()
     std::max<vtkIdType>(1, std::min<vtkIdType>(MaximumCapacity, blockBytes / NodeBytes));
   if (texels * 4 > blockBytes)
   {
-    if (!this->ReportedAllocationFailure)
-    {
-      vtkErrorMacro("AVSM: the list heads of "
-        << texels << " shadow-map texels (" << this->GetNumberOfViews() << " views of "
-        << this->ShadowMapSize << "^2) need " << (texels * 4) / (1 << 20)
-        << " MiB, more than one OpenGL storage block holds (" << blockBytes / (1 << 20)
-        << " MiB); no shadows of translucent props (lower ShadowMapSize).");
-      this->ReportedAllocationFailure = true;
-    }
+    std::ostringstream message;
+    message << "AVSM: the list heads of " << texels << " shadow-map texels ("
+            << this->GetNumberOfViews() << " views of " << this->ShadowMapSize << "^2) need "
+            << (texels * 4) / (1 << 20) << " MiB, more than one OpenGL storage block holds ("
+            << blockBytes / (1 << 20) << " MiB); no shadows of translucent props (lower "
+            << "ShadowMapSize).";
+    this->ReportError(message.str());
     return false;
   }
   bool allocated = true;
@@ -672,13 +679,14 @@ bool vtkFXAVSMPass::EnsureBuffers()
     this->Capacity = allocated ? wanted : 0;
   }
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  if (!allocated && !this->ReportedAllocationFailure)
+  if (!allocated)
   {
-    vtkErrorMacro("AVSM: OpenGL could not allocate the fragment lists for "
-      << texels << " texels and " << wanted << " fragments (" << (wanted * NodeBytes) / (1 << 20)
-      << " MiB); no shadows of translucent props until it can (lower ShadowMapSize or "
-         "InitialNodesPerTexel).");
-    this->ReportedAllocationFailure = true;
+    std::ostringstream message;
+    message << "AVSM: OpenGL could not allocate the fragment lists for " << texels
+            << " texels and " << wanted << " fragments (" << (wanted * NodeBytes) / (1 << 20)
+            << " MiB); no shadows of translucent props until it can (lower ShadowMapSize or "
+               "InitialNodesPerTexel).";
+    this->ReportError(message.str());
   }
   return allocated;
 }
@@ -902,6 +910,11 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
       window, this->CaptureFrameBuffer, this->AtlasSize[0], this->AtlasSize[1]);
     vtkOpenGLState::ScopedglDepthMask depthMask(window->GetState());
     window->GetState()->vtkglDepthMask(GL_FALSE);
+    // The scissor box keeps each view's fragments in its square: a point
+    // wider than a pixel (GL clips points by their centre) or a line
+    // could reach the next view's (the scope restores the test's switch).
+    vtkOpenGLState::ScopedglScissor scissor(window->GetState());
+    window->GetState()->vtkglEnable(GL_SCISSOR_TEST);
     vtkCamera* viewer = ren->GetActiveCamera();
     viewer->Register(this);
     vtkRenderState state(ren);
@@ -913,6 +926,8 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
       this->CaptureView = v;
       const LightView& view = this->Views[v];
       window->GetState()->vtkglViewport(
+        view.Origin[0], view.Origin[1], this->ShadowMapSize, this->ShadowMapSize);
+      window->GetState()->vtkglScissor(
         view.Origin[0], view.Origin[1], this->ShadowMapSize, this->ShadowMapSize);
       ren->SetActiveCamera(view.Camera);
       this->CasterPass->Render(&state);
@@ -971,13 +986,11 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
       // The lists keep their size: later frames drop fragments too (their
       // shadows lighter), never write past the buffer.
       glDeleteBuffers(1, &bigger);
-      if (!this->ReportedAllocationFailure)
-      {
-        vtkErrorMacro("AVSM: OpenGL could not grow the fragment lists to "
-          << grown << " fragments (" << (grown * NodeBytes) / (1 << 20)
-          << " MiB); fragments beyond " << this->Capacity << " stay left out.");
-        this->ReportedAllocationFailure = true;
-      }
+      std::ostringstream message;
+      message << "AVSM: OpenGL could not grow the fragment lists to " << grown << " fragments ("
+              << (grown * NodeBytes) / (1 << 20) << " MiB); fragments beyond " << this->Capacity
+              << " stay left out.";
+      this->ReportError(message.str());
     }
     glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
@@ -1280,7 +1293,7 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
   if (!this->GBuffer || !this->GBuffer->GetChannelTexture(GB::LinearDepth) ||
     this->CastingLights.empty())
   {
-    vtkErrorMacro("vtkFXAVSMPass needs a G-buffer with linear depth and a casting light.");
+    this->ReportError("vtkFXAVSMPass needs a G-buffer with linear depth and a casting light.");
     this->AbandonFrame(window);
     return;
   }
@@ -1305,15 +1318,16 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
   const int largest = vtkTextureObject::GetMaximumTextureSize(window);
   if (this->AtlasSize[0] > largest || this->AtlasSize[1] > largest)
   {
-    vtkErrorMacro("AVSM: " << this->GetNumberOfViews() << " light views of " << this->ShadowMapSize
-                           << " texels need an atlas of " << this->AtlasSize[0] << " x "
-                           << this->AtlasSize[1] << ", above this OpenGL's " << largest
-                           << "; no shadows this frame (lower ShadowMapSize or "
-                              "MaximumNumberOfLights).");
+    std::ostringstream message;
+    message << "AVSM: " << this->GetNumberOfViews() << " light views of " << this->ShadowMapSize
+            << " texels need an atlas of " << this->AtlasSize[0] << " x " << this->AtlasSize[1]
+            << ", above this OpenGL's " << largest
+            << "; no shadows (lower ShadowMapSize or MaximumNumberOfLights).";
+    this->ReportError(message.str());
     this->AbandonFrame(window);
     return;
   }
-  if (!this->EnsureBuffers())
+  if (!this->EnsureBuffers(window))
   {
     this->AbandonFrame(window);
     return;
@@ -1370,17 +1384,39 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
   }
   if (!drawn)
   {
-    if (!this->ReportedTargetFailure)
-    {
-      vtkErrorMacro("AVSM: OpenGL could not allocate the "
-        << (this->Exact ? "visibility texture" : "curve or visibility textures") << " ("
-        << this->AtlasSize[0] << " x " << this->AtlasSize[1] << " texels of curves, "
-        << this->Nodes() / 2 << " RGBA32F textures); no shadows (lower ShadowMapSize, "
-        << "NumberOfNodes or MaximumNumberOfLights).");
-      this->ReportedTargetFailure = true;
-    }
+    std::ostringstream message;
+    message << "AVSM: OpenGL could not allocate the "
+            << (this->Exact ? "visibility texture" : "curve or visibility textures") << " ("
+            << this->AtlasSize[0] << " x " << this->AtlasSize[1] << " texels of curves, "
+            << this->Nodes() / 2 << " RGBA32F textures); no shadows (lower ShadowMapSize, "
+            << "NumberOfNodes or MaximumNumberOfLights).";
+    this->ReportError(message.str());
     this->AbandonFrame(window);
+    return;
   }
+  this->LastError.clear(); // (a frame with shadows: a later failure is news)
+}
+
+void vtkFXAVSMPass::ReportError(const std::string& message)
+{
+  if (message != this->LastError)
+  {
+    vtkErrorMacro(<< message);
+    this->LastError = message;
+  }
+}
+
+void vtkFXAVSMPass::ReleaseBuffers()
+{
+  if (this->Buffers[HeadsBuffer] && this->BuffersWindow)
+  {
+    this->BuffersWindow->MakeCurrent();
+    glDeleteBuffers(NumberOfBuffers, this->Buffers);
+  }
+  std::fill(this->Buffers, this->Buffers + NumberOfBuffers, 0u);
+  this->BufferTexels = 0;
+  this->Capacity = 0;
+  this->BuffersWindow = nullptr;
 }
 
 void vtkFXAVSMPass::AbandonFrame(vtkOpenGLRenderWindow* window)
@@ -1407,17 +1443,8 @@ void vtkFXAVSMPass::ReleaseGraphicsResources(vtkWindow* w)
   vtkFXRenderUtilities::Release(this->CaptureFrameBuffer, w);
   vtkFXRenderUtilities::Release(this->ResolveFrameBuffer, w);
   vtkFXRenderUtilities::Release(this->LookUpFrameBuffer, w);
-  if (this->Buffers[HeadsBuffer])
-  {
-    if (auto* window = vtkOpenGLRenderWindow::SafeDownCast(w))
-    {
-      window->MakeCurrent();
-      glDeleteBuffers(NumberOfBuffers, this->Buffers);
-    }
-    std::fill(this->Buffers, this->Buffers + NumberOfBuffers, 0u);
-    this->BufferTexels = 0;
-    this->Capacity = 0;
-  }
+  this->ReleaseBuffers();
+  this->LastError.clear();
 }
 
 void vtkFXAVSMPass::PrintSelf(ostream& os, vtkIndent indent)

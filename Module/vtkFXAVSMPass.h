@@ -13,9 +13,10 @@
  *   visible props' bounding sphere;
  * - a spot light (a cone below 89 degrees), the perspective view of its
  *   cone, from just in front of it to the far side of the props;
- * - any other positional light: outside the props' bounding sphere, one
- *   perspective view aimed at the sphere that just holds it; inside it,
- *   six perspective views of 90 degrees, the faces of a cube around it.
+ * - any other positional light: farther than sqrt(2) times the props'
+ *   bounding radius from their centre, one perspective view aimed at the
+ *   sphere that just holds it; nearer, six perspective views of 90
+ *   degrees, the faces of a cube around it.
  * The translucent props are rendered from every view. Every fragment, instead of being
  * drawn, joins its texel's linked list (shader storage buffers and an
  * atomic counter: OpenGL 4.3) as a segment along the light: a light-space
@@ -31,7 +32,9 @@
  *   per texel are kept exactly;
  * - Exact: the lists themselves are the deep shadow map; the look-up sums
  *   the optical depth of every segment in front of the receiver (the
- *   reference the AVSM is measured against).
+ *   reference the AVSM is measured against), of lists up to
+ *   30000 / (4 x casting lights) segments long (llvmpipe's loop budget;
+ *   past that, the earliest captured segments of a list are left out).
  * Segments are inserted in order (of entry depth, then optical depth, then
  * exit depth), so the result does not depend on the order they arrived in.
  *
@@ -65,7 +68,9 @@
  * ShadowMapSize^2, 16 bytes per captured fragment plus 8 per texel (list
  * head and count); the resolve, one pass over the atlas (NumberOfNodes x 8
  * bytes per texel kept) that reads each texel's list about n^2 / 4 times
- * for n segments (in order, four per walk; at most 64 inserted exactly)
+ * for n segments (in order, four per walk; at most 64 inserted exactly,
+ * the rest summed into one last segment; of lists over 15000 segments the
+ * rest is left out, llvmpipe's loop budget again)
  * and inserts each segment into the curve; the look-up, one full-resolution pass of 1 (4
  * bilinear) curve reads per casting light, or a walk of the lists (Exact).
  * A positional light without a cone inside the props costs six views.
@@ -79,6 +84,7 @@
 #include "vtkFXRenderUtilities.h" // for the full-screen quads
 #include "vtkSmartPointer.h"
 #include "vtkTimeStamp.h" // for the shader stage time
+#include "vtkWeakPointer.h" // for the buffers' window
 #include "vtkWrappingHints.h" // for VTK_WRAPEXCLUDE
 
 #include <string>
@@ -166,8 +172,8 @@ public:
 
   /**
    * Lights that cast at most (1..4, default 1: the brightest; each costs
-   * one view, six for a positional light without a cone within the
-   * visible props' bounding sphere).
+   * one view, six for a positional light without a cone within sqrt(2)
+   * times the visible props' bounding radius).
    */
   vtkSetClampMacro(MaximumNumberOfLights, int, 1, 4);
   vtkGetMacro(MaximumNumberOfLights, int);
@@ -186,7 +192,9 @@ public:
 
   /**
    * Fragments the list buffer holds, per shadow-map texel, before it first
-   * grows (1..1024, default 4); never more than GetCapacityLimit().
+   * grows (1..1024, default 4); never more than GetCapacityLimit(). The
+   * buffer grows for the frames that need more and does not shrink until
+   * ReleaseGraphicsResources.
    */
   vtkSetClampMacro(InitialNodesPerTexel, int, 1, 1024);
   vtkGetMacro(InitialNodesPerTexel, int);
@@ -202,8 +210,7 @@ public:
   vtkGetMacro(Capacity, vtkIdType);
   /**
    * The longest list of the last capture, in fragments (what the exact
-   * look-up of translucent receivers walks; at most 30000 / (4 x casting
-   * lights)).
+   * look-up walks; at most 30000 / (4 x casting lights)).
    */
   vtkGetMacro(LongestList, vtkIdType);
   /**
@@ -352,7 +359,7 @@ protected:
   void AddView(const double position[3], const double direction[3], vtkMatrix4x4* projection,
     bool perspective, const double nearFar[2]);
   void ComputeCasterDepthRange(LightView& view) const; // its SliceRange
-  bool EnsureBuffers();
+  bool EnsureBuffers(vtkOpenGLRenderWindow* window);
   // Texel (x, y) of an RGBA32F texture, by downloading it (GetTexelCurve's
   // way without GL 4.5's glGetTextureSubImage).
   static bool ReadTexel(vtkTextureObject* texture, int x, int y, float texel[4]);
@@ -384,7 +391,6 @@ protected:
   bool Bilinear = true;
   double Bias = 1e-3;
   double BoundingDiameter = 2.0; // this frame's visible props' (FitLightViews)
-  bool ReportedTargetFailure = false;
   double SplatRadius = 1.7320508075688772;
   int MaximumNumberOfLights = 1;
   int InitialNodesPerTexel = 4;
@@ -395,7 +401,15 @@ protected:
   vtkIdType CapacityLimit = 0;
   vtkIdType StoredFragments = 0; // nodes this frame's lists hold
   bool WarnedOverflow = false;
-  bool ReportedAllocationFailure = false;
+  // The last error reported: each is said once, again only after a frame
+  // that drew shadows (an error per frame would flood the output window).
+  std::string LastError;
+  void ReportError(const std::string& message);
+  // The context the storage buffers (bare GL names) were made in, so that
+  // the destructor can free them (vtkRenderer::SetPass does not release
+  // the pass it replaces).
+  vtkWeakPointer<vtkOpenGLRenderWindow> BuffersWindow;
+  void ReleaseBuffers();
   bool Profile = false;
   bool TranslucentReceivers = true;
   bool Receiving = false; // between Begin- and EndForwardShading

@@ -10,9 +10,9 @@
 //   radius fxSplatRadius in the splat's scale units, centred on the splat
 //   (seed 003's particles): the fragment whose ray passes at distance d
 //   from the centre (its offset on the light-facing triangle in an
-//   orthographic view; in a perspective one the offset's part across the
-//   ray from the light, d^2 = |o|^2 - (o . p)^2 / |p|^2 for the point p of
-//   the triangle) is the chord of half-length r sqrt(1 - d^2 / R^2) around the splat's depth
+//   orthographic view; in a perspective one, where VTK turns the triangle
+//   to face the light, d^2 = |o|^2 |c|^2 / (|c|^2 + |o|^2) for the centre c
+//   seen from the light) is the chord of half-length r sqrt(1 - d^2 / R^2) around the splat's depth
 //   (its extent along the view's axis: fxSplatScale carries the cosine to
 //   the axis for a spot or point light's view),
 //   and its optical depth is the centre chord's, -ln(1 - a_centre), times
@@ -35,9 +35,11 @@
     float fxD2 = dot(offsetVCVSOutput, offsetVCVSOutput);
     if (fxAVSMPerspective != 0)
     {
-      vec3 fxOnTriangle = fxSplatCenterVSOutput + vec3(offsetVCVSOutput, 0.0);
-      float fxAlong = dot(offsetVCVSOutput, fxOnTriangle.xy);
-      fxD2 -= fxAlong * fxAlong / max(dot(fxOnTriangle, fxOnTriangle), 1e-30);
+      // VTK's triangle faces the light: the offset o is at right angles
+      // to the centre c (both from the light), and the ray through c + o
+      // passes c at |o| |c| / |c + o|.
+      float fxC2 = dot(fxSplatCenterVSOutput, fxSplatCenterVSOutput);
+      fxD2 *= fxC2 / max(fxC2 + fxD2, 1e-30);
     }
     fxD2 /= fxSplatRadius * fxSplatRadius;
     fxShare = sqrt(max(1.0 - fxD2, 0.0));

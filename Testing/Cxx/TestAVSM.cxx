@@ -255,13 +255,13 @@ vtkSmartPointer<vtkActor> Splats(
 // and the chord is along the ray from the light: its distance d from the
 // splat's centre takes rho's place (the axial factor of perspective views).
 int CheckSplatSphere(vtkRenderWindow* window, bool exact, double height,
-  double spotHeight = 0.0, double cone = 60.0, int mapSize = 2048)
+  double spotHeight = 0.0, double cone = 60.0, int mapSize = 2048, double splatX = 0.0)
 {
   auto avsm = MakeAVSM(8, exact, true);
   avsm->SetShadowMapSize(mapSize);
   const double R = avsm->GetSplatRadius();
   const auto v = Visibility(
-    window, avsm, { Splats({ { 0.0, 0.0, height } }, 1.0, 0.5) }, true, 1, spotHeight, cone);
+    window, avsm, { Splats({ { splatX, 0.0, height } }, 1.0, 0.5) }, true, 1, spotHeight, cone);
   FX_CHECK(v.size() == static_cast<size_t>(Width) * Height, "no visibility");
   const double fraction = height > 0.0 ? 1.0 : 0.5;
   const double unitsPerPixel = 8.0 / Height; // parallel scale 4
@@ -276,11 +276,11 @@ int CheckSplatSphere(vtkRenderWindow* window, bool exact, double height,
       double rho = std::sqrt(px * px + py * py);
       if (spotHeight > 0.0)
       {
-        // Distance from the centre (0, 0, height) to the ray from the light
-        // (0, 0, spotHeight) to the ground point (px, py, 0).
+        // Distance from the centre (splatX, 0, height) to the ray from the
+        // light (0, 0, spotHeight) to the ground point (px, py, 0).
         double u[3] = { px, py, -spotHeight };
         vtkMath::Normalize(u);
-        const double w[3] = { 0.0, 0.0, height - spotHeight };
+        const double w[3] = { splatX, 0.0, height - spotHeight };
         const double along = vtkMath::Dot(w, u);
         rho = std::sqrt(std::max(0.0, vtkMath::Dot(w, w) - along * along));
       }
@@ -303,6 +303,7 @@ int CheckSplatSphere(vtkRenderWindow* window, bool exact, double height,
   std::cout << "splat sphere (" << (exact ? "exact" : "AVSM-8") << ", ground "
             << (height > 0.0 ? "below" : "through the centre")
             << (spotHeight <= 0.0 ? "" : cone < 90.0 ? ", spot light" : ", point light")
+            << (splatX != 0.0 ? ", off the light's axis" : "")
             << "): centre " << centre << ", largest error " << worst << " at (" << worstX << ", " << worstY << ") d/R " << worstRho / R << ": " << worstGot << " against " << worstWant << std::endl;
   FX_CHECK(worst < (height > 0.0 ? 1e-3 : 0.01), "splat sphere's shadow off by " << worst);
   return EXIT_SUCCESS;
@@ -1033,6 +1034,11 @@ int TestAVSM(int, char*[])
       "splat under a spot light");
     FX_CHECK(CheckSplatSphere(window, false, 3.0, 10.0, 90.0, 1024) == EXIT_SUCCESS,
       "splat under a point light");
+    // 27 degrees off the spot's axis: the splat's triangle faces the light,
+    // not the view's axis, so a fragment's offset is across the ray from
+    // the light (its shadow is the same circle's, stretched on the ground).
+    FX_CHECK(CheckSplatSphere(window, false, 4.0, 8.0, 60.0, 2048, 2.0) == EXIT_SUCCESS,
+      "splat off a spot light's axis");
   }
   FX_CHECK(CheckSplatsShadowEachOther(window) == EXIT_SUCCESS, "splat self-shadowing");
   FX_CHECK(CheckArrivalOrder(window) == EXIT_SUCCESS, "order independence");
