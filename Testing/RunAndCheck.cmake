@@ -3,6 +3,9 @@
 #         [-DEXPECT_FILE=path] -P RunAndCheck.cmake
 # ("|" separates arguments, since CTest would split a ";" list.)
 string(REPLACE "|" ";" command "${COMMAND}")
+if (DEFINED EXPECT_FILE)
+  file(REMOVE "${EXPECT_FILE}") # (one left by an earlier run proves nothing)
+endif ()
 execute_process(COMMAND ${command} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}${err}")
 if (NOT rc STREQUAL "${EXPECT_RESULT}")

@@ -399,11 +399,13 @@ int CheckFandiskCreases(vtkRenderWindow* window)
   }
   std::cout << "fandisk: " << object << " interior pixels, " << withCreases
             << " on lines with creases, " << withoutCreases << " without; of the " << added
-            << " the creases add, " << addedNearCreases << " within 2 px of a crease (a zone of "
+            << " the creases add, " << addedNearCreases << " within 2.5 px of a crease (a zone of "
             << nearArea << " pixels, " << 100.0 * nearArea / std::max(object, 1)
             << "% of the interior's size)" << std::endl;
   FX_CHECK(nearArea < object / 2, "the crease zone covers " << nearArea << " pixels: no test");
-  FX_CHECK(added > 300 && addedNearCreases >= 0.95 * added,
+  // (measured: all of them; the zone is every pixel whose centre lies
+  // within 2.5 px of the side between the two pixels of a crease)
+  FX_CHECK(added > 300 && addedNearCreases >= 0.99 * added,
     "crease lines off the creases: " << addedNearCreases << " of " << added << " near one");
   FX_CHECK(object > 10000, "the fandisk covers " << object << " interior pixels");
   FX_CHECK(withCreases > 300 && withCreases > 2 * withoutCreases + 100,
@@ -635,14 +637,16 @@ int CheckScaleInvariance(vtkRenderWindow* window)
     {
       const auto image = RenderMoved(window, v.Scale, v.Offset, parallel, v.NearRatio);
       const double psnr = vtkFXScenes::PSNR(base, image);
+      const int difference = vtkFXScenes::MaxDifference(base, image);
       std::cout << "toon bunny " << (parallel ? "parallel" : "perspective") << ", " << v.Name
-                << ": PSNR " << psnr << " dB" << std::endl;
-      // The same image up to rounding: measured identical (inf) scaled
-      // and translated, 54.8 dB with near/far 1e-6 in perspective.
-      failures += psnr >= 50.0 ? 0 : 1;
+                << ": PSNR " << psnr << " dB, largest difference " << difference << std::endl;
+      // Scaled and translated: the same bytes (measured); near/far 1e-6,
+      // the same image up to rounding (54.8 dB in perspective).
+      const bool rounding = v.NearRatio > 0.0;
+      failures += (rounding ? psnr >= 50.0 : difference == 0) ? 0 : 1;
     }
   }
-  FX_CHECK(failures == 0, failures << " variant(s) below 50 dB");
+  FX_CHECK(failures == 0, failures << " variant(s) not identical (scale, translation) or below 50 dB (near/far)");
 
   // In parallel projection, the camera moved 1000 times as far back (its
   // parallel scale kept) shows the same image, lines included.
