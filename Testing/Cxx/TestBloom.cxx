@@ -3,7 +3,7 @@
 //   resolution texture summed, times 4) equals the emission channel's
 //   total within 2% (every filter of the pyramid is normalised; the rest is
 //   half-float rounding and bilinear reads at the object's rim), and the
-//   8-bit image gains Intensity times that total within 10% (glow below
+//   8-bit image gains Intensity times that total within 5% (glow below
 //   half a level rounds away far out);
 // - no emission and no threshold: the effect is left out, with the HDR
 //   target and the emission channel, and the image is bit-identical to
@@ -173,7 +173,7 @@ double GlowTotal(vtkFXBloomPass* bloom)
 }
 
 // Energy kept: the glow's total equals the emission's (firefly
-// suppression off), and the image gains Intensity times it (8-bit: 10%).
+// suppression off), and the image gains Intensity times it (8-bit: 5%).
 // Also at an odd size (the last half-resolution texel covers one column),
 // and with the emitter at the image's border, where the filters reach past
 // it (mirrored reads give away what they take).
