@@ -30,7 +30,9 @@
  *
  * Cost: one full-screen pass (a quarter of the pixels at half resolution)
  * with NumberOfSamples depth fetches per pixel, and one texture read per
- * pixel in the composite.
+ * pixel in the composite. At full resolution the G-buffer's depth test
+ * leaves out the pixels without a surface before the shader runs (not
+ * with bleeding's second target).
  */
 #ifndef vtkFXSSAOPass_h
 #define vtkFXSSAOPass_h
@@ -143,6 +145,16 @@ public:
   vtkBooleanMacro(HalfResolution, bool);
 
   /**
+   * At full resolution, leave the pixels without a surface out before the
+   * shader runs, by the G-buffer's depth test (default on; a software
+   * rasteriser otherwise runs the shader on every background block). The
+   * result is the same either way; off is for comparison.
+   */
+  vtkSetMacro(SkipBackground, bool);
+  vtkGetMacro(SkipBackground, bool);
+  vtkBooleanMacro(SkipBackground, bool);
+
+  /**
    * The samples the estimator takes: NumberOfSamples, rounded up to a
    * multiple of 3 (at most 63) by vtkFXDirectionalOcclusionPass.
    */
@@ -206,6 +218,7 @@ protected:
   int Falloff = Binary;
   double Bias = 0.02;
   bool HalfResolution = true;
+  bool SkipBackground = true;
   double EffectiveRadius = 0.0;
   bool WarnedIncomplete = false; // the occlusion texture could not be made (said once)
   int Channels = 1; // values the estimator writes per texel: 1 or 3

@@ -18,6 +18,7 @@
 // - every value of every float read-back texture is finite, >= 0 and at
 //   most 1 (hemisphere) or pi/2 (horizon, before averaging over slices), at full
 //   and half resolution, blurred or not.
+#include "vtkFXDirectionalOcclusionPass.h"
 #include "vtkFXBilateralBlurPass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
@@ -430,6 +431,47 @@ int TestSSAO(int, char*[])
     std::cout << "  noise tile left by a blur of radius 2 (mean |v(x) - v(x + 2)|): Gaussian "
               << tileResidual[0] << ", box " << tileResidual[1] << std::endl;
     FX_CHECK(tileResidual[1] < 0.5 * tileResidual[0], "the box kernel cancels the noise tile");
+  }
+
+  // 5. At full resolution the pass skips the pixels without a surface
+  // (SkipBackground): the raw occlusion is bit for bit the same as with
+  // every pixel shaded, for both estimators, one channel and three
+  // (directional occlusion), over a plane that leaves background in view.
+  for (int method : { vtkFXSSAOPass::Hemisphere, vtkFXSSAOPass::Horizon })
+  for (bool directional : { false, true })
+  {
+    std::vector<float> raw[2];
+    for (bool skip : { true, false })
+    {
+      Setup s = MakeSetup(window);
+      ViewPlane(s, 10.0);
+      if (directional)
+      {
+        s.Pipeline->DirectionalOcclusionOn();
+      }
+      vtkFXSSAOPass* pass = directional
+        ? static_cast<vtkFXSSAOPass*>(s.Pipeline->GetDirectionalOcclusionPass())
+        : s.Pipeline->GetSSAOPass();
+      pass->SetMethod(method);
+      pass->SetRadius(radius);
+      pass->SetHalfResolution(false);
+      pass->SetSkipBackground(skip);
+      window->Render();
+      // (one value and its depth, or three packed with normal and depth)
+      raw[skip ? 0 : 1] = vtkFXTest::Download(pass->GetOutputTexture(), directional ? 4 : 2);
+    }
+    size_t background = 0;
+    const size_t stride = directional ? 4 : 2;
+    for (size_t i = 0; i + stride - 1 < raw[1].size(); i += stride)
+    {
+      background += raw[1][i + stride - 1] > 0.0f ? 0 : 1; // the depth rides along, last
+    }
+    std::cout << "full resolution, " << (directional ? "directional, " : "")
+              << (method == vtkFXSSAOPass::Horizon ? "horizon" : "hemisphere") << ": "
+              << background << " background texels; skipped and shaded "
+              << (raw[0] == raw[1] ? "identical" : "differ") << std::endl;
+    FX_CHECK(!raw[0].empty() && raw[0] == raw[1] && background > 1000,
+      "SkipBackground changed the occlusion (or no background was in view)");
   }
   return EXIT_SUCCESS;
 }
