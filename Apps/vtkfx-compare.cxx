@@ -20,6 +20,12 @@ int main(int argc, char* argv[])
     std::cerr << "usage: vtkfx-compare A.png B.png [--min-psnr DB]\n";
     return 2;
   }
+  double minimum = 0.0;
+  if (argc == 5 && !vtkFXArguments::ParseInRange(argv[4], -1e6, 1e6, minimum))
+  {
+    std::cerr << "vtkfx-compare: bad --min-psnr '" << argv[4] << "' (a number of dB)\n";
+    return 2;
+  }
   std::vector<unsigned char> a, b;
   int sa[2], sb[2];
   for (int i = 1; i <= 2; ++i)
@@ -43,12 +49,6 @@ int main(int argc, char* argv[])
   }
   const double psnr = vtkFXScenes::PSNR(a, b);
   std::cout << "PSNR " << psnr << " dB, largest difference " << maxDiff << "/255\n";
-  double minimum = 0.0;
-  if (argc == 5 && !vtkFXArguments::ParseInRange(argv[4], -1e6, 1e6, minimum))
-  {
-    std::cerr << "vtkfx-compare: bad --min-psnr '" << argv[4] << "' (a number of dB)\n";
-    return 2;
-  }
   if (argc == 5 && psnr < minimum)
   {
     std::cerr << "vtkfx-compare: PSNR below " << argv[4] << " dB\n";

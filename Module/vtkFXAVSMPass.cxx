@@ -633,7 +633,6 @@ bool vtkFXAVSMPass::EnsureBuffers(vtkOpenGLRenderWindow* window)
   if (this->Buffers[HeadsBuffer] && this->BuffersWindow != window)
   {
     this->ReleaseBuffers(); // (made in another window's context)
-    window->MakeCurrent();
   }
   if (!this->Buffers[HeadsBuffer])
   {
@@ -1288,6 +1287,7 @@ bool vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
 void vtkFXAVSMPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
+  this->ErrorThisFrame = false;
   vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   if (!this->GBuffer || !this->GBuffer->GetChannelTexture(GB::LinearDepth) ||
@@ -1394,11 +1394,15 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
     this->AbandonFrame(window);
     return;
   }
-  this->LastError.clear(); // (a frame with shadows: a later failure is news)
+  if (!this->ErrorThisFrame)
+  {
+    this->LastError.clear(); // (a frame without trouble: a later failure is news)
+  }
 }
 
 void vtkFXAVSMPass::ReportError(const std::string& message)
 {
+  this->ErrorThisFrame = true;
   if (message != this->LastError)
   {
     vtkErrorMacro(<< message);
@@ -1410,8 +1414,10 @@ void vtkFXAVSMPass::ReleaseBuffers()
 {
   if (this->Buffers[HeadsBuffer] && this->BuffersWindow)
   {
-    this->BuffersWindow->MakeCurrent();
+    // (in their own context, then back to whichever was current)
+    this->BuffersWindow->PushContext();
     glDeleteBuffers(NumberOfBuffers, this->Buffers);
+    this->BuffersWindow->PopContext();
   }
   std::fill(this->Buffers, this->Buffers + NumberOfBuffers, 0u);
   this->BufferTexels = 0;

@@ -402,8 +402,9 @@ protected:
   vtkIdType StoredFragments = 0; // nodes this frame's lists hold
   bool WarnedOverflow = false;
   // The last error reported: each is said once, again only after a frame
-  // that drew shadows (an error per frame would flood the output window).
+  // without one (an error per frame would flood the output window).
   std::string LastError;
+  bool ErrorThisFrame = false;
   void ReportError(const std::string& message);
   // The context the storage buffers (bare GL names) were made in, so that
   // the destructor can free them (vtkRenderer::SetPass does not release

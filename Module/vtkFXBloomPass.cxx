@@ -108,8 +108,10 @@ void vtkFXBloomPass::ReleaseSampler()
 {
   if (this->LinearSampler && this->SamplerWindow)
   {
-    this->SamplerWindow->MakeCurrent();
+    // (in its own context, then back to whichever was current)
+    this->SamplerWindow->PushContext();
     glDeleteSamplers(1, &this->LinearSampler);
+    this->SamplerWindow->PopContext();
   }
   this->LinearSampler = 0;
   this->SamplerWindow = nullptr;
@@ -470,7 +472,6 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
   if (this->LinearSampler && this->SamplerWindow != window)
   {
     this->ReleaseSampler(); // (made in another window's context)
-    window->MakeCurrent();
   }
   if (!this->LinearSampler)
   {

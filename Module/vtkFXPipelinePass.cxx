@@ -851,13 +851,19 @@ void vtkFXPipelinePass::Render(const vtkRenderState* s)
 {
   vtkRenderer* renderer = s->GetRenderer();
   vtkRenderWindow* window = renderer->GetRenderWindow();
-  if (this->LastWindow && this->LastWindow != window)
+  const bool moved = this->LastWindow && this->LastWindow != window;
+  if (moved)
   {
     // GL objects belong to one context (framebuffers and vertex arrays are
     // never shared): moved to another window, the pipeline starts afresh.
     this->ReleaseGraphicsResources(this->LastWindow);
+    window->MakeCurrent();
+    ++this->WindowChanges;
   }
-  if (this->LastRenderer && this->LastRenderer != renderer && !this->WarnedSharedPipeline)
+  // (a renderer of another window: a move, once; back and forth, sharing)
+  const bool shared = moved ? this->WindowChanges > 1
+                            : this->LastRenderer && this->LastRenderer != renderer;
+  if (shared && !this->WarnedSharedPipeline)
   {
     vtkWarningMacro("This vtkFXPipelinePass renders for more than one renderer: its buffers "
                     "follow the last one, so each render reallocates them. Give each renderer "

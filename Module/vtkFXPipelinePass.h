@@ -277,6 +277,7 @@ protected:
   vtkWeakPointer<vtkWindow> LastWindow; // to release effects removed between frames
   vtkWeakPointer<vtkRenderer> LastRenderer; // one renderer per pipeline (warned otherwise)
   bool WarnedSharedPipeline = false;
+  int WindowChanges = 0; // windows it moved to
   vtkFXSceneInfo LastScene;
   std::vector<std::string> LastPasses;
   std::string ScheduleProblems;

@@ -285,6 +285,7 @@ void vtkFXSSAOPass::SetKernelUniforms(vtkShaderProgram* program) const
 void vtkFXSSAOPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
+  this->SkippedBackground = false;
   vtkRenderer* ren = s->GetRenderer();
   vtkTextureObject* depth = this->GBuffer ? this->GBuffer->GetChannelTexture(GB::LinearDepth) : nullptr;
   vtkTextureObject* normal = this->GBuffer ? this->GBuffer->GetGeometricNormalTexture() : nullptr;
@@ -366,7 +367,7 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   {
     return;
   }
-  target.SkipWhereDepthIsOne(surfaces);
+  this->SkippedBackground = target.SkipWhereDepthIsOne(surfaces);
   depth->Activate();
   normal->Activate();
   program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());

@@ -153,6 +153,8 @@ public:
   vtkSetMacro(SkipBackground, bool);
   vtkGetMacro(SkipBackground, bool);
   vtkBooleanMacro(SkipBackground, bool);
+  /** Whether the last frame left the background out (see SkipBackground). */
+  vtkGetMacro(SkippedBackground, bool);
 
   /**
    * The samples the estimator takes: NumberOfSamples, rounded up to a
@@ -219,6 +221,7 @@ protected:
   double Bias = 0.02;
   bool HalfResolution = true;
   bool SkipBackground = true;
+  bool SkippedBackground = false;
   double EffectiveRadius = 0.0;
   bool WarnedIncomplete = false; // the occlusion texture could not be made (said once)
   int Channels = 1; // values the estimator writes per texel: 1 or 3

@@ -1,12 +1,13 @@
 # Renders INPUT with vtkfx-render through vtkFX (--effects none) and with
 # --plain-vtk, then requires PSNR >= MIN_PSNR between them, and checks that
 # the --stats JSON names the passes that ran and the G-buffer's size.
-#   cmake -DRENDER=... -DCOMPARE=... -DINPUT=... -DOUT=dir -DMIN_PSNR=40 -P CompareRenders.cmake
+#   cmake -DRENDER=... -DCOMPARE=... -DINPUT=... -DOUT=dir -DMIN_PSNR=50 -P CompareRenders.cmake
 get_filename_component(name "${INPUT}" NAME_WE)
 string(REPLACE ":" "_" name "${name}")
 set(fx "${OUT}/${name}-vtkfx.png")
 set(vtk "${OUT}/${name}-vtk.png")
 set(stats "${OUT}/${name}-stats.json")
+file(REMOVE "${fx}" "${vtk}" "${stats}") # (an earlier run's files prove nothing)
 execute_process(COMMAND "${RENDER}" "${INPUT}" --size 400x300 --effects none --frames 3
   --out "${fx}" --stats "${stats}" RESULT_VARIABLE rc)
 if (NOT rc EQUAL 0)

@@ -12,6 +12,8 @@
 //   without the HDR target;
 // - emission above 1 is kept in a float channel and survives, through the
 //   HDR target, a post-process that halves the image.
+#include "vtkFXAVSMPass.h"
+#include "vtkFXBloomPass.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXEffectPass.h"
 #include "vtkFXGBufferPass.h"
@@ -914,7 +916,18 @@ int TestHDRRobustness()
 // warns once.
 int TestPipelineOwner()
 {
+  // (with bloom, whose sampler, and AVSM, whose storage buffers, are bare
+  // GL names of one context)
+  const auto withEffects = [](vtkFXPipelinePass* pipeline) {
+    vtkNew<vtkFXBloomPass> bloom;
+    bloom->SetThreshold(0.5);
+    pipeline->AddEffect("bloom", bloom);
+    vtkNew<vtkFXAVSMPass> avsm;
+    pipeline->AddEffect("avsm", avsm);
+  };
   vtkNew<vtkFXPipelinePass> moving;
+  withEffects(moving);
+  vtkFXTest::EventCounter moveWarnings(moving, vtkCommand::WarningEvent);
   std::vector<unsigned char> images[2];
   // (both windows live on: the pipeline moves between two contexts)
   vtkSmartPointer<vtkRenderWindow> windows[2] = { vtkFXTest::MakeWindow(200, 150),
@@ -925,7 +938,7 @@ int TestPipelineOwner()
     vtkNew<vtkRenderer> renderer;
     window->AddRenderer(renderer);
     std::string error;
-    FX_CHECK(vtkFXScenes::Populate(renderer, "scene:corner", vtkFXScenes::Options(), error), error);
+    FX_CHECK(vtkFXScenes::Populate(renderer, "scene:mixed", vtkFXScenes::Options(), error), error);
     vtkFXTest::ErrorCounter errors(moving);
     renderer->SetPass(moving);
     window->Render();
@@ -936,9 +949,13 @@ int TestPipelineOwner()
     images[w] = vtkFXScenes::Capture(window);
     FX_CHECK(glError == GL_NO_ERROR, "GL error " << glError << " in window " << w);
     FX_CHECK(errors.Count == 0, "the pipeline in window " << w << ": " << errors.Last);
+    const std::string passes = vtkFXTest::Passes(moving);
+    FX_CHECK(passes.find("bloom") != std::string::npos && passes.find("avsm") != std::string::npos,
+      "window " << w << " ran " << passes);
     if (w == 1)
     {
       vtkNew<vtkFXPipelinePass> fresh;
+      withEffects(fresh);
       renderer->SetPass(fresh);
       window->Render();
       const auto expected = vtkFXScenes::Capture(window);
@@ -950,6 +967,7 @@ int TestPipelineOwner()
     renderer->SetPass(nullptr);
   }
   FX_CHECK(images[0] == images[1], "the same scene in two windows of one size");
+  FX_CHECK(moveWarnings.Count == 0, "a pipeline moved once warned: " << moveWarnings.Last);
   // Two renderers of one window, one pipeline: one warning over frames.
   auto window = vtkFXTest::MakeWindow(200, 150);
   vtkNew<vtkRenderer> left, right;

@@ -457,6 +457,8 @@ int TestSSAO(int, char*[])
       pass->SetHalfResolution(false);
       pass->SetSkipBackground(skip);
       window->Render();
+      FX_CHECK(pass->GetSkippedBackground() == skip, "the background was " << (skip ? "not " : "")
+        << "skipped");
       // (one value and its depth, or three packed with normal and depth)
       raw[skip ? 0 : 1] = vtkFXTest::Download(pass->GetOutputTexture(), directional ? 4 : 2);
     }
