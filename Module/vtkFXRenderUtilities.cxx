@@ -330,6 +330,33 @@ vtkFXRenderUtilities::RenderTargetScope::~RenderTargetScope()
   this->State->PopFramebufferBindings();
 }
 
+bool vtkFXRenderUtilities::DrawDepthMask(vtkOpenGLRenderWindow* window,
+  vtkSmartPointer<vtkTextureObject>& mask, vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
+  FullScreenQuad& quad, int width, int height, const std::string& fragmentShader,
+  const std::function<void(vtkShaderProgram*)>& setUniforms)
+{
+  EnsureTexture(mask, window, width, height, Depth32F);
+  if (!MakeDepthOnlyFramebuffer(framebuffer, window, mask))
+  {
+    return false;
+  }
+  // (the scope saves and restores the framebuffer, viewport and depth
+  // state; its framebuffer keeps the mask as its depth)
+  RenderTargetScope target(window, framebuffer, width, height);
+  vtkShaderProgram* program = ReadyQuad(quad, window, fragmentShader);
+  if (!program)
+  {
+    return false;
+  }
+  vtkOpenGLState* state = window->GetState();
+  state->vtkglEnable(GL_DEPTH_TEST); // (depth is written only with the test on)
+  state->vtkglDepthFunc(GL_ALWAYS);
+  state->vtkglDepthMask(GL_TRUE);
+  setUniforms(program);
+  quad.Helper->Render();
+  return true;
+}
+
 bool vtkFXRenderUtilities::RenderTargetScope::SkipWhereDepthIsOne(vtkTextureObject* depth)
 {
   if (!depth || static_cast<int>(depth->GetWidth()) != this->Size[0] ||

@@ -16,6 +16,7 @@
 #include "vtkOpenGLState.h" // for the scoped state of RenderTargetScope
 #include "vtkSmartPointer.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -287,6 +288,20 @@ public:
     vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunc;
     vtkOpenGLState::ScopedglDepthMask DepthMask;
   };
+
+  /**
+   * Draws a depth mask for RenderTargetScope::SkipWhereDepthIsOne: `mask`
+   * (made a width x height Depth32F texture here) takes, at every texel,
+   * the depth `fragmentShader` writes to gl_FragDepth (0 where a later pass
+   * must run, 1 where it need not), drawn with a full-screen `quad` into
+   * `framebuffer`. `setUniforms` sets the shader's uniforms (its textures
+   * activated by the caller). State comes back as it was. Returns false
+   * when the framebuffer or the shader cannot be made.
+   */
+  static bool DrawDepthMask(vtkOpenGLRenderWindow* window, vtkSmartPointer<vtkTextureObject>& mask,
+    vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer, FullScreenQuad& quad, int width,
+    int height, const std::string& fragmentShader,
+    const std::function<void(vtkShaderProgram*)>& setUniforms);
 
 protected:
   vtkFXRenderUtilities() = default;

@@ -6,6 +6,7 @@
 #include "vtkFXViewPosition.h"
 #include "vtkFXRenderUtilities.h"
 #include "vtkFXSSAOFS.h"
+#include "vtkFXSurfaceMaskFS.h"
 
 #include "vtkCamera.h"
 #include "vtkMath.h"
@@ -323,6 +324,23 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   std::vector<vtkTextureObject*> targets = { this->Occlusion };
   this->AddExtensionTargets(ren, static_cast<int>(this->Occlusion->GetWidth()),
     static_cast<int>(this->Occlusion->GetHeight()), targets);
+  // The pixels without a surface are left out before the shader runs (a
+  // software rasteriser skips their 4x4 blocks; 16% of the pass at
+  // 1280x720 on the bunny): at full resolution by the G-buffer's depth, at
+  // half by a mask of this resolution. They keep the open value the shader
+  // would write. (With a second target, bleeding, every pixel runs: its
+  // background value is not the clear's.)
+  vtkTextureObject* surfaces = nullptr;
+  if (this->SkipBackground && targets.size() == 1)
+  {
+    surfaces = step == 1 ? this->GBuffer->GetDepthTexture()
+                         : this->MakeSurfaceMask(window, depth, step) ? this->SurfaceMask.Get()
+                                                                     : nullptr;
+  }
+  if (!surfaces || step == 1)
+  {
+    this->ReleaseSurfaceMask(window);
+  }
   vtkFXRenderUtilities::RenderTargetScope target(window, this->FrameBuffer, targets);
   if (!target.IsComplete())
   {
@@ -338,14 +356,6 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
     vtkFXRenderUtilities::Release(this->Occlusion, window);
     return;
   }
-  // At full resolution the G-buffer's depth leaves out the pixels without
-  // a surface before the shader runs (a software rasteriser skips their
-  // 4x4 blocks; 16% of the pass at 1280x720 on the bunny): they keep the
-  // open value the shader would write. (With a second target, bleeding,
-  // every pixel runs: its background value is not the clear's.)
-  vtkTextureObject* surfaces = this->SkipBackground && step == 1 && targets.size() == 1
-    ? this->GBuffer->GetDepthTexture()
-    : nullptr;
   this->Quad.AtFarPlane = surfaces != nullptr;
   vtkShaderProgram* program =
     vtkFXRenderUtilities::ReadyQuad(this->Quad, window, fs);
@@ -394,8 +404,35 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   normal->Deactivate();
 }
 
+bool vtkFXSSAOPass::MakeSurfaceMask(
+  vtkOpenGLRenderWindow* window, vtkTextureObject* depth, int step)
+{
+  const int size[2] = { static_cast<int>(this->Occlusion->GetWidth()),
+    static_cast<int>(this->Occlusion->GetHeight()) };
+  const int full[2] = { static_cast<int>(depth->GetWidth()), static_cast<int>(depth->GetHeight()) };
+  depth->Activate();
+  const bool made = vtkFXRenderUtilities::DrawDepthMask(window, this->SurfaceMask,
+    this->SurfaceMaskFrameBuffer, this->SurfaceMaskQuad, size[0], size[1], vtkFXSurfaceMaskFS,
+    [&](vtkShaderProgram* program) {
+      program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());
+      program->SetUniform2i("fxGBufferSize", full);
+      program->SetUniformi("fxStep", step);
+    });
+  depth->Deactivate();
+  return made;
+}
+
+void vtkFXSSAOPass::ReleaseSurfaceMask(vtkWindow* window)
+{
+  // (the framebuffer holds the texture while it is attached: both go)
+  vtkFXRenderUtilities::ReleaseQuad(this->SurfaceMaskQuad, window);
+  vtkFXRenderUtilities::Release(this->SurfaceMask, window);
+  vtkFXRenderUtilities::Release(this->SurfaceMaskFrameBuffer, window);
+}
+
 void vtkFXSSAOPass::ReleaseGraphicsResources(vtkWindow* w)
 {
+  this->ReleaseSurfaceMask(w);
   vtkFXRenderUtilities::ReleaseQuad(this->Quad, w);
   this->UnbindCompositeResources();
   vtkFXRenderUtilities::Release(this->Occlusion, w);

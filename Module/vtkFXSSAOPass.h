@@ -30,9 +30,10 @@
  *
  * Cost: one full-screen pass (a quarter of the pixels at half resolution)
  * with NumberOfSamples depth fetches per pixel, and one texture read per
- * pixel in the composite. At full resolution the G-buffer's depth test
- * leaves out the pixels without a surface before the shader runs (not
- * with bleeding's second target).
+ * pixel in the composite. The pixels without a surface are left out
+ * before the shader runs (SkipBackground): by the G-buffer's depth test at
+ * full resolution, at half by a mask pass of one fetch per texel into a
+ * Depth32F image of the pass's size (not with bleeding's second target).
  */
 #ifndef vtkFXSSAOPass_h
 #define vtkFXSSAOPass_h
@@ -47,6 +48,7 @@
 #include <vector>
 
 class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
 class vtkRenderer;
 
 class VTKFX_EXPORT vtkFXSSAOPass : public vtkFXEffectPass
@@ -145,10 +147,11 @@ public:
   vtkBooleanMacro(HalfResolution, bool);
 
   /**
-   * At full resolution, leave the pixels without a surface out before the
-   * shader runs, by the G-buffer's depth test (default on; a software
-   * rasteriser otherwise runs the shader on every background block). The
-   * result is the same either way; off is for comparison.
+   * Leave the pixels without a surface out before the shader runs (default
+   * on; a software rasteriser otherwise runs the shader on every background
+   * block): by the G-buffer's depth test at full resolution, at half by a
+   * mask of the pass's size. The result is the same either way; off is for
+   * comparison.
    */
   vtkSetMacro(SkipBackground, bool);
   vtkGetMacro(SkipBackground, bool);
@@ -231,6 +234,12 @@ protected:
   vtkTextureObject* BoundInComposite = nullptr;
   vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;
   vtkFXRenderUtilities::FullScreenQuad Quad;
+  // At half resolution, Depth32F: 0 where a texel holds a surface (SkipBackground)
+  vtkSmartPointer<vtkTextureObject> SurfaceMask;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> SurfaceMaskFrameBuffer;
+  vtkFXRenderUtilities::FullScreenQuad SurfaceMaskQuad;
+  bool MakeSurfaceMask(vtkOpenGLRenderWindow* window, vtkTextureObject* depth, int step);
+  void ReleaseSurfaceMask(vtkWindow* window);
 
 private:
   vtkFXSSAOPass(const vtkFXSSAOPass&) = delete;

@@ -257,33 +257,18 @@ void vtkFXToonPass::ClearTileMask(vtkOpenGLRenderWindow* window, const int size[
 bool vtkFXToonPass::MakeEdgeMask(
   vtkOpenGLRenderWindow* window, vtkTextureObject* depth, const int size[2])
 {
-  vtkFXRenderUtilities::EnsureTexture(
-    this->EdgeMask, window, size[0], size[1], vtkFXRenderUtilities::Depth32F);
-  if (!vtkFXRenderUtilities::MakeDepthOnlyFramebuffer(
-        this->EdgeMaskFrameBuffer, window, this->EdgeMask))
-  {
-    return false;
-  }
   std::string fs = vtkFXToonEdgeMaskFS;
   vtkShaderProgram::Substitute(
     fs, "//VTK::System::Dec", GatherDefinesFor(this->UseTextureGather), false);
-  // (the scope saves and restores the framebuffer, viewport and depth,
-  // blend and scissor state; its framebuffer keeps the mask as its depth)
-  vtkFXRenderUtilities::RenderTargetScope target(window, this->EdgeMaskFrameBuffer, size[0], size[1]);
-  vtkShaderProgram* program = vtkFXRenderUtilities::ReadyQuad(this->EdgeMaskQuad, window, fs);
-  if (program)
-  {
-    vtkOpenGLState* state = window->GetState();
-    state->vtkglEnable(GL_DEPTH_TEST); // (depth is written only with the test on)
-    state->vtkglDepthFunc(GL_ALWAYS);
-    state->vtkglDepthMask(GL_TRUE);
-    depth->Activate();
-    program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());
-    program->SetUniform2i("fxGBufferSize", size);
-    this->EdgeMaskQuad.Helper->Render();
-    depth->Deactivate();
-  }
-  return program != nullptr;
+  depth->Activate();
+  const bool made = vtkFXRenderUtilities::DrawDepthMask(window, this->EdgeMask,
+    this->EdgeMaskFrameBuffer, this->EdgeMaskQuad, size[0], size[1], fs,
+    [&](vtkShaderProgram* program) {
+      program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());
+      program->SetUniform2i("fxGBufferSize", size);
+    });
+  depth->Deactivate();
+  return made;
 }
 
 void vtkFXToonPass::ReleaseEdgeMask(vtkWindow* window)
