@@ -61,7 +61,8 @@ int vtkFXBilateralBlurPass::OutputFormat() const
 }
 
 bool vtkFXBilateralBlurPass::RunStage(int mode, vtkRenderer* renderer,
-  vtkTextureObject* input, vtkTextureObject* output, int step, bool packed)
+  vtkTextureObject* input, vtkTextureObject* output, int step, bool packed,
+  vtkTextureObject* surfaces, const float* background)
 {
   // (packed: the input carries its guide; one value with its depth, or
   // three with their normal and depth)
@@ -82,11 +83,18 @@ bool vtkFXBilateralBlurPass::RunStage(int mode, vtkRenderer* renderer,
     vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   // One framebuffer per stage: its attachment never changes between frames.
   vtkFXRenderUtilities::RenderTargetScope target(window, this->FrameBuffers[mode], output);
+  this->Quads[mode].AtFarPlane = surfaces != nullptr;
   vtkShaderProgram* program =
     vtkFXRenderUtilities::ReadyQuad(this->Quads[mode], window, fs);
   if (!program)
   {
     return false;
+  }
+  if (surfaces)
+  {
+    // Left-out texels keep what the shader would pass through there.
+    vtkFXRenderUtilities::ClearTargets(1, background);
+    target.SkipWhereDepthIsOne(surfaces);
   }
   vtkTextureObject* depth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
   vtkTextureObject* normal = this->GBuffer->GetGeometricNormalTexture();
@@ -124,6 +132,7 @@ bool vtkFXBilateralBlurPass::RunStage(int mode, vtkRenderer* renderer,
 void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
+  this->SkippedBackground = false;
   this->Result = Output();
   const Output source = this->GetInput("source");
   vtkTextureObject* input = source.Texture;
@@ -182,8 +191,19 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
       return; // no result: consumers read the unblurred source
     }
   }
-  if (!this->RunStage(HorizontalPass, s->GetRenderer(), input, this->Horizontal, step, packed) ||
-    !this->RunStage(VerticalPass, s->GetRenderer(), this->Horizontal, this->Blurred, step, packed))
+  // Background texels of one packed value with its depth pass through
+  // both passes unchanged (the shader's early return): where the source
+  // says which they are, they are left out.
+  vtkTextureObject* surfaces = this->SkipBackground && packed && this->NumberOfComponents == 1 &&
+      source.Surfaces && static_cast<int>(source.Surfaces->GetWidth()) == width &&
+      static_cast<int>(source.Surfaces->GetHeight()) == height
+    ? source.Surfaces
+    : nullptr;
+  this->SkippedBackground = surfaces != nullptr;
+  if (!this->RunStage(HorizontalPass, s->GetRenderer(), input, this->Horizontal, step, packed,
+        surfaces, source.Background) ||
+    !this->RunStage(VerticalPass, s->GetRenderer(), this->Horizontal, this->Blurred, step, packed,
+      surfaces, source.Background))
   {
     return;
   }
@@ -239,4 +259,5 @@ void vtkFXBilateralBlurPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfComponents: " << this->NumberOfComponents << "\n";
   os << indent << "Kernel: " << (this->Kernel == Box ? "Box" : "Gaussian") << "\n";
   os << indent << "Upsample: " << this->Upsample << "\n";
+  os << indent << "SkipBackground: " << this->SkipBackground << "\n";
 }

@@ -114,6 +114,19 @@ public:
   vtkGetMacro(Upsample, bool);
   vtkBooleanMacro(Upsample, bool);
 
+  /**
+   * Leave out the texels without a surface before the shader runs, where
+   * the source says which they are and what they hold (vtkFXSSAOPass's
+   * one value with its depth; Output::Surfaces), in the horizontal and
+   * vertical passes: they keep that value, as the blur would (default on).
+   * The result is the same either way; off is for comparison.
+   */
+  vtkSetMacro(SkipBackground, bool);
+  vtkGetMacro(SkipBackground, bool);
+  vtkBooleanMacro(SkipBackground, bool);
+  /** Whether the last frame left the background out. */
+  vtkGetMacro(SkippedBackground, bool);
+
   unsigned int GetRequiredChannels() override;
   bool GetReadsGeometricNormal() override { return true; }
   Output GetOutput(const char* name) override;
@@ -125,8 +138,12 @@ protected:
   vtkFXBilateralBlurPass();
   ~vtkFXBilateralBlurPass() override;
 
+  // `surfaces`, `background`: the horizontal and vertical passes leave out
+  // the texels where `surfaces` is 1, which keep `background` (nullptr:
+  // every texel runs).
   bool RunStage(int mode, vtkRenderer* renderer, vtkTextureObject* input,
-    vtkTextureObject* output, int step, bool packed);
+    vtkTextureObject* output, int step, bool packed, vtkTextureObject* surfaces = nullptr,
+    const float* background = nullptr);
   int OutputFormat() const;
 
   int Radius = 4;
@@ -135,6 +152,8 @@ protected:
   int NormalPower = 8;
   int NumberOfComponents = 1;
   bool Upsample = true;
+  bool SkipBackground = true;
+  bool SkippedBackground = false;
 
   vtkSmartPointer<vtkTextureObject> GuideTexture; // (normal, depth), RGBA32F, input resolution
   vtkSmartPointer<vtkTextureObject> Horizontal;

@@ -177,6 +177,12 @@ public:
     // and 2, 12 bits each, G = value 3, B = octahedral normal, 12 bits a
     // coordinate, A = depth; vtkFXNormalCoding.glsl's fxPack12).
     int Packing = 0;
+    // Where the G-buffer has no surface, when the producer left those
+    // texels out: a depth texture of the output's size, 1 there
+    // (RenderTargetScope::SkipWhereDepthIsOne), and the value every such
+    // texel holds; nullptr when not known.
+    vtkTextureObject* Surfaces = nullptr;
+    float Background[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
   };
 
   ///@{

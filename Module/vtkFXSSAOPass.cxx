@@ -99,8 +99,30 @@ vtkFXEffectPass::Output vtkFXSSAOPass::GetOutput(const char* name)
     output.Format = this->GetOcclusionFormat();
     output.DepthComponent = this->Channels == 3 ? 3 : 1;
     output.Packing = this->Channels == 3 ? 1 : 0;
+    if (this->SkippedBackground)
+    {
+      output.Surfaces = this->SkippedSurfaces;
+      this->GetOpenValue(output.Background);
+    }
   }
   return output;
+}
+
+void vtkFXSSAOPass::GetOpenValue(float value[4]) const
+{
+  // What the shader writes where there is no surface. (The horizon
+  // method's channels are stored as (v + 0.5) / 2: open is 0.75.)
+  if (this->Channels != 3)
+  {
+    const float open1[4] = { 1.0f, 0.0f, 0.0f, 1.0f };
+    std::copy(open1, open1 + 4, value);
+    return;
+  }
+  const bool shifted = this->GetEffectiveMethod() == Horizon;
+  const float one = shifted ? 3071.0f : 4095.0f; // fxPack12's q for the open value
+  const float pack12Ones = one * 4096.0f + one, pack12Halves = 2048.0f * 4096.0f + 2048.0f;
+  const float open3[4] = { pack12Ones, shifted ? 0.75f : 1.0f, pack12Halves, 0.0f };
+  std::copy(open3, open3 + 4, value);
 }
 
 std::string vtkFXSSAOPass::GetCompositeCode(int hook)
@@ -287,6 +309,7 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
   this->SkippedBackground = false;
+  this->SkippedSurfaces = nullptr;
   vtkRenderer* ren = s->GetRenderer();
   vtkTextureObject* depth = this->GBuffer ? this->GBuffer->GetChannelTexture(GB::LinearDepth) : nullptr;
   vtkTextureObject* normal = this->GBuffer ? this->GBuffer->GetGeometricNormalTexture() : nullptr;
@@ -363,21 +386,17 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   {
     // Open (what the shader writes where there is no surface), so that the
     // composite shows no occlusion rather than old texels where the shader
-    // does not run. (the horizon method's channels are stored as
-    // (v + 0.5) / 2: open is 0.75)
-    const bool shifted = this->GetEffectiveMethod() == Horizon;
-    const float one = shifted ? 3071.0f : 4095.0f; // fxPack12's q for the open value
-    const float pack12Ones = one * 4096.0f + one, pack12Halves = 2048.0f * 4096.0f + 2048.0f;
-    const float open1[4] = { 1.0f, 0.0f, 0.0f, 1.0f };
-    const float open3[4] = { pack12Ones, shifted ? 0.75f : 1.0f, pack12Halves, 0.0f };
-    vtkFXRenderUtilities::ClearTargets(
-      static_cast<int>(targets.size()), this->Channels == 3 ? open3 : open1);
+    // does not run.
+    float open[4];
+    this->GetOpenValue(open);
+    vtkFXRenderUtilities::ClearTargets(static_cast<int>(targets.size()), open);
   }
   if (!program)
   {
     return;
   }
   this->SkippedBackground = target.SkipWhereDepthIsOne(surfaces);
+  this->SkippedSurfaces = this->SkippedBackground ? surfaces : nullptr;
   depth->Activate();
   normal->Activate();
   program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());

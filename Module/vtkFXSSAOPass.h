@@ -225,6 +225,7 @@ protected:
   bool HalfResolution = true;
   bool SkipBackground = true;
   bool SkippedBackground = false;
+  vtkTextureObject* SkippedSurfaces = nullptr; // the depth the last frame was tested against
   double EffectiveRadius = 0.0;
   bool WarnedIncomplete = false; // the occlusion texture could not be made (said once)
   int Channels = 1; // values the estimator writes per texel: 1 or 3
@@ -239,6 +240,8 @@ protected:
   vtkSmartPointer<vtkOpenGLFramebufferObject> SurfaceMaskFrameBuffer;
   vtkFXRenderUtilities::FullScreenQuad SurfaceMaskQuad;
   bool MakeSurfaceMask(vtkOpenGLRenderWindow* window, vtkTextureObject* depth, int step);
+  /** What the shader writes where there is no surface. */
+  void GetOpenValue(float value[4]) const;
   void ReleaseSurfaceMask(vtkWindow* window);
 
 private:

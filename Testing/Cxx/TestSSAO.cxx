@@ -442,7 +442,7 @@ int TestSSAO(int, char*[])
   for (int method : { vtkFXSSAOPass::Hemisphere, vtkFXSSAOPass::Horizon })
   for (bool directional : { false, true })
   {
-    std::vector<float> raw[2];
+    std::vector<float> raw[2], blurred[2];
     for (bool skip : { true, false })
     {
       Setup s = MakeSetup(window);
@@ -458,11 +458,19 @@ int TestSSAO(int, char*[])
       pass->SetRadius(radius);
       pass->SetHalfResolution(half);
       pass->SetSkipBackground(skip);
+      vtkFXBilateralBlurPass* blur = directional ? s.Pipeline->GetDirectionalOcclusionBlurPass()
+                                                 : s.Pipeline->GetOcclusionBlurPass();
+      blur->SetSkipBackground(skip);
+      blur->UpsampleOff(); // (its own passes' output, at the occlusion's resolution)
       window->Render();
       FX_CHECK(pass->GetSkippedBackground() == skip, "the background was " << (skip ? "not " : "")
         << "skipped");
+      // (the blur skips it for one value with its depth only)
+      FX_CHECK(blur->GetSkippedBackground() == (skip && !directional),
+        "the blur's background was " << (blur->GetSkippedBackground() ? "" : "not ") << "skipped");
       // (one value and its depth, or three packed with normal and depth)
       raw[skip ? 0 : 1] = vtkFXTest::Download(pass->GetOutputTexture(), directional ? 4 : 2);
+      blurred[skip ? 0 : 1] = vtkFXTest::Download(blur->GetOutputTexture(), directional ? 4 : 2);
     }
     size_t background = 0;
     const size_t stride = directional ? 4 : 2;
@@ -473,7 +481,9 @@ int TestSSAO(int, char*[])
     std::cout << (half ? "half" : "full") << " resolution, " << (directional ? "directional, " : "")
               << (method == vtkFXSSAOPass::Horizon ? "horizon" : "hemisphere") << ": "
               << background << " background texels; skipped and shaded "
-              << (raw[0] == raw[1] ? "identical" : "differ") << std::endl;
+              << (raw[0] == raw[1] ? "identical" : "differ") << ", blurred "
+              << (blurred[0] == blurred[1] ? "identical" : "differ") << std::endl;
+    FX_CHECK(!blurred[0].empty() && blurred[0] == blurred[1], "SkipBackground changed the blur");
     FX_CHECK(!raw[0].empty() && raw[0] == raw[1] && background > (half ? 250u : 1000u),
       "SkipBackground changed the occlusion (or no background was in view)");
   }
