@@ -99,7 +99,7 @@ vtkFXEffectPass::Output vtkFXSSAOPass::GetOutput(const char* name)
     output.Format = this->GetOcclusionFormat();
     output.DepthComponent = this->Channels == 3 ? 3 : 1;
     output.Packing = this->Channels == 3 ? 1 : 0;
-    if (this->SkippedBackground)
+    if (this->SkippedSurfaces)
     {
       output.Surfaces = this->SkippedSurfaces;
       this->GetOpenValue(output.Background);
@@ -308,7 +308,6 @@ void vtkFXSSAOPass::SetKernelUniforms(vtkShaderProgram* program) const
 void vtkFXSSAOPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
-  this->SkippedBackground = false;
   this->SkippedSurfaces = nullptr;
   vtkRenderer* ren = s->GetRenderer();
   vtkTextureObject* depth = this->GBuffer ? this->GBuffer->GetChannelTexture(GB::LinearDepth) : nullptr;
@@ -395,8 +394,7 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   {
     return;
   }
-  this->SkippedBackground = target.SkipWhereDepthIsOne(surfaces);
-  this->SkippedSurfaces = this->SkippedBackground ? surfaces : nullptr;
+  this->SkippedSurfaces = target.SkipWhereDepthIsOne(surfaces) ? surfaces : nullptr;
   depth->Activate();
   normal->Activate();
   program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());

@@ -157,7 +157,7 @@ public:
   vtkGetMacro(SkipBackground, bool);
   vtkBooleanMacro(SkipBackground, bool);
   /** Whether the last frame left the background out (see SkipBackground). */
-  vtkGetMacro(SkippedBackground, bool);
+  bool GetSkippedBackground() const { return this->SkippedSurfaces != nullptr; }
 
   /**
    * The samples the estimator takes: NumberOfSamples, rounded up to a
@@ -224,7 +224,6 @@ protected:
   double Bias = 0.02;
   bool HalfResolution = true;
   bool SkipBackground = true;
-  bool SkippedBackground = false;
   vtkTextureObject* SkippedSurfaces = nullptr; // the depth the last frame was tested against
   double EffectiveRadius = 0.0;
   bool WarnedIncomplete = false; // the occlusion texture could not be made (said once)
