@@ -109,6 +109,7 @@ struct Method
   int BlurRadius = 4;
   int BlurKernel = vtkFXBilateralBlurPass::Gaussian;
   bool Upsample = false; // depth-aware upsample by the blur (else the composite's bilinear)
+  bool Separable = true;  // the blur's two passes (else its full 2D filter)
   vtkSmartPointer<vtkRenderWindow> Window;
   vtkSmartPointer<vtkRenderer> Renderer;
   std::vector<double> FrameMs;
@@ -187,7 +188,7 @@ std::vector<Method> MakeMethods(int falloff)
   defaults->SetAmbientOcclusionFalloff(falloff); // its Medium preset
   vtkFXSSAOPass* ssao = defaults->GetSSAOPass();
   auto fx = [&methods](int method, int samples, bool half, int blurRadius, bool upsample = false,
-              int kernel = vtkFXBilateralBlurPass::Gaussian) {
+              int kernel = vtkFXBilateralBlurPass::Gaussian, bool separable = true) {
     Method m{ Kind::FX, method == vtkFXSSAOPass::Horizon ? "vtkfx-gtao" : "vtkfx-ssao" };
     m.Method = method;
     m.Samples = samples;
@@ -196,10 +197,11 @@ std::vector<Method> MakeMethods(int falloff)
     m.BlurRadius = std::max(1, blurRadius);
     m.Upsample = half && blurRadius > 0 && upsample;
     m.BlurKernel = kernel;
+    m.Separable = separable;
     const bool box = kernel == vtkFXBilateralBlurPass::Box;
     m.Setting = std::to_string(samples) + (half ? " half" : " full") +
       (blurRadius > 0 ? (box ? " box" : " blur") + std::to_string(blurRadius) : " noblur") +
-      (m.Upsample ? " up" : "");
+      (m.Upsample ? " up" : "") + (blurRadius > 0 && !separable ? " 2d" : "");
     for (const auto& other : methods)
     {
       if (other.Name == m.Name && other.Setting == m.Setting)
@@ -212,6 +214,10 @@ std::vector<Method> MakeMethods(int falloff)
   vtkFXBilateralBlurPass* blur = defaults->GetOcclusionBlurPass();
   fx(ssao->GetMethod(), ssao->GetNumberOfSamples(), ssao->GetHalfResolution(),
     blur->GetEnabled() ? blur->GetRadius() : 0, false, blur->GetKernel());
+  // The default's blur as the full 2D joint-bilateral filter its two passes
+  // approximate (the brute-force reference of the blur, and its cost).
+  fx(ssao->GetMethod(), ssao->GetNumberOfSamples(), ssao->GetHalfResolution(),
+    blur->GetEnabled() ? blur->GetRadius() : 0, false, blur->GetKernel(), false);
   // The presets of both falloffs, and neighbours of the default.
   for (int samples : { 8, 16, 32 })
   {
@@ -313,6 +319,7 @@ void Install(Method& m, double radius, int falloff)
         pipeline->GetOcclusionBlurPass()->SetRadius(m.BlurRadius);
         pipeline->GetOcclusionBlurPass()->SetKernel(m.BlurKernel);
         pipeline->GetOcclusionBlurPass()->SetUpsample(m.Upsample);
+        pipeline->GetOcclusionBlurPass()->SetSeparable(m.Separable);
       }
       m.Renderer->SetPass(pipeline);
       break;

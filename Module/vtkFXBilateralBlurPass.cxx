@@ -25,7 +25,8 @@ enum Mode
   HorizontalPass = 0,
   VerticalPass = 1,
   UpsamplePass = 2,
-  Guide = 3
+  Guide = 3,
+  Full2DPass = 4 // Separable off
 };
 }
 
@@ -176,7 +177,14 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   const int stageFormat = !packed ? vtkFXRenderUtilities::RGBA16F
     : this->NumberOfComponents == 1 ? vtkFXRenderUtilities::RG32F
                                     : vtkFXRenderUtilities::RGBA32F;
-  vtkFXRenderUtilities::EnsureTexture(this->Horizontal, window, width, height, stageFormat);
+  if (this->Separable)
+  {
+    vtkFXRenderUtilities::EnsureTexture(this->Horizontal, window, width, height, stageFormat);
+  }
+  else
+  {
+    vtkFXRenderUtilities::Release(this->Horizontal, window);
+  }
   vtkFXRenderUtilities::EnsureTexture(this->Blurred, window, width, height, stageFormat);
   if (packed)
   {
@@ -192,7 +200,7 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
     }
   }
   // Background texels of one packed value with its depth pass through
-  // both passes unchanged (the shader's early return): where the source
+  // the blur unchanged (the shader's early return): where the source
   // says which they are, they are left out.
   vtkTextureObject* surfaces = this->SkipBackground && packed && this->NumberOfComponents == 1 &&
       source.Surfaces && static_cast<int>(source.Surfaces->GetWidth()) == width &&
@@ -200,11 +208,16 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
     ? source.Surfaces
     : nullptr;
   this->SkippedBackground = surfaces != nullptr;
-  if (!this->RunStage(HorizontalPass, s->GetRenderer(), input, this->Horizontal, step, packed,
-        surfaces, source.Background) ||
-    !this->RunStage(VerticalPass, s->GetRenderer(), this->Horizontal, this->Blurred, step, packed,
-      surfaces, source.Background))
+  const bool blurred = this->Separable
+    ? this->RunStage(HorizontalPass, s->GetRenderer(), input, this->Horizontal, step, packed,
+        surfaces, source.Background) &&
+      this->RunStage(VerticalPass, s->GetRenderer(), this->Horizontal, this->Blurred, step,
+        packed, surfaces, source.Background)
+    : this->RunStage(Full2DPass, s->GetRenderer(), input, this->Blurred, step, packed, surfaces,
+        source.Background);
+  if (!blurred)
   {
+    this->SkippedBackground = false;
     return;
   }
   // Consumers that upsample inline blend neighbours with the hardware.
@@ -260,4 +273,5 @@ void vtkFXBilateralBlurPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Kernel: " << (this->Kernel == Box ? "Box" : "Gaussian") << "\n";
   os << indent << "Upsample: " << this->Upsample << "\n";
   os << indent << "SkipBackground: " << this->SkipBackground << "\n";
+  os << indent << "Separable: " << this->Separable << "\n";
 }

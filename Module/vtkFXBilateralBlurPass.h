@@ -29,6 +29,8 @@
  *
  * Cost: 2 x (2 Radius + 1) taps per input pixel, plus 4 taps per output
  * pixel when upsampling, plus the guide pass for inputs without a guide.
+ * With Separable off, one pass of (2 Radius + 1)^2 taps instead: the full
+ * 2D joint-bilateral filter that the two passes approximate.
  *
  * Reduced-resolution inputs follow vtkFXSSAOPass's layout: input texel i
  * holds the value of G-buffer texel step x i (steps 1 and 2).
@@ -124,6 +126,21 @@ public:
   vtkSetMacro(SkipBackground, bool);
   vtkGetMacro(SkipBackground, bool);
   vtkBooleanMacro(SkipBackground, bool);
+
+  /**
+   * Blur in a horizontal then a vertical pass (default on), or off, in one
+   * pass over the whole (2 Radius + 1)^2 square: the full 2D joint-bilateral
+   * filter, every tap weighted against the pixel itself. The two passes
+   * weigh a tap off the pixel's row against the tap in that row that
+   * brought it, so near depth edges and creases they differ from the 2D
+   * filter; on a surface of one depth and normal they are the same filter.
+   * Off is the reference the separable blur is measured against (`vtkfx-bench
+   * ao`, TestSSAO) and the more accurate choice at edges; it costs
+   * (2 Radius + 1) / 2 times the taps (4.5 at the default radius).
+   */
+  vtkSetMacro(Separable, bool);
+  vtkGetMacro(Separable, bool);
+  vtkBooleanMacro(Separable, bool);
   /** Whether the last frame left the background out. */
   vtkGetMacro(SkippedBackground, bool);
 
@@ -138,7 +155,7 @@ protected:
   vtkFXBilateralBlurPass();
   ~vtkFXBilateralBlurPass() override;
 
-  // `surfaces`, `background`: the horizontal and vertical passes leave out
+  // `surfaces`, `background`: the blur passes (horizontal, vertical, 2D) leave out
   // the texels where `surfaces` is 1, which keep `background` (nullptr:
   // every texel runs).
   bool RunStage(int mode, vtkRenderer* renderer, vtkTextureObject* input,
@@ -154,13 +171,14 @@ protected:
   bool Upsample = true;
   bool SkipBackground = true;
   bool SkippedBackground = false;
+  bool Separable = true;
 
   vtkSmartPointer<vtkTextureObject> GuideTexture; // (normal, depth), RGBA32F, input resolution
   vtkSmartPointer<vtkTextureObject> Horizontal;
   vtkSmartPointer<vtkTextureObject> Blurred;
   vtkSmartPointer<vtkTextureObject> Upsampled;
   Output Result; // what the last Render() wrote
-  static constexpr int NumberOfModes = 4; // horizontal, vertical, upsample, guide
+  static constexpr int NumberOfModes = 5; // horizontal, vertical, upsample, guide, 2D
   vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffers[NumberOfModes];
   vtkFXRenderUtilities::FullScreenQuad Quads[NumberOfModes];
 

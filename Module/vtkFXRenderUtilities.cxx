@@ -304,7 +304,12 @@ vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow
   FitFramebuffer(framebuffer, window, width, height);
   framebuffer->Bind();
   this->FrameBuffer = framebuffer;
-  if (targets.empty())
+  // A framebuffer without attachments takes its size from these (OpenGL
+  // 4.3 or ARB_framebuffer_no_attachments; without them it stays
+  // incomplete, which its users check). One with a depth attachment (the
+  // masks of DrawDepthMask) has that size and needs neither.
+  if (targets.empty() &&
+    (glewIsSupported("GL_VERSION_4_3") || glewIsSupported("GL_ARB_framebuffer_no_attachments")))
   {
     glFramebufferParameteri(GL_DRAW_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_WIDTH, width);
     glFramebufferParameteri(GL_DRAW_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_HEIGHT, height);

@@ -355,9 +355,17 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   vtkTextureObject* surfaces = nullptr;
   if (this->SkipBackground && targets.size() == 1)
   {
-    surfaces = step == 1 ? this->GBuffer->GetDepthTexture()
-                         : this->MakeSurfaceMask(window, depth, step) ? this->SurfaceMask.Get()
-                                                                     : nullptr;
+    if (step == 1)
+    {
+      surfaces = this->GBuffer->GetDepthTexture();
+    }
+    else if (!this->SurfaceMaskFailed)
+    {
+      // (a mask that failed once, say a shader the driver refuses, would
+      // fail and warn again every frame)
+      this->SurfaceMaskFailed = !this->MakeSurfaceMask(window, depth, step);
+      surfaces = this->SurfaceMaskFailed ? nullptr : this->SurfaceMask.Get();
+    }
   }
   if (!surfaces || step == 1)
   {
@@ -449,6 +457,8 @@ void vtkFXSSAOPass::ReleaseSurfaceMask(vtkWindow* window)
 
 void vtkFXSSAOPass::ReleaseGraphicsResources(vtkWindow* w)
 {
+  this->SkippedSurfaces = nullptr; // (the mask goes)
+  this->SurfaceMaskFailed = false; // (another context may draw it)
   this->ReleaseSurfaceMask(w);
   vtkFXRenderUtilities::ReleaseQuad(this->Quad, w);
   this->UnbindCompositeResources();

@@ -150,8 +150,11 @@ public:
    * Leave the pixels without a surface out before the shader runs (default
    * on; a software rasteriser otherwise runs the shader on every background
    * block): by the G-buffer's depth test at full resolution, at half by a
-   * mask of the pass's size. The result is the same either way; off is for
-   * comparison.
+   * mask of the pass's size. The result is the same either way, but for
+   * fragments at the far plane itself (window depth 1, as when far / near
+   * passes about 1e7), which the full-resolution test counts as background
+   * as the composite's depth pre-pass does; off is for comparison. A mask
+   * that cannot be drawn is reported once, and every pixel runs.
    */
   vtkSetMacro(SkipBackground, bool);
   vtkGetMacro(SkipBackground, bool);
@@ -227,6 +230,7 @@ protected:
   vtkTextureObject* SkippedSurfaces = nullptr; // the depth the last frame was tested against
   double EffectiveRadius = 0.0;
   bool WarnedIncomplete = false; // the occlusion texture could not be made (said once)
+  bool SurfaceMaskFailed = false; // the mask could not be drawn: not retried (it warned)
   int Channels = 1; // values the estimator writes per texel: 1 or 3
   int TileSize = 4; // side of the tile of per-pixel rotations: 4 or 8
 

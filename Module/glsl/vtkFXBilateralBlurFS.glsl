@@ -21,7 +21,11 @@
 // FX_MODE: 3 guide: normal and depth of each input texel, once, so that the
 //            taps below fetch one texel instead of two and decode nothing;
 //          0 horizontal pass, 1 vertical pass (input resolution),
-//          2 upsample from input to G-buffer resolution.
+//          2 upsample from input to G-buffer resolution,
+//          4 the full 2D filter in one pass (input resolution; Separable
+//            off): every tap of the square weighted against the pixel
+//            itself, which the two passes approximate (a tap off the
+//            pixel's row is weighted against the row's tap that carried it).
 // Inputs that carry their own guide need no guide stage, and every tap is
 // a single fetch (a software rasteriser pays per fetch):
 // FX_PACKED: one value whose linear depth rides in .g (vtkFXSSAOPass's
@@ -86,7 +90,7 @@ vec4 fxReadTap(ivec2 q, vec3 n0, out vec4 value, out vec4 guide)
 vec4 fxBlurOutput(vec4 value, vec4 center, float d0)
 {
 #if FX_PACKED_NORMALS && FX_MODE == 0
-  return vec4(fxPack12(value.xy), value.z, center.b, d0);
+  return vec4(fxPack12(value.xy), value.z, center.b, d0); // for the vertical pass
 #elif FX_PACKED_NORMALS
   return vec4(value.xyz, d0);
 #elif FX_PACKED
@@ -124,6 +128,16 @@ float fxGuideWeight(float d0, vec3 n0, vec4 g)
   return wn / (1.0 + r * r);
 }
 
+// Weight of a tap i texels from the pixel along one axis (1 at i = 0).
+float fxDistanceWeight(int i, float sigma)
+{
+#if FX_BOX
+  return abs(i) == fxRadius ? 0.5 : 1.0;
+#else
+  return exp(-0.5 * float(i * i) / (sigma * sigma));
+#endif
+}
+
 void main()
 {
   if (texCoord.x < -1.0)
@@ -135,7 +149,7 @@ void main()
   ivec2 texel = fxGuideTexel(p);
   gl_FragData[0] = vec4(fxDecodeNormal(texelFetch(fxNormal, texel, 0).rg),
     texelFetch(fxLinearDepth, texel, 0).r);
-#elif FX_MODE < 2
+#elif FX_MODE != 2
   vec4 value0, g0;
   vec4 center = fxReadTap(p, vec3(0.0, 0.0, 1.0), value0, g0);
   float d0 = g0.w;
@@ -145,27 +159,34 @@ void main()
     return;
   }
   vec3 n0 = g0.xyz;
-  ivec2 direction = FX_MODE == 0 ? ivec2(1, 0) : ivec2(0, 1);
+  // Taps (i, j): i along the pass's direction, j across it (the 2D
+  // filter's rows; one row, j = 0, for the separable passes).
+  ivec2 along = FX_MODE == 1 ? ivec2(0, 1) : ivec2(1, 0);
+#if FX_MODE == 4
+  int rows = fxRadius;
+#else
+  int rows = 0;
+#endif
   float sigma = max(0.5 * float(fxRadius), 0.5);
   vec4 sum = value0;
   float total = 1.0;
-  for (int i = -fxRadius; i <= fxRadius; ++i)
+  for (int j = -rows; j <= rows; ++j)
   {
-    ivec2 q = p + i * direction;
-    if (i == 0 || any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, fxInputSize)))
+    for (int i = -fxRadius; i <= fxRadius; ++i)
     {
-      continue;
+      ivec2 q = p + i * along + ivec2(0, j);
+      if ((i == 0 && j == 0) || any(lessThan(q, ivec2(0))) ||
+        any(greaterThanEqual(q, fxInputSize)))
+      {
+        continue;
+      }
+      vec4 tap, guide;
+      fxReadTap(q, n0, tap, guide);
+      float w = fxDistanceWeight(i, sigma) * fxDistanceWeight(j, sigma) *
+        fxGuideWeight(d0, n0, guide);
+      sum += w * tap;
+      total += w;
     }
-    vec4 tap, guide;
-    fxReadTap(q, n0, tap, guide);
-#if FX_BOX
-    float distanceWeight = abs(i) == fxRadius ? 0.5 : 1.0;
-#else
-    float distanceWeight = exp(-0.5 * float(i * i) / (sigma * sigma));
-#endif
-    float w = distanceWeight * fxGuideWeight(d0, n0, guide);
-    sum += w * tap;
-    total += w;
   }
   gl_FragData[0] = fxBlurOutput(sum / total, center, d0);
 #else
