@@ -84,6 +84,19 @@ bool vtkFXBilateralBlurPass::RunStage(int mode, vtkRenderer* renderer,
     vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   // One framebuffer per stage: its attachment never changes between frames.
   vtkFXRenderUtilities::RenderTargetScope target(window, this->FrameBuffers[mode], output);
+  if (!target.IsComplete())
+  {
+    // (say, no memory for a stage's texture at a huge size) No result:
+    // consumers read the unblurred source rather than an empty texture.
+    if (!this->WarnedIncomplete)
+    {
+      vtkErrorMacro("vtkFXBilateralBlurPass could not make its " << output->GetWidth() << " x "
+                                                                  << output->GetHeight()
+                                                                  << " target; nothing blurred.");
+      this->WarnedIncomplete = true;
+    }
+    return false;
+  }
   this->Quads[mode].AtFarPlane = surfaces != nullptr;
   vtkShaderProgram* program =
     vtkFXRenderUtilities::ReadyQuad(this->Quads[mode], window, fs);
@@ -183,12 +196,15 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   }
   else
   {
+    // (the stage's framebuffer keeps an attached texture alive: both go)
     vtkFXRenderUtilities::Release(this->Horizontal, window);
+    vtkFXRenderUtilities::Release(this->FrameBuffers[HorizontalPass], window);
   }
   vtkFXRenderUtilities::EnsureTexture(this->Blurred, window, width, height, stageFormat);
   if (packed)
   {
     vtkFXRenderUtilities::Release(this->GuideTexture, window);
+    vtkFXRenderUtilities::Release(this->FrameBuffers[Guide], window);
   }
   else
   {
@@ -239,6 +255,7 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   else
   {
     vtkFXRenderUtilities::Release(this->Upsampled, window);
+    vtkFXRenderUtilities::Release(this->FrameBuffers[UpsamplePass], window);
     this->Result.Texture = this->Blurred;
     this->Result.Step = step;
     this->Result.Format = stageFormat;

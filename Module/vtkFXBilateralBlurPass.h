@@ -172,6 +172,7 @@ protected:
   bool SkipBackground = true;
   bool SkippedBackground = false;
   bool Separable = true;
+  bool WarnedIncomplete = false; // a stage's target could not be made (said once)
 
   vtkSmartPointer<vtkTextureObject> GuideTexture; // (normal, depth), RGBA32F, input resolution
   vtkSmartPointer<vtkTextureObject> Horizontal;

@@ -453,10 +453,11 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
   // the pipeline renders into.
   auto* target = vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer());
   vtkTextureObject* color = target ? target->GetColorAttachmentAsTextureObject(0) : nullptr;
-  if (this->Threshold >= 0.0 && !color)
+  if (this->Threshold >= 0.0 && !color && !this->WarnedNoLitImage)
   {
     vtkWarningMacro("vtkFXBloomPass's threshold reads the lit image of an HDR target "
                     "(vtkFXPipelinePass provides one); only emission glows.");
+    this->WarnedNoLitImage = true; // (once: the frames after are the same)
   }
   vtkTextureObject* emission =
     this->ReadsEmission && this->GBuffer ? this->GBuffer->GetChannelTexture(GB::Emission) : nullptr;

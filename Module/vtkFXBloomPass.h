@@ -191,6 +191,7 @@ protected:
   double Knee = 0.5;
   bool FireflySuppression = true;
   bool ReadsEmission = true; // this frame: UseEmission and some prop emits (HasWork)
+  bool WarnedNoLitImage = false; // a threshold without an HDR target (said once)
 
   std::vector<std::unique_ptr<Level>> Levels;
   // With a threshold: the emission plus the lit light above the threshold,

@@ -47,7 +47,10 @@ vtkFXEffectPass::Output vtkFXDirectionalOcclusionPass::GetOutput(const char* nam
   if (name && std::string(name) == "bleeding")
   {
     Output output;
-    if (this->Bleeding > 0.0 && this->BleedingTexture)
+    // (only beside this frame's occlusion: a bleeding texture left from a
+    // frame whose occlusion target could not be made is stale)
+    if (this->Bleeding > 0.0 && this->BleedingTexture &&
+      this->Superclass::GetOutput("occlusion").Texture)
     {
       output.Texture = this->BleedingTexture;
       output.Step = this->HalfResolution ? 2 : 1;

@@ -221,9 +221,15 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
   vec3 rayOrigin, rayDirection;
   fxTexelRay(texel, rayOrigin, rayDirection);
   vec3 view = normalize(-rayDirection); // towards the eye, any projection
-  // Texels per world unit at this depth, along x.
+  // Texels per world unit at this depth, along x. R in texels, at most the
+  // image's diagonal (steps past it would all land outside the image; the
+  // bound also keeps a surface at the eye finite). A fixed bound of 512
+  // texels shrank R in images over about 2000 pixels wide: scene:corner at
+  // 6400 x 4800 lost the wall's occlusion and showed rings at 512 texels,
+  // 35 levels off the 400 x 300 image in 20-pixel cells; TestSSAOScale.
   float worldPerNdc = length(fxRayOrigin[1] + depth * fxRayDirection[1]);
-  float radiusTexels = clamp(fxRadius / worldPerNdc * 0.5 * float(fxGBufferSize.x), 1.0, 512.0);
+  float radiusTexels = clamp(fxRadius / worldPerNdc * 0.5 * float(fxGBufferSize.x), 1.0,
+    length(vec2(fxGBufferSize)));
   // Horizons fade out over the last part of R: XeGTAO's 61.5% for the
   // near-weighted falloff; for visibility within R (FX_FALLOFF 0) a step at
   // R, as the definition says (a 10% fade biased the crease of TestSSAO
