@@ -528,7 +528,8 @@ bool vtkFXGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
   return true;
 }
 
-std::string vtkFXGBufferPass::ChannelWritesGLSL(bool lit, const char* linearDepth) const
+std::string vtkFXGBufferPass::ChannelWritesGLSL(
+  bool lit, bool unlitEmits, const char* linearDepth) const
 {
   std::ostringstream code;
   int target = 0;
@@ -561,7 +562,7 @@ std::string vtkFXGBufferPass::ChannelWritesGLSL(bool lit, const char* linearDept
         code << (lit ? "vec4(fxAmbient, 1.0);\n" : "vec4(0.0, 0.0, 0.0, 1.0);\n");
         break;
       case Emission:
-        code << (lit ? "vec4(fxEmissive, 1.0);\n" : "fxFiniteEmission(fxColor);\n");
+        code << (lit || !unlitEmits ? "vec4(fxEmissive, 1.0);\n" : "fxFiniteEmission(fxColor);\n");
         break;
       case GeometricNormal:
         code << (lit ? "vec4(fxEncodeNormal(fxGeometricNormal), 0.0, 1.0);\n"
@@ -589,10 +590,19 @@ bool vtkFXGBufferPass::PostReplaceShaderValues(std::string&, std::string&,
     Contains(fragmentShader, "normalVCVSOutput");
   // Linear depth: -z of the view-space position where the shader has one.
   // Points drawn as spheres and lines drawn as tubes move the surface off
-  // that position (to gl_FragDepth), and unlit primitives have none: both
-  // invert the projection of the window depth instead.
-  const bool impostor = Contains(fragmentShader, "ZCalcR");
-  const char* linearDepth = impostor ? "fxLinearDepthFromWindow(gl_FragDepth)"
+  // that position (to gl_FragDepth): fxImpostorLinearDepth. Unlit
+  // primitives have none: fxLinearDepthOfFragment.
+  // (VTK's uniform, not the word: comments may name it)
+  const bool impostor = Contains(fragmentShader, "uniform float ZCalcR;");
+  // (VTK 9.1's perspective depth of its impostors, the same line for
+  // points and tubes; where it is not found, the window depth is inverted)
+  const bool impostorScaled = impostor &&
+    vtkShaderProgram::Substitute(fragmentShader,
+      "gl_FragDepth = (ZCalcS - gl_FragCoord.z) / ZCalcQ + ZCalcS;",
+      "fxImpostorScale = -ZCalcQ;\n    gl_FragDepth = (ZCalcS - gl_FragCoord.z) / ZCalcQ + ZCalcS;",
+      true);
+  const char* linearDepth = impostor
+    ? (impostorScaled ? "fxImpostorLinearDepth()" : "fxLinearDepthFromWindow(gl_FragDepth)")
     : Contains(fragmentShader, "vec4 vertexVC =") ? "-vertexVC.z"
                                                    : "fxLinearDepthOfFragment()";
 
@@ -632,7 +642,11 @@ bool vtkFXGBufferPass::PostReplaceShaderValues(std::string&, std::string&,
   // The mapper discards fully transparent fragments after this point; do it
   // here too, before our writes replace gl_FragData[0].
   impl << "  if (fxColor.a <= 0.0) { discard; }\n";
-  impl << this->ChannelWritesGLSL(lit, linearDepth);
+  // (as the pipeline's scene analysis counts emissive props: a prop with
+  // Lighting off glows with its colour, a lit one with its emissive colour
+  // only, also where VTK leaves its primitives unlit)
+  const bool unlitEmits = !actor || !actor->GetProperty()->GetLighting();
+  impl << this->ChannelWritesGLSL(lit, unlitEmits, linearDepth);
   // Remove the markers; keep the mapper's code where it was.
   vtkShaderProgram::Substitute(fragmentShader, TexBeginTag, "", false);
   vtkShaderProgram::Substitute(fragmentShader, TexEndTag, "", false);

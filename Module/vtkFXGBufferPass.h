@@ -260,7 +260,10 @@ protected:
 
   void UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height);
   void ClearTargets();
-  std::string ChannelWritesGLSL(bool lit, const char* linearDepth) const;
+  // `unlitEmits`: an unlit fragment's colour is its emission (a prop with
+  // Lighting off); else (a lit prop's unlit primitives: PBR, lines or
+  // points without normals) it emits only its emissive colour.
+  std::string ChannelWritesGLSL(bool lit, bool unlitEmits, const char* linearDepth) const;
 
   vtkRenderPass* DelegatePass = nullptr;
   bool HDREmission = false;

@@ -30,6 +30,26 @@ float fxLinearDepthOfFragment()
   return fxLinearDepthFromWindow(gl_FragCoord.z);
 }
 
+// Points drawn as spheres and lines drawn as tubes (VTK's impostors of
+// vtkOpenGLPolyDataMapper) move the surface off the primitive, to
+// gl_FragDepth. In perspective VTK's depth there is the primitive's window
+// depth taken to linear depth z (1 - k R), R the impostor's relative
+// radius and k its bulge along the view: VTK's code sets
+// fxImpostorScale to that factor (vtkFXGBufferPass), so the surface's
+// linear depth is the primitive's own (exact, from clip w) times it;
+// inverting gl_FragDepth instead was up to 6.9e-4 off at near/far 1e-6
+// (TestGBufferGeometry).
+// In parallel projection the inversion is linear and exact enough.
+float fxImpostorScale = 1.0;
+float fxImpostorLinearDepth()
+{
+  if (fxProjectionZ.z != 0.0)
+  {
+    return fxLinearDepthOfFragment() * fxImpostorScale;
+  }
+  return fxLinearDepthFromWindow(gl_FragDepth);
+}
+
 // Light the prop emits of its own (vtkFXGBufferPass::EMISSIVE_COLOR), for
 // its lit fragments' emission channel.
 uniform vec3 fxEmissive;

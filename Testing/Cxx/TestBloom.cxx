@@ -23,6 +23,7 @@
 #include "vtkActorCollection.h"
 #include "vtkCamera.h"
 #include "vtkInformation.h"
+#include "vtkLineSource.h"
 #include "vtkLight.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -226,6 +227,51 @@ int CheckEnergy(vtkRenderWindow* window)
     FX_CHECK(std::fabs(added / (0.5 * source) - 1.0) < 0.05, "image gained " << added);
     window->GetRenderers()->GetFirstRenderer()->SetPass(nullptr);
   }
+  return EXIT_SUCCESS;
+}
+
+// Props that are lit but whose primitives VTK leaves unlit (a PBR
+// material, a line without normals) emit only their emissive colour,
+// none here: beside the emitting sphere they add nothing to the emission
+// channel (before, their whole colour went into it and glowed).
+int CheckUnlitPrimitivesDoNotGlow(vtkRenderWindow* window)
+{
+  window->SetSize(400, 300);
+  const double emission[3] = { 0.5, 0.4, 0.3 };
+  double totals[2] = { 0.0, 0.0 };
+  for (int withOthers = 0; withOthers < 2; ++withOthers)
+  {
+    vtkRenderer* renderer = MakeScene(window, emission);
+    if (withOthers)
+    {
+      auto pbr = Sphere(0.6, 0.25, nullptr);
+      pbr->GetProperty()->SetInterpolationToPBR();
+      pbr->GetProperty()->SetColor(1.0, 1.0, 1.0);
+      renderer->AddActor(pbr);
+      vtkNew<vtkLineSource> line;
+      line->SetPoint1(-0.8, -0.4, 0.0);
+      line->SetPoint2(0.8, -0.4, 0.0);
+      vtkNew<vtkPolyDataMapper> lineMapper;
+      lineMapper->SetInputConnection(line->GetOutputPort());
+      vtkNew<vtkActor> lineActor;
+      lineActor->SetMapper(lineMapper);
+      lineActor->GetProperty()->SetColor(1.0, 1.0, 1.0);
+      lineActor->GetProperty()->SetLineWidth(5.0);
+      renderer->AddActor(lineActor);
+    }
+    vtkNew<vtkFXPipelinePass> pipeline;
+    vtkNew<vtkFXBloomPass> bloom;
+    pipeline->AddEffect("bloom", bloom);
+    renderer->SetPass(pipeline);
+    window->Render();
+    totals[withOthers] = Sum(
+      vtkFXTest::Download(pipeline->GetGBufferPass()->GetChannelTexture(GB::Emission), 4), 4, 3);
+    renderer->SetPass(nullptr);
+  }
+  std::cout << "emission with the emitter alone " << totals[0]
+            << ", beside a PBR sphere and a line without normals " << totals[1] << std::endl;
+  FX_CHECK(totals[0] > 1000.0 && std::fabs(totals[1] - totals[0]) <= 1e-3 * totals[0],
+    "unlit primitives of lit props emitted");
   return EXIT_SUCCESS;
 }
 
@@ -505,6 +551,7 @@ int TestBloom(int, char*[])
   auto window = vtkFXTest::MakeWindow(400, 300);
   FX_CHECK(CheckEnergy(window) == EXIT_SUCCESS, "energy");
   FX_CHECK(CheckNothingToDo(window) == EXIT_SUCCESS, "no emission");
+  FX_CHECK(CheckUnlitPrimitivesDoNotGlow(window) == EXIT_SUCCESS, "unlit primitives");
   FX_CHECK(CheckHotPixels(window) == EXIT_SUCCESS, "hot pixels");
   FX_CHECK(CheckHotEmission(window) == EXIT_SUCCESS, "hot emission");
   FX_CHECK(CheckThreshold(window) == EXIT_SUCCESS, "threshold");
