@@ -268,6 +268,7 @@ protected:
   std::unique_ptr<vtkFXLightTiles> LightTiles;
   bool LightTilesUsed = false;
   bool WarnedLightTiles = false;
+  bool WarnedEarlierError = false; // a GL error pending before the depth copy (said once)
   vtkFXRenderUtilities::FullScreenQuad Quad;
   vtkFXRenderUtilities::FullScreenQuad DepthQuad; // the depth pre-pass
   bool UseDepthPrepass = true;
