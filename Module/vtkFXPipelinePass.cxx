@@ -63,6 +63,8 @@ void AddMaterialTerms(vtkActor* actor, vtkFXSceneInfo& scene, bool& emissive)
       emissive = true; // an unlit colour is light-independent
       continue;
     }
+    // (PBR keeps its forward colour: the composite does not light it)
+    scene.AnyLitProp = scene.AnyLitProp || p->GetInterpolation() != VTK_PBR;
     if (p->GetAmbient() > 0.0 || p->GetEdgeVisibility() || p->GetVertexVisibility())
     {
       scene.AnyAmbient = true;
@@ -580,7 +582,9 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
     composite->SetUseAmbient(scene.AnyAmbient);
     composite->SetUseSpecular(scene.AnySpecular);
     composite->SetUseEmission(scene.AnyEmissiveColor);
-    unsigned int channels = composite->GetRequiredChannels(scene.LightingComplexity);
+    // (no prop the composite lights: no normal or depth for lighting)
+    unsigned int channels =
+      composite->GetRequiredChannels(scene.AnyLitProp ? scene.LightingComplexity : 0);
     bool geometric = false; // an effect samples the surfaces' own orientation
     for (size_t i : order)
     {

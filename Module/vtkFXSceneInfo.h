@@ -34,6 +34,7 @@ struct vtkFXSceneInfo
   std::vector<vtkProp*> EmissiveProps;
   std::vector<vtkLight*> Lights; // switched on, in VTK's order
 
+  bool AnyLitProp = false;       // a captured prop with Lighting on and VTK's Phong model (not PBR)
   bool AnyAmbient = false;       // a lit captured prop with an ambient term
   bool AnySpecular = false;      // a lit captured prop with a specular term
   bool AnyEmissiveColor = false;    // an opaque prop has an EMISSIVE_COLOR

@@ -12,6 +12,7 @@
 #include "vtkFXTestUtilities.h"
 
 #include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkObjectFactory.h"
 #include "vtkTextureObject.h"
 #include "vtkPolyDataMapper.h"
@@ -113,6 +114,44 @@ int TestPipelineScheduling(int, char*[])
   FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "albedo,normal,depth,specular,ambient",
     Channels(pipeline->GetGBufferChannels()));
   FX_CHECK(pipeline->GetGBufferBytesPerPixel() == 24, "five 4-byte channels + depth");
+
+  // Nothing the composite lights (Lighting off, PBR) under the lights:
+  // albedo alone, no normal or depth for lighting.
+  {
+    vtkActorCollection* actors = renderer->GetActors();
+    vtkCollectionSimpleIterator it;
+    std::vector<std::pair<vtkProperty*, int>> changed;
+    actors->InitTraversal(it);
+    int k = 0;
+    while (vtkActor* actor = actors->GetNextActor(it))
+    {
+      vtkProperty* p = actor->GetProperty();
+      changed.emplace_back(p, p->GetInterpolation() + (p->GetLighting() ? 0 : 100));
+      if (k++ % 2 == 0)
+      {
+        p->LightingOff();
+      }
+      else
+      {
+        p->SetInterpolationToPBR();
+      }
+    }
+    pipeline->RemoveEffect("probe");
+    window->Render();
+    std::cout << "unlit and PBR: [" << Channels(pipeline->GetGBufferChannels()) << "]"
+              << std::endl;
+    FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "albedo",
+      "channels nobody reads: " << Channels(pipeline->GetGBufferChannels()));
+    for (auto& c : changed)
+    {
+      c.first->SetLighting(c.second < 100);
+      c.first->SetInterpolation(c.second % 100);
+    }
+    pipeline->AddEffect("probe", probe);
+    window->Render();
+    FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "albedo,normal,depth,specular,ambient",
+      "lit again: " << Channels(pipeline->GetGBufferChannels()));
+  }
 
   // A debug view allocates the channel it shows.
   pipeline->SetDebugChannel(GB::Emission);
