@@ -37,7 +37,9 @@
 #include <sstream>
 #include <vector>
 
-vtkStandardNewMacro(vtkFXGBufferPass);
+// (a factory can replace it: TestRobustness simulates a driver that
+// cannot make the G-buffer)
+vtkObjectFactoryNewMacro(vtkFXGBufferPass);
 
 namespace
 {
@@ -345,7 +347,12 @@ bool vtkFXGBufferPass::CanCapture(vtkProp* prop)
   return all;
 }
 
-void vtkFXGBufferPass::UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height)
+bool vtkFXGBufferPass::FrameBufferComplete()
+{
+  return glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+}
+
+bool vtkFXGBufferPass::UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height)
 {
   const unsigned int wanted = this->RequiredChannels & ((1u << NumberOfChannels) - 1);
   if (wanted != this->AllocatedChannels)
@@ -392,15 +399,45 @@ void vtkFXGBufferPass::UpdateTargets(vtkOpenGLRenderWindow* window, int width, i
   this->FrameBuffer->AddDepthAttachment(this->DepthTexture);
   this->NumberOfTargets = attachment;
   this->FrameBuffer->ActivateDrawBuffers(attachment);
-  if (glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE &&
-    !this->WarnedIncomplete)
+  const bool complete = this->FrameBufferComplete();
+  if (!complete && !this->WarnedIncomplete)
   {
-    // (say, no memory for this many channels at this size: the opaque
-    // props will not show)
+    // (say, no memory for this many channels at this size)
     vtkErrorMacro("The G-buffer of " << width << " x " << height << " pixels, " << attachment
-                                     << " channels, could not be made.");
+                                     << " channels, could not be made: the opaque props are "
+                                        "drawn without the effects that read it.");
     this->WarnedIncomplete = true;
   }
+  return complete;
+}
+
+std::vector<vtkProp*> vtkFXGBufferPass::CapturedProps(const vtkRenderState* s)
+{
+  // Only props whose shaders we can extend; the pipeline draws the rest.
+  std::vector<vtkProp*> props;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    if (CanCapture(s->GetPropArray()[i]))
+    {
+      props.push_back(s->GetPropArray()[i]);
+    }
+  }
+  return props;
+}
+
+void vtkFXGBufferPass::RenderForward(const vtkRenderState* s, std::vector<vtkProp*>& props)
+{
+  if (!this->DelegatePass)
+  {
+    return;
+  }
+  // No shader hooks (no PreRender): the mappers draw as they would without
+  // vtkFX, depth-tested against and writing the target's depth.
+  vtkRenderState forward(s->GetRenderer());
+  forward.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
+  forward.SetFrameBuffer(s->GetFrameBuffer());
+  this->DelegatePass->Render(&forward);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
 }
 
 void vtkFXGBufferPass::ClearTargets()
@@ -438,7 +475,15 @@ void vtkFXGBufferPass::Render(const vtkRenderState* s)
   vtkFXRenderUtilities::GetViewportSize(ren, width, height);
 
   state->PushFramebufferBindings();
-  this->UpdateTargets(window, width, height);
+  this->FrameComplete = this->UpdateTargets(window, width, height);
+  std::vector<vtkProp*> props = CapturedProps(s);
+  if (!this->FrameComplete)
+  {
+    this->FrameBuffer->UnBind();
+    state->PopFramebufferBindings();
+    this->RenderForward(s, props);
+    return;
+  }
 
   {
     vtkOpenGLState::ScopedglViewport viewportSaver(state);
@@ -469,15 +514,6 @@ void vtkFXGBufferPass::Render(const vtkRenderState* s)
 
     if (this->DelegatePass)
     {
-      // Only props whose shaders we can extend; the pipeline draws the rest.
-      std::vector<vtkProp*> props;
-      for (int i = 0; i < s->GetPropArrayCount(); ++i)
-      {
-        if (CanCapture(s->GetPropArray()[i]))
-        {
-          props.push_back(s->GetPropArray()[i]);
-        }
-      }
       // Draws that never reach SetShaderParameters write their colour only.
       this->HookedPrograms.clear();
       this->FrameBuffer->ActivateDrawBuffers(1);

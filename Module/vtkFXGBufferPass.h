@@ -63,6 +63,7 @@
 
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 class vtkActor;
 class vtkInformationDoubleKey;
@@ -240,6 +241,15 @@ public:
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  /**
+   * Whether the last Render() could make the G-buffer. When OpenGL cannot
+   * (say, no memory for its channels at a huge size), an error says so once,
+   * the opaque props are drawn forward into the renderer's target (VTK's
+   * own shading, so the scene still shows), and vtkFXPipelinePass leaves
+   * out the composite and the effects that read G-buffer channels.
+   */
+  bool GetFrameComplete() const { return this->FrameComplete; }
+
   ///@{
   /**
    * vtkOpenGLRenderPass shader hooks: tag the mapper's fragment shader, then
@@ -258,7 +268,15 @@ protected:
   vtkFXGBufferPass();
   ~vtkFXGBufferPass() override;
 
-  void UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height);
+  // False when the framebuffer cannot be made (FrameBufferComplete).
+  bool UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height);
+  // The G-buffer's framebuffer, bound, is complete (virtual: a test
+  // simulates a driver that cannot make it).
+  virtual bool FrameBufferComplete();
+  // The captured props drawn the way VTK draws them, into `s`'s target.
+  void RenderForward(const vtkRenderState* s, std::vector<vtkProp*>& props);
+  // The props of `s` whose shaders the hooks can extend.
+  static std::vector<vtkProp*> CapturedProps(const vtkRenderState* s);
   void ClearTargets();
   // `unlitEmits`: an unlit fragment's colour is its emission (a prop with
   // Lighting off); else (a lit prop's unlit primitives: PBR, lines or
@@ -271,6 +289,7 @@ protected:
   unsigned int RequiredChannels;
   unsigned int AllocatedChannels = 0;
   bool WarnedIncomplete = false; // the framebuffer could not be made (said once)
+  bool FrameComplete = true;     // the last frame's framebuffer was made
   int DepthFormat = -1; // a vtkFXRenderUtilities::TextureFormat
   unsigned int NumberOfTargets = 0;
   vtkSmartPointer<vtkTextureObject> Textures[NumberOfChannels];

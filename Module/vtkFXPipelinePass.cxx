@@ -527,9 +527,15 @@ void vtkFXPipelinePass::AddEffectPasses(
 {
   for (size_t i : order)
   {
-    if (this->Effects[i].Effect->GetStage() == stage)
+    vtkFXEffectPass* effect = this->Effects[i].Effect;
+    if (effect->GetStage() == stage)
     {
-      sequence->AddPass(this->Effects[i].Name.c_str(), this->Effects[i].Effect);
+      // (one that reads channels after the G-buffer has nothing to do in a
+      // frame whose G-buffer could not be made)
+      const bool reads = stage != vtkFXEffectPass::LightSpace && this->GBufferRan &&
+        effect->GetRequiredChannels() != 0;
+      sequence->AddPass(
+        this->Effects[i].Name.c_str(), effect, reads ? this->GBufferPass.Get() : nullptr);
     }
   }
 }
@@ -608,7 +614,7 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
   vtkFXTimedSequencePass* lit = postProcess ? this->HDRSequence : this->Sequence;
   if (deferred)
   {
-    lit->AddPass("composite", composite);
+    lit->AddPass("composite", composite, this->GBufferPass);
   }
   if (!scene.ForwardOpaqueProps.empty())
   {

@@ -1,5 +1,7 @@
 #include "vtkFXTimedSequencePass.h"
 
+#include "vtkFXGBufferPass.h"
+
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderTimer.h"
 #include "vtkRenderState.h"
@@ -15,6 +17,7 @@ struct vtkFXTimedSequencePass::Internals
   {
     std::string Name;
     vtkSmartPointer<vtkRenderPass> Pass;
+    vtkFXGBufferPass* Reads; // (owned by whoever added the pass)
   };
   struct Timing
   {
@@ -77,14 +80,14 @@ void vtkFXTimedSequencePass::ClearPasses()
   this->Impl->Passes.clear();
 }
 
-void vtkFXTimedSequencePass::AddPass(const char* name, vtkRenderPass* pass)
+void vtkFXTimedSequencePass::AddPass(const char* name, vtkRenderPass* pass, vtkFXGBufferPass* reads)
 {
   if (!name || !pass)
   {
     vtkErrorMacro("AddPass needs a name and a pass.");
     return;
   }
-  this->Impl->Passes.push_back({ name, pass });
+  this->Impl->Passes.push_back({ name, pass, reads });
 }
 
 void vtkFXTimedSequencePass::Render(const vtkRenderState* s)
@@ -93,6 +96,10 @@ void vtkFXTimedSequencePass::Render(const vtkRenderState* s)
   this->Impl->Ran.clear();
   for (auto& entry : this->Impl->Passes)
   {
+    if (entry.Reads && !entry.Reads->GetFrameComplete())
+    {
+      continue; // (its input could not be made this frame)
+    }
     Internals::Timing* timing = this->Timing ? &this->Impl->TimingFor(entry.Name) : nullptr;
     if (timing)
     {

@@ -17,6 +17,8 @@
 #include "vtkFXModule.h"
 #include "vtkRenderPass.h"
 
+class vtkFXGBufferPass;
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -30,10 +32,12 @@ public:
 
   /**
    * Replace the list of passes run by the next Render(). Names identify the
-   * passes in timings; timers persist per name across frames.
+   * passes in timings; timers persist per name across frames. A pass given
+   * a G-buffer reads it, and is left out of a frame whose G-buffer could
+   * not be made (vtkFXGBufferPass::GetFrameComplete).
    */
   void ClearPasses();
-  void AddPass(const char* name, vtkRenderPass* pass);
+  void AddPass(const char* name, vtkRenderPass* pass, vtkFXGBufferPass* reads = nullptr);
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;

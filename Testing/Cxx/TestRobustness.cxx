@@ -18,6 +18,9 @@
 #include "vtkFXTestUtilities.h"
 
 #include "vtkActor.h"
+#include "vtkCallbackCommand.h"
+#include "vtkObjectFactory.h"
+#include "vtkVersion.h"
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
 #include "vtkPointData.h"
@@ -129,6 +132,88 @@ int CheckParametersRefuseNaN()
   {
     FX_CHECK(refused, "a parameter took NaN");
   }
+  return EXIT_SUCCESS;
+}
+
+// A driver that cannot make the G-buffer (no memory for its channels at a
+// huge size, say): simulated by a factory override of vtkFXGBufferPass
+// whose framebuffer never completes.
+class FailingGBuffer : public vtkFXGBufferPass
+{
+public:
+  static FailingGBuffer* New();
+  vtkTypeMacro(FailingGBuffer, vtkFXGBufferPass);
+
+protected:
+  bool FrameBufferComplete() override { return false; }
+};
+vtkStandardNewMacro(FailingGBuffer);
+
+class FailingGBufferFactory : public vtkObjectFactory
+{
+public:
+  static FailingGBufferFactory* New()
+  {
+    auto* f = new FailingGBufferFactory;
+    f->InitializeObjectBase();
+    return f;
+  }
+  const char* GetVTKSourceVersion() override { return VTK_SOURCE_VERSION; }
+  const char* GetDescription() override { return "a G-buffer that cannot be made"; }
+
+protected:
+  FailingGBufferFactory()
+  {
+    this->RegisterOverride("vtkFXGBufferPass", "FailingGBuffer", "test", 1,
+      []() -> vtkObject* { return FailingGBuffer::New(); });
+  }
+};
+
+// Without its G-buffer the pipeline still shows the scene: the opaque props
+// drawn forward (as VTK draws them: the image within 50 dB of VTK's own),
+// one error said, and the composite and the effects that read the G-buffer
+// (ambient occlusion, lines) left out.
+int CheckGBufferFailure(vtkRenderWindow* window)
+{
+  window->GetRenderers()->RemoveAllItems();
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  std::string error;
+  vtkFXScenes::Populate(renderer, "scene:corner", vtkFXScenes::Options(), error);
+  renderer->SetPass(nullptr);
+  window->Render();
+  const auto forward = vtkFXScenes::Capture(window);
+
+  vtkNew<FailingGBufferFactory> factory;
+  vtkObjectFactory::RegisterFactory(factory);
+  vtkNew<vtkFXPipelinePass> pipeline;
+  vtkObjectFactory::UnRegisterFactory(factory);
+  FX_CHECK(pipeline->GetGBufferPass()->IsA("FailingGBuffer"), "the override is in place");
+  int errors = 0;
+  vtkNew<vtkCallbackCommand> countErrors;
+  countErrors->SetClientData(&errors);
+  countErrors->SetCallback(
+    [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
+  pipeline->GetGBufferPass()->AddObserver(vtkCommand::ErrorEvent, countErrors);
+  pipeline->AmbientOcclusionOn();
+  vtkNew<vtkFXToonPass> toon;
+  pipeline->AddEffect("toon", toon);
+  renderer->SetPass(pipeline);
+  window->Render();
+  window->Render();
+  const auto image = vtkFXScenes::Capture(window);
+  const std::string passes = vtkFXTest::Passes(pipeline);
+  const double psnr = vtkFXScenes::PSNR(forward, image);
+  std::cout << "G-buffer that cannot be made: passes " << passes << ", " << errors
+            << " error(s), PSNR " << psnr << " dB against VTK's forward render" << std::endl;
+  FX_CHECK(!pipeline->GetGBufferPass()->GetFrameComplete(), "the failure is reported");
+  FX_CHECK(errors == 1, errors << " errors for two frames");
+  FX_CHECK(passes.find("composite") == std::string::npos &&
+      passes.find("ssao") == std::string::npos && passes.find("toon") == std::string::npos &&
+      passes.find("gbuffer") != std::string::npos,
+    passes);
+  FX_CHECK(psnr >= 50.0, "the opaque props drawn forward: " << psnr << " dB");
+  renderer->SetPass(nullptr);
   return EXIT_SUCCESS;
 }
 
@@ -298,5 +383,6 @@ int TestRobustness(int, char*[])
       "colours above 1 render as in VTK");
     FX_CHECK(brightBytes > plainBytes, "no wider material channels");
   }
+  FX_CHECK(CheckGBufferFailure(window) == EXIT_SUCCESS, "G-buffer failure");
   return EXIT_SUCCESS;
 }
