@@ -12,7 +12,8 @@ function (run)
   set(last_output "${out}" PARENT_SCOPE)
 endfunction ()
 run("${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${prefix}")
-run("${CMAKE_COMMAND}" -S "${SOURCE_DIR}/Examples/Cxx" -B "${WORK}/example"
+# (the build's own generator: the README installs ninja, not necessarily make)
+run("${CMAKE_COMMAND}" -S "${SOURCE_DIR}/Examples/Cxx" -B "${WORK}/example" -G "${GENERATOR}"
   "-DvtkFX_DIR=${prefix}/lib/cmake/vtkFX" -DCMAKE_BUILD_TYPE=Release)
 run("${CMAKE_COMMAND}" --build "${WORK}/example")
 set(ENV{LD_LIBRARY_PATH} "${prefix}/lib")
