@@ -231,6 +231,7 @@ std::vector<Method> MakeMethods(int falloff)
   }
   fx(vtkFXSSAOPass::Horizon, 16, true, 2);
   fx(vtkFXSSAOPass::Horizon, 16, true, 2, true);
+  fx(vtkFXSSAOPass::Horizon, 16, true, 4, true);
   fx(vtkFXSSAOPass::Horizon, 8, false, 2);
   fx(vtkFXSSAOPass::Horizon, 16, false, 2);
   const int box = vtkFXBilateralBlurPass::Box;

@@ -249,7 +249,8 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
   const bool hasEmission = this->UseEmission && gb->GetChannelTexture(GB::Emission) != nullptr;
 
   std::ostringstream defines;
-  defines << "//VTK::System::Dec\n"
+  // (FX_GATHER: for the effects' code, e.g. vtkFXSSAOPass's upsample)
+  defines << vtkFXRenderUtilities::GatherDefines(true)
           << "#define FX_LIGHTING " << complexity << "\n"
           << "#define FX_LIGHT_TEXTURE " << (lightTexture ? 1 : 0) << "\n"
           << "#define FX_LIGHT_TILES " << (lightTexture && this->LightCutoff > 0.0 ? 1 : 0) << "\n"

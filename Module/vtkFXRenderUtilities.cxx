@@ -57,6 +57,20 @@ int vtkFXRenderUtilities::GetBytesPerTexel(int format)
   return Info(format).Bytes;
 }
 
+const char* vtkFXRenderUtilities::GatherDefines(bool useTextureGather)
+{
+  return useTextureGather ? "//VTK::System::Dec\n"
+                            "#if __VERSION__ >= 400\n"
+                            "#define FX_GATHER 1\n"
+                            "#elif defined(GL_ARB_gpu_shader5)\n"
+                            "#extension GL_ARB_gpu_shader5 : enable\n"
+                            "#define FX_GATHER 1\n"
+                            "#else\n"
+                            "#define FX_GATHER 0\n"
+                            "#endif\n"
+                          : "//VTK::System::Dec\n#define FX_GATHER 0\n";
+}
+
 bool vtkFXRenderUtilities::EnsureTexture(vtkSmartPointer<vtkTextureObject>& texture,
   vtkOpenGLRenderWindow* window, int width, int height, int format)
 {

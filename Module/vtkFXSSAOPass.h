@@ -163,6 +163,17 @@ public:
   bool GetSkippedBackground() const { return this->SkippedSurfaces != nullptr; }
 
   /**
+   * How the composite reads a reduced-resolution occlusion that carries its
+   * depth (this pass's, blurred or not): on (default), a joint-bilateral
+   * upsample (four texels weighted by their depth's agreement with the
+   * pixel's, vtkFXJointUpsample.glsl, tolerance 0.05 of the depth), so
+   * occlusion does not bleed across depth edges; off, one bilinear read.
+   */
+  vtkSetMacro(DepthAwareUpsample, bool);
+  vtkGetMacro(DepthAwareUpsample, bool);
+  vtkBooleanMacro(DepthAwareUpsample, bool);
+
+  /**
    * The samples the estimator takes: NumberOfSamples, rounded up to a
    * multiple of 3 (at most 63) by vtkFXDirectionalOcclusionPass.
    */
@@ -227,6 +238,11 @@ protected:
   double Bias = 0.02;
   bool HalfResolution = true;
   bool SkipBackground = true;
+  bool DepthAwareUpsample = true;
+  // What the composite reads (the denoised input, else this pass's output).
+  Output CompositeSource();
+  // The composite upsamples `source` by depth (see DepthAwareUpsample).
+  bool UpsamplesByDepth(const Output& source) const;
   vtkTextureObject* SkippedSurfaces = nullptr; // the depth the last frame was tested against
   double EffectiveRadius = 0.0;
   bool WarnedIncomplete = false; // the occlusion texture could not be made (said once)

@@ -43,24 +43,11 @@ const double MaximumLineWidth = 32.0;
 // under 5 px wide (72 midpoints); wider ones a loop.
 const int MaximumUnrolledLineWindow = 6;
 
-// After the version line: FX_GATHER 1 where textureGather can read any
-// component (GLSL 4.00, or GLSL 1.50 with ARB_gpu_shader5); both line
-// shaders fall back to texelFetch otherwise.
-const char* const GatherDefines = "//VTK::System::Dec\n"
-                                  "#if __VERSION__ >= 400\n"
-                                  "#define FX_GATHER 1\n"
-                                  "#elif defined(GL_ARB_gpu_shader5)\n"
-                                  "#extension GL_ARB_gpu_shader5 : enable\n"
-                                  "#define FX_GATHER 1\n"
-                                  "#else\n"
-                                  "#define FX_GATHER 0\n"
-                                  "#endif\n";
-const char* const NoGatherDefines = "//VTK::System::Dec\n#define FX_GATHER 0\n";
-
-// The defines both line shaders take for UseTextureGather.
+// The defines both line shaders take for UseTextureGather (both fall back
+// to texelFetch without it).
 const char* GatherDefinesFor(bool useTextureGather)
 {
-  return useTextureGather ? GatherDefines : NoGatherDefines;
+  return vtkFXRenderUtilities::GatherDefines(useTextureGather);
 }
 }
 

@@ -117,10 +117,14 @@ void main()
   vec3 color = albedo.rgb; // unlit fragments store their final colour here
   bool lit = false;
   vec3 n = vec3(0.0, 0.0, 1.0);
+  // (fxPixelDepth: this pixel's linear depth, for the effects' code; 0
+  // without a depth channel)
 #if FX_NEEDS_POSITION
-  vec3 position = fxViewPosition(2.0 * texCoord - 1.0, texture(fxLinearDepth, texCoord).r);
+  float fxPixelDepth = texture(fxLinearDepth, texCoord).r;
+  vec3 position = fxViewPosition(2.0 * texCoord - 1.0, fxPixelDepth);
   vec3 view = normalize(-position);
 #else
+  float fxPixelDepth = 0.0;
   vec3 position = vec3(0.0);
   vec3 view = vec3(0.0, 0.0, 1.0);
 #endif

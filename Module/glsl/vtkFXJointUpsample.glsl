@@ -9,6 +9,8 @@
 // texel (a feature
 // thinner than a low-resolution texel) the texel closest in depth wins.
 // Used by vtkFXBilateralBlurFS.
+#ifndef FX_JOINT_UPSAMPLE // (the composite may receive it from more than one effect)
+#define FX_JOINT_UPSAMPLE
 vec4 fxJointUpsample(sampler2D lowResolution, bool depthInValue, sampler2D depths, int depthComponent,
   ivec2 lowSize, int step, ivec2 pixel, float d0, float depthSigma)
 {
@@ -42,3 +44,38 @@ vec4 fxJointUpsample(sampler2D lowResolution, bool depthInValue, sampler2D depth
   }
   return total > 1e-4 ? sum / total : nearest;
 }
+
+#if defined(FX_GATHER) && FX_GATHER
+// The same for one value with its depth in the next component (.r, .g:
+// the occlusion passes' output), from two gathers instead of four fetches
+// (a software rasteriser pays per fetch; used where textureGather reads
+// any component, FX_GATHER). With no agreeing texel, the one closest in
+// depth, or 1 (open) where all four are background.
+float fxJointUpsampleGathered(
+  sampler2D valueAndDepth, ivec2 lowSize, int step, ivec2 pixel, float d0, float depthSigma)
+{
+  vec2 x = vec2(pixel) / float(step);
+  ivec2 base = ivec2(floor(x));
+  vec2 f = x - vec2(base);
+  // The 2x2 block from `base` (clamped to the edge as the fetches are), in
+  // textureGather's order: (0, 1), (1, 1), (1, 0), (0, 0).
+  vec2 at = vec2(base + 1) / vec2(lowSize);
+  vec4 v = textureGather(valueAndDepth, at, 0);
+  vec4 d = textureGather(valueAndDepth, at, 1);
+  vec4 bilinear = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
+  vec4 r = (d - d0) / max(depthSigma * d0, 1e-37);
+  bvec4 covered = greaterThan(d, vec4(0.0));
+  vec4 w = mix(vec4(0.0), bilinear / (1.0 + r * r), covered);
+  float total = dot(w, vec4(1.0));
+  // (the fetches' order among equal gaps: (0, 0), (1, 0), (0, 1), (1, 1))
+  vec4 gap = mix(vec4(1e30), abs(d - d0), covered);
+  float nearest = 1.0;
+  float nearestGap = 1e30;
+  if (gap.w < nearestGap) { nearestGap = gap.w; nearest = v.w; }
+  if (gap.z < nearestGap) { nearestGap = gap.z; nearest = v.z; }
+  if (gap.x < nearestGap) { nearestGap = gap.x; nearest = v.x; }
+  if (gap.y < nearestGap) { nearestGap = gap.y; nearest = v.y; }
+  return total > 1e-4 ? dot(w, v) / total : nearest;
+}
+#endif
+#endif

@@ -23,10 +23,12 @@
 //   constant, approximates it at depth edges (section 6).
 #include "vtkFXDirectionalOcclusionPass.h"
 #include "vtkFXBilateralBlurPass.h"
+#include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXRenderUtilities.h"
 #include "vtkFXSSAOPass.h"
+#include "vtkFXScenes.h"
 #include "vtkFXOcclusionTestUtilities.h"
 #include "vtkFXTestUtilities.h"
 
@@ -652,6 +654,36 @@ int TestSSAO(int, char*[])
       FX_CHECK(separable[0] > 1e-3 && separable[1] <= 0.005,
         "the separable blur is not the approximation it should be at depth edges");
     }
+  }
+
+  // 7. The composite's depth-aware upsample of the half-resolution
+  // occlusion (DepthAwareUpsample, with textureGather where it exists) is
+  // the blur's upsample pass (vtkFXJointUpsample.glsl with texel fetches,
+  // written as 8 bits): the occlusion views within 2 levels (the blur's
+  // 8-bit output and the order of the sums), over the crease with a plane
+  // floating above it; the bilinear read differs at its depth edges.
+  {
+    std::vector<unsigned char> views[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      Setup s = MakeSetup(window);
+      AddCrease(s);
+      const double o[3] = { -0.6, 0.25, 0.6 }, p1[3] = { 0.6, 0.25, 0.6 }, p2[3] = { -0.6, 0.25, 1.6 };
+      s.Renderer->AddActor(Plane(o, p1, p2));
+      s.Renderer->ResetCameraClippingRange();
+      s.Pipeline->GetSSAOPass()->SetRadius(radius);
+      s.Pipeline->GetSSAOPass()->SetDepthAwareUpsample(k != 2);
+      s.Pipeline->GetOcclusionBlurPass()->SetUpsample(k == 1);
+      s.Pipeline->GetCompositePass()->DebugOcclusionOn();
+      window->Render();
+      views[k] = vtkFXScenes::Capture(window);
+    }
+    const int joint = vtkFXScenes::MaxDifference(views[0], views[1]);
+    const int bilinear = vtkFXScenes::MaxDifference(views[2], views[1]);
+    std::cout << "composite's depth-aware upsample against the blur's: at most " << joint
+              << " levels apart (bilinear: " << bilinear << ")" << std::endl;
+    FX_CHECK(!views[0].empty() && joint <= 2 && bilinear > 10,
+      "the composite's upsample is not the blur's joint-bilateral one");
   }
   return EXIT_SUCCESS;
 }
