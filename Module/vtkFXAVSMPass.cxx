@@ -832,9 +832,12 @@ bool vtkFXAVSMPass::GetShadesForward()
 
 void vtkFXAVSMPass::BeginForwardShading(const vtkRenderState* s)
 {
-  // Nothing captured this frame (no casting light, no GL 4.3): no shadows.
+  // Nothing captured this frame (no casting light, no GL 4.3, or a G-buffer
+  // that could not be made, which leaves this pass out of the frame and
+  // its curves from an earlier one): no shadows.
   const bool ready = this->Exact ? this->Buffers[HeadsBuffer] != 0 : !this->Curves.empty();
-  if (!ready || this->CastingLights.empty() || this->Views.empty() || !this->Visibility)
+  if (!ready || this->CastingLights.empty() || this->Views.empty() || !this->Visibility ||
+    (this->GBuffer && !this->GBuffer->GetFrameComplete()))
   {
     return;
   }

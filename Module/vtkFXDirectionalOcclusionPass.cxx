@@ -191,7 +191,8 @@ std::string vtkFXDirectionalOcclusionPass::ChannelsReadCode()
 
 vtkTextureObject* vtkFXDirectionalOcclusionPass::BleedingToShow()
 {
-  if (this->Bleeding <= 0.0 || !this->BleedingTexture)
+  // (as GetOutput("bleeding"): only beside this frame's occlusion)
+  if (!this->GetOutput("bleeding").Texture)
   {
     return nullptr;
   }

@@ -1,5 +1,7 @@
 #include "vtkFXHDRTargetPass.h"
 
+#include "vtkFXGBufferPass.h"
+
 #include "vtkFXHDRResolveFS.h"
 #include "vtkFXRenderUtilities.h"
 
@@ -121,7 +123,8 @@ void vtkFXHDRTargetPass::Render(const vtkRenderState* s)
   const int width = std::max(viewport[2], 1);
   const int height = std::max(viewport[3], 1);
 
-  const bool keepDepth = ren->GetPreserveDepthBuffer() || !ren->GetErase();
+  const bool keepDepth = ren->GetPreserveDepthBuffer() || !ren->GetErase() ||
+    (this->GBuffer && !this->GBuffer->GetFrameComplete());
   this->DepthFormat = vtkFXRenderUtilities::GetReadDepthFormat(window);
   vtkFXRenderUtilities::EnsureTexture(
     this->Color, window, width, height, vtkFXRenderUtilities::RGBA16F);

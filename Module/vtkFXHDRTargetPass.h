@@ -40,6 +40,7 @@
 
 #include <string>
 
+class vtkFXGBufferPass;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLState;
@@ -70,6 +71,14 @@ public:
    */
   int GetBytesPerPixel() const;
 
+  /**
+   * The G-buffer of the frame (not owned; nullptr: none). When it could not
+   * be made (vtkFXGBufferPass::GetFrameComplete), the opaque props were
+   * drawn forward into the framebuffer: the target then starts with the
+   * framebuffer's depth too, so that what it draws is hidden behind them.
+   */
+  void SetGBuffer(vtkFXGBufferPass* gbuffer) { this->GBuffer = gbuffer; }
+
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
@@ -83,6 +92,7 @@ protected:
 
   vtkRenderPass* DelegatePass = nullptr;
   int DepthFormat = -1;
+  vtkFXGBufferPass* GBuffer = nullptr;
   bool WarnedDepthFormat = false;
   bool WarnedColorCopy = false;
   bool WarnedIncomplete = false;

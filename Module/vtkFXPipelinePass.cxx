@@ -639,6 +639,7 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
   this->AddEffectPasses(lit, order, E::PostProcess);
   if (postProcess)
   {
+    this->HDRTargetPass->SetGBuffer(deferred ? this->GBufferPass.Get() : nullptr);
     this->Sequence->AddPass("hdr-target", this->HDRTargetPass);
   }
   if (!scene.OverlayProps.empty())

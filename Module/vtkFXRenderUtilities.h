@@ -58,6 +58,14 @@ public:
   };
 
   /**
+   * "//VTK::System::Dec" and, after it, FX_GATHER 1 where textureGather can
+   * read any component (GLSL 4.00, or GLSL 1.50 with ARB_gpu_shader5), else
+   * 0 (and always 0 when `useTextureGather` is false): the start of a
+   * fragment shader's defines.
+   */
+  static const char* GatherDefines(bool useTextureGather);
+
+  /**
    * Bytes one texel of the format occupies.
    */
   static int GetBytesPerTexel(int format);
@@ -71,14 +79,6 @@ public:
    * memory) leaves a texture that makes a framebuffer incomplete: callers
    * check RenderTargetScope::IsComplete.
    */
-  /**
-   * "//VTK::System::Dec" and, after it, FX_GATHER 1 where textureGather can
-   * read any component (GLSL 4.00, or GLSL 1.50 with ARB_gpu_shader5), else
-   * 0 (and always 0 when `useTextureGather` is false): the start of a
-   * fragment shader's defines.
-   */
-  static const char* GatherDefines(bool useTextureGather);
-
   static bool EnsureTexture(vtkSmartPointer<vtkTextureObject>& texture,
     vtkOpenGLRenderWindow* window, int width, int height, int format);
 

@@ -399,11 +399,15 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
     {
       surfaces = this->GBuffer->GetDepthTexture();
     }
-    else if (!this->SurfaceMaskFailed)
+    else if (!this->SurfaceMaskFailed ||
+      this->SurfaceMaskFailedSize[0] != static_cast<int>(this->Occlusion->GetWidth()) ||
+      this->SurfaceMaskFailedSize[1] != static_cast<int>(this->Occlusion->GetHeight()))
     {
-      // (a mask that failed once, say a shader the driver refuses, would
-      // fail and warn again every frame)
+      // (a mask that failed, say for memory at a huge size, is tried again
+      // at another size only: it would fail and warn every frame)
       this->SurfaceMaskFailed = !this->MakeSurfaceMask(window, depth, step);
+      this->SurfaceMaskFailedSize[0] = static_cast<int>(this->Occlusion->GetWidth());
+      this->SurfaceMaskFailedSize[1] = static_cast<int>(this->Occlusion->GetHeight());
       surfaces = this->SurfaceMaskFailed ? nullptr : this->SurfaceMask.Get();
     }
   }

@@ -168,6 +168,8 @@ public:
    * upsample (four texels weighted by their depth's agreement with the
    * pixel's, vtkFXJointUpsample.glsl, tolerance 0.05 of the depth), so
    * occlusion does not bleed across depth edges; off, one bilinear read.
+   * (vtkFXDirectionalOcclusionPass reads its three channels bilinearly
+   * either way.)
    */
   vtkSetMacro(DepthAwareUpsample, bool);
   vtkGetMacro(DepthAwareUpsample, bool);
@@ -246,7 +248,8 @@ protected:
   vtkTextureObject* SkippedSurfaces = nullptr; // the depth the last frame was tested against
   double EffectiveRadius = 0.0;
   bool WarnedIncomplete = false; // the occlusion texture could not be made (said once)
-  bool SurfaceMaskFailed = false; // the mask could not be drawn: not retried (it warned)
+  bool SurfaceMaskFailed = false; // the mask could not be drawn: not retried at that size
+  int SurfaceMaskFailedSize[2] = { 0, 0 };
   int Channels = 1; // values the estimator writes per texel: 1 or 3
   int TileSize = 4; // side of the tile of per-pixel rotations: 4 or 8
 

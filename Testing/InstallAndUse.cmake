@@ -14,7 +14,8 @@ endfunction ()
 run("${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${prefix}")
 # (the build's own generator: the README installs ninja, not necessarily make)
 run("${CMAKE_COMMAND}" -S "${SOURCE_DIR}/Examples/Cxx" -B "${WORK}/example" -G "${GENERATOR}"
-  "-DvtkFX_DIR=${prefix}/lib/cmake/vtkFX" -DCMAKE_BUILD_TYPE=Release)
+  "-DCMAKE_MAKE_PROGRAM=${MAKE_PROGRAM}" "-DvtkFX_DIR=${prefix}/lib/cmake/vtkFX"
+  -DCMAKE_BUILD_TYPE=Release)
 run("${CMAKE_COMMAND}" --build "${WORK}/example")
 set(ENV{LD_LIBRARY_PATH} "${prefix}/lib")
 run("${WORK}/example/vtkfx-example" "${MESH}" "${WORK}/example.png")

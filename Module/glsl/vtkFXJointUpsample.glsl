@@ -45,7 +45,8 @@ vec4 fxJointUpsample(sampler2D lowResolution, bool depthInValue, sampler2D depth
   return total > 1e-4 ? sum / total : nearest;
 }
 
-#if defined(FX_GATHER) && FX_GATHER
+#ifdef FX_GATHER // (undefined in the blur: a strict compiler refuses it in #if)
+#if FX_GATHER
 // The same for one value with its depth in the next component (.r, .g:
 // the occlusion passes' output), from two gathers instead of four fetches
 // (a software rasteriser pays per fetch; used where textureGather reads
@@ -77,5 +78,6 @@ float fxJointUpsampleGathered(
   if (gap.y < nearestGap) { nearestGap = gap.y; nearest = v.y; }
   return total > 1e-4 ? dot(w, v) / total : nearest;
 }
+#endif
 #endif
 #endif

@@ -18,6 +18,7 @@
 #include "vtkFXTestUtilities.h"
 
 #include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkCallbackCommand.h"
 #include "vtkObjectFactory.h"
 #include "vtkVersion.h"
@@ -180,6 +181,18 @@ int CheckGBufferFailure(vtkRenderWindow* window)
   window->AddRenderer(renderer);
   std::string error;
   vtkFXScenes::Populate(renderer, "scene:corner", vtkFXScenes::Options(), error);
+  // The largest prop translucent: the others hide parts of it only where
+  // the frame keeps their depth (the HDR target, which the bloom
+  // schedules, starts from the framebuffer's depth then).
+  vtkActor* largest = nullptr;
+  vtkCollectionSimpleIterator it;
+  renderer->GetActors()->InitTraversal(it);
+  while (vtkActor* actor = renderer->GetActors()->GetNextActor(it))
+  {
+    largest = (!largest || actor->GetLength() > largest->GetLength()) ? actor : largest;
+  }
+  FX_CHECK(largest, "scene:corner has props");
+  largest->GetProperty()->SetOpacity(0.5);
   renderer->SetPass(nullptr);
   window->Render();
   const auto forward = vtkFXScenes::Capture(window);
@@ -198,6 +211,10 @@ int CheckGBufferFailure(vtkRenderWindow* window)
   pipeline->AmbientOcclusionOn();
   vtkNew<vtkFXToonPass> toon;
   pipeline->AddEffect("toon", toon);
+  // (a glow of nothing: light above 100 only; it brings the HDR target)
+  vtkNew<vtkFXBloomPass> bloom;
+  bloom->SetThreshold(100.0);
+  pipeline->AddEffect("bloom", bloom);
   renderer->SetPass(pipeline);
   window->Render();
   window->Render();
@@ -212,7 +229,7 @@ int CheckGBufferFailure(vtkRenderWindow* window)
       passes.find("ssao") == std::string::npos && passes.find("toon") == std::string::npos &&
       passes.find("gbuffer") != std::string::npos,
     passes);
-  FX_CHECK(psnr >= 50.0, "the opaque props drawn forward: " << psnr << " dB");
+  FX_CHECK(psnr >= 45.0, "the opaque props drawn forward: " << psnr << " dB");
   renderer->SetPass(nullptr);
   return EXIT_SUCCESS;
 }
