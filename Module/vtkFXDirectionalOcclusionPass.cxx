@@ -2,6 +2,7 @@
 
 #include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
+#include "vtkFXJointUpsample.h"
 #include "vtkFXLightingFS.h"
 #include "vtkFXOcclusionBasis.h"
 #include "vtkFXRenderUtilities.h"
@@ -178,13 +179,18 @@ std::string vtkFXDirectionalOcclusionPass::ChannelsReadCode()
   // read the nearest texel and unpack it. The horizon method's channels
   // are stored as (v + 0.5) / 2 (vtkFXSSAOFS.glsl): decoded here, for
   // every reader.
-  const std::string read = this->GetInput("denoised").Texture
+  // Blurred and at half resolution: upsampled by depth (DepthAwareUpsample).
+  const bool byDepth = this->UpsamplesByDepth(this->CompositeSource());
+  const std::string read = byDepth
+    ? "  vec3 stored = fxJointUpsample(@occlusion, true, @occlusion, 3, textureSize(@occlusion, "
+      "0), @step, ivec2(texCoord * vec2(@fullSize)), fxPixelDepth, 0.05).rgb;\n"
+    : this->GetInput("denoised").Texture
     ? "  vec3 stored = texture(@occlusion, texCoord * @scale + @offset).rgb;\n"
     : "  ivec2 size = textureSize(@occlusion, 0);\n"
       "  ivec2 t = clamp(ivec2((texCoord * @scale + @offset) * vec2(size)), ivec2(0), size - 1);\n"
       "  vec4 texel = texelFetch(@occlusion, t, 0);\n"
       "  vec3 stored = vec3(fxUnpack12(texel.r), texel.g);\n";
-  return "vec3 @channels()\n{\n" + read +
+  return std::string(byDepth ? vtkFXJointUpsample : "") + "vec3 @channels(float fxPixelDepth)\n{\n" + read +
     (this->GetEffectiveMethod() == Horizon ? "  return 2.0 * stored - 0.5;\n}\n"
                                            : "  return stored;\n}\n");
 }
@@ -216,7 +222,7 @@ std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
     case Declarations:
       // The occlusion texture's layout is vtkFXSSAOPass's (see there).
       return std::string("uniform sampler2D @occlusion;\nuniform vec2 @scale;\nuniform vec2 @offset;\n"
-                         "uniform int @written;\n") +
+                         "uniform int @written;\nuniform ivec2 @fullSize;\nuniform int @step;\n") +
         this->ChannelsReadCode() + (geometric ? "uniform sampler2D @geometric;\n" : "") +
         (bleeding ? "uniform sampler2D @bleeding;\nuniform float @bleedingStrength;\n"
                     "uniform vec2 @bleedingScale;\nuniform vec2 @bleedingOffset;\n"
@@ -238,7 +244,7 @@ std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
       {
         return "    if (@written != 0)\n"
                "    {\n"
-               "      ambientVisibility *= clamp(@channels(), 0.0, 1.0);\n"
+               "      ambientVisibility *= clamp(@channels(fxPixelDepth), 0.0, 1.0);\n"
                "    }";
       }
       // The seed's resolve: the channels weighted by the shading normal n's
@@ -247,7 +253,7 @@ std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
       // and the weights are 1/3 (the channels' mean).
       std::string code = "    if (@written != 0)\n"
                          "    {\n"
-                         "      vec3 channels = @channels();\n"
+                         "      vec3 channels = @channels(fxPixelDepth);\n"
                          "      vec3 g = n;\n";
       if (geometric)
       {

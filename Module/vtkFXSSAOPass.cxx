@@ -177,9 +177,10 @@ vtkFXEffectPass::Output vtkFXSSAOPass::CompositeSource()
 
 bool vtkFXSSAOPass::UpsamplesByDepth(const Output& source) const
 {
-  // (one value and its depth, read in the composite where depth exists)
+  // (plain values with their depth after them, read in the composite where
+  // depth exists: one value, or directional occlusion's three once blurred)
   return this->DepthAwareUpsample && source.Texture && source.Step > 1 &&
-    source.DepthComponent == 1 && source.Components == 1 && this->GBuffer &&
+    source.Packing == 0 && source.DepthComponent == source.Components && this->GBuffer &&
     this->GBuffer->GetChannelTexture(vtkFXGBufferPass::LinearDepth);
 }
 

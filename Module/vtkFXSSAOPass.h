@@ -168,8 +168,7 @@ public:
    * upsample (four texels weighted by their depth's agreement with the
    * pixel's, vtkFXJointUpsample.glsl, tolerance 0.05 of the depth), so
    * occlusion does not bleed across depth edges; off, one bilinear read.
-   * (vtkFXDirectionalOcclusionPass reads its three channels bilinearly
-   * either way.)
+   * (vtkFXDirectionalOcclusionPass's three channels too, once blurred.)
    */
   vtkSetMacro(DepthAwareUpsample, bool);
   vtkGetMacro(DepthAwareUpsample, bool);
