@@ -15,6 +15,9 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
+#include <algorithm>
+#include <cmath>
+
 vtkStandardNewMacro(vtkFXBilateralBlurPass);
 
 namespace
@@ -46,6 +49,20 @@ unsigned int vtkFXBilateralBlurPass::GetRequiredChannels()
 vtkFXEffectPass::Output vtkFXBilateralBlurPass::GetOutput(const char* name)
 {
   return (name && std::string(name) == "blurred") ? this->Result : Output();
+}
+
+std::array<float, 17> vtkFXBilateralBlurPass::TapWeights() const
+{
+  // A Gaussian of sigma Radius / 2 (at least 1/2), or the box whose end
+  // taps weigh 1/2 (see Kernel); entry |i| for the tap i texels away.
+  std::array<float, 17> weights{};
+  const double sigma = std::max(0.5 * this->Radius, 0.5);
+  for (int i = 0; i <= this->Radius && i < 17; ++i)
+  {
+    weights[i] = this->Kernel == Box ? (i == this->Radius ? 0.5f : 1.0f)
+                                     : static_cast<float>(std::exp(-0.5 * i * i / (sigma * sigma)));
+  }
+  return weights;
 }
 
 int vtkFXBilateralBlurPass::OutputFormat() const
@@ -131,6 +148,10 @@ bool vtkFXBilateralBlurPass::RunStage(int mode, vtkRenderer* renderer,
   program->SetUniform2i("fxInputSize", inputSize);
   program->SetUniformi("fxStep", step);
   program->SetUniformi("fxRadius", this->Radius);
+  if (program->IsUniformUsed("fxTapWeights"))
+  {
+    program->SetUniform1fv("fxTapWeights", 17, this->TapWeights().data());
+  }
   program->SetUniformf("fxDepthSigma", static_cast<float>(this->DepthSigma));
   this->Quads[mode].Helper->Render();
   input->Deactivate();

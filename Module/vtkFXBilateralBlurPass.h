@@ -44,6 +44,7 @@
 #include "vtkFXRenderUtilities.h" // for the full-screen quads
 #include "vtkSmartPointer.h"
 
+#include <array>
 #include <string>
 
 class vtkOpenGLFramebufferObject;
@@ -162,6 +163,8 @@ protected:
     vtkTextureObject* output, int step, bool packed, vtkTextureObject* surfaces = nullptr,
     const float* background = nullptr);
   int OutputFormat() const;
+  // The taps' distance weights, entry |i| (see fxTapWeights).
+  std::array<float, 17> TapWeights() const;
 
   int Radius = 4;
   int Kernel = Gaussian;

@@ -53,6 +53,10 @@ uniform ivec2 fxGBufferSize;
 uniform ivec2 fxInputSize;
 uniform int fxStep;          // G-buffer texels per input texel
 uniform int fxRadius;        // taps on each side
+// Weight of a tap i texels from the pixel along one axis, at |i| (1 at 0),
+// computed once on the CPU (an exp() per tap cost llvmpipe more than the
+// rest of the weight): a Gaussian of sigma radius / 2, or the box (FX_BOX).
+uniform float fxTapWeights[17];
 uniform float fxDepthSigma;  // fraction of the depth
 
 //VTK::FXNormalCoding::Dec
@@ -128,15 +132,6 @@ float fxGuideWeight(float d0, vec3 n0, vec4 g)
   return wn / (1.0 + r * r);
 }
 
-// Weight of a tap i texels from the pixel along one axis (1 at i = 0).
-float fxDistanceWeight(int i, float sigma)
-{
-#if FX_BOX
-  return abs(i) == fxRadius ? 0.5 : 1.0;
-#else
-  return exp(-0.5 * float(i * i) / (sigma * sigma));
-#endif
-}
 
 void main()
 {
@@ -167,11 +162,11 @@ void main()
 #else
   int rows = 0;
 #endif
-  float sigma = max(0.5 * float(fxRadius), 0.5);
   vec4 sum = value0;
   float total = 1.0;
   for (int j = -rows; j <= rows; ++j)
   {
+    float rowWeight = fxTapWeights[abs(j)];
     for (int i = -fxRadius; i <= fxRadius; ++i)
     {
       ivec2 q = p + i * along + ivec2(0, j);
@@ -182,8 +177,7 @@ void main()
       }
       vec4 tap, guide;
       fxReadTap(q, n0, tap, guide);
-      float w = fxDistanceWeight(i, sigma) * fxDistanceWeight(j, sigma) *
-        fxGuideWeight(d0, n0, guide);
+      float w = fxTapWeights[abs(i)] * rowWeight * fxGuideWeight(d0, n0, guide);
       sum += w * tap;
       total += w;
     }
