@@ -661,12 +661,15 @@ int TestSSAO(int, char*[])
   // the blur's upsample pass (vtkFXJointUpsample.glsl with texel fetches,
   // written as 8 bits): the occlusion views within 2 levels (the blur's
   // 8-bit output and the order of the sums), over the crease with a plane
-  // floating above it; the bilinear read differs at its depth edges.
+  // floating above it; the bilinear read differs at its depth edges. Also
+  // at an odd window size (the last half-resolution row and column stand
+  // for one pixel, which the gathers clamp as the fetches do).
+  for (vtkRenderWindow* target : { window.GetPointer(), oddWindow.GetPointer() })
   {
     std::vector<unsigned char> views[3];
     for (int k = 0; k < 3; ++k)
     {
-      Setup s = MakeSetup(window);
+      Setup s = MakeSetup(target);
       AddCrease(s);
       const double o[3] = { -0.6, 0.25, 0.6 }, p1[3] = { 0.6, 0.25, 0.6 }, p2[3] = { -0.6, 0.25, 1.6 };
       s.Renderer->AddActor(Plane(o, p1, p2));
@@ -675,12 +678,13 @@ int TestSSAO(int, char*[])
       s.Pipeline->GetSSAOPass()->SetDepthAwareUpsample(k != 2);
       s.Pipeline->GetOcclusionBlurPass()->SetUpsample(k == 1);
       s.Pipeline->GetCompositePass()->DebugOcclusionOn();
-      window->Render();
-      views[k] = vtkFXScenes::Capture(window);
+      target->Render();
+      views[k] = vtkFXScenes::Capture(target);
     }
     const int joint = vtkFXScenes::MaxDifference(views[0], views[1]);
     const int bilinear = vtkFXScenes::MaxDifference(views[2], views[1]);
-    std::cout << "composite's depth-aware upsample against the blur's: at most " << joint
+    std::cout << target->GetSize()[0] << " x " << target->GetSize()[1]
+              << ", composite's depth-aware upsample against the blur's: at most " << joint
               << " levels apart (bilinear: " << bilinear << ")" << std::endl;
     FX_CHECK(!views[0].empty() && joint <= 2 && bilinear > 10,
       "the composite's upsample is not the blur's joint-bilateral one");
