@@ -349,20 +349,19 @@ vtkFXRenderUtilities::RenderTargetScope::~RenderTargetScope()
   this->State->PopFramebufferBindings();
 }
 
-bool vtkFXRenderUtilities::DrawDepthMask(vtkOpenGLRenderWindow* window,
-  vtkSmartPointer<vtkTextureObject>& mask, vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
-  FullScreenQuad& quad, int width, int height, const std::string& fragmentShader,
+bool vtkFXRenderUtilities::DrawDepthMask(vtkOpenGLRenderWindow* window, DepthMask& mask,
+  int width, int height, const std::string& fragmentShader,
   const std::function<void(vtkShaderProgram*)>& setUniforms)
 {
-  EnsureTexture(mask, window, width, height, Depth32F);
-  if (!MakeDepthOnlyFramebuffer(framebuffer, window, mask))
+  EnsureTexture(mask.Texture, window, width, height, Depth32F);
+  if (!MakeDepthOnlyFramebuffer(mask.FrameBuffer, window, mask.Texture))
   {
     return false;
   }
   // (the scope saves and restores the framebuffer, viewport and depth
   // state; its framebuffer keeps the mask as its depth)
-  RenderTargetScope target(window, framebuffer, width, height);
-  vtkShaderProgram* program = ReadyQuad(quad, window, fragmentShader);
+  RenderTargetScope target(window, mask.FrameBuffer, width, height);
+  vtkShaderProgram* program = ReadyQuad(mask.Quad, window, fragmentShader);
   if (!program)
   {
     return false;
@@ -372,8 +371,15 @@ bool vtkFXRenderUtilities::DrawDepthMask(vtkOpenGLRenderWindow* window,
   state->vtkglDepthFunc(GL_ALWAYS);
   state->vtkglDepthMask(GL_TRUE);
   setUniforms(program);
-  quad.Helper->Render();
+  mask.Quad.Helper->Render();
   return true;
+}
+
+void vtkFXRenderUtilities::ReleaseDepthMask(DepthMask& mask, vtkWindow* window)
+{
+  ReleaseQuad(mask.Quad, window);
+  Release(mask.Texture, window);
+  Release(mask.FrameBuffer, window);
 }
 
 bool vtkFXRenderUtilities::RenderTargetScope::SkipWhereDepthIsOne(vtkTextureObject* depth)

@@ -298,18 +298,30 @@ public:
   };
 
   /**
-   * Draws a depth mask for RenderTargetScope::SkipWhereDepthIsOne: `mask`
-   * (made a width x height Depth32F texture here) takes, at every texel,
-   * the depth `fragmentShader` writes to gl_FragDepth (0 where a later pass
-   * must run, 1 where it need not), drawn with a full-screen `quad` into
-   * `framebuffer`. `setUniforms` sets the shader's uniforms (its textures
-   * activated by the caller). State comes back as it was. Returns false
-   * when the framebuffer or the shader cannot be made.
+   * A depth mask for RenderTargetScope::SkipWhereDepthIsOne and what draws
+   * it: the Depth32F texture, the framebuffer that holds it as its depth,
+   * and the full-screen quad of the mask's shader.
    */
-  static bool DrawDepthMask(vtkOpenGLRenderWindow* window, vtkSmartPointer<vtkTextureObject>& mask,
-    vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer, FullScreenQuad& quad, int width,
-    int height, const std::string& fragmentShader,
-    const std::function<void(vtkShaderProgram*)>& setUniforms);
+  struct DepthMask
+  {
+    vtkSmartPointer<vtkTextureObject> Texture;
+    vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;
+    FullScreenQuad Quad;
+  };
+
+  /**
+   * Draws `mask`: its texture (made a width x height Depth32F texture here)
+   * takes, at every texel, the depth `fragmentShader` writes to
+   * gl_FragDepth (0 where a later pass must run, 1 where it need not).
+   * `setUniforms` sets the shader's uniforms (its textures activated by the
+   * caller). State comes back as it was. Returns false when the framebuffer
+   * or the shader cannot be made.
+   */
+  static bool DrawDepthMask(vtkOpenGLRenderWindow* window, DepthMask& mask, int width, int height,
+    const std::string& fragmentShader, const std::function<void(vtkShaderProgram*)>& setUniforms);
+
+  /** Frees the mask's quad, texture and framebuffer (which holds the texture while attached). */
+  static void ReleaseDepthMask(DepthMask& mask, vtkWindow* window);
 
 protected:
   vtkFXRenderUtilities() = default;

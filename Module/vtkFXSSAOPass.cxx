@@ -400,21 +400,24 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
     {
       surfaces = this->GBuffer->GetDepthTexture();
     }
-    else if (!this->SurfaceMaskFailed ||
-      this->SurfaceMaskFailedSize[0] != static_cast<int>(this->Occlusion->GetWidth()) ||
-      this->SurfaceMaskFailedSize[1] != static_cast<int>(this->Occlusion->GetHeight()))
+    else
     {
       // (a mask that failed, say for memory at a huge size, is tried again
       // at another size only: it would fail and warn every frame)
-      this->SurfaceMaskFailed = !this->MakeSurfaceMask(window, depth, step);
-      this->SurfaceMaskFailedSize[0] = static_cast<int>(this->Occlusion->GetWidth());
-      this->SurfaceMaskFailedSize[1] = static_cast<int>(this->Occlusion->GetHeight());
-      surfaces = this->SurfaceMaskFailed ? nullptr : this->SurfaceMask.Get();
+      const int size[2] = { static_cast<int>(this->Occlusion->GetWidth()),
+        static_cast<int>(this->Occlusion->GetHeight()) };
+      if (size[0] != this->SurfaceMaskFailedSize[0] || size[1] != this->SurfaceMaskFailedSize[1])
+      {
+        const bool made = this->MakeSurfaceMask(window, depth, step);
+        this->SurfaceMaskFailedSize[0] = made ? 0 : size[0];
+        this->SurfaceMaskFailedSize[1] = made ? 0 : size[1];
+        surfaces = made ? this->SurfaceMask.Texture.Get() : nullptr;
+      }
     }
   }
   if (!surfaces || step == 1)
   {
-    this->ReleaseSurfaceMask(window);
+    vtkFXRenderUtilities::ReleaseDepthMask(this->SurfaceMask, window);
   }
   vtkFXRenderUtilities::RenderTargetScope target(window, this->FrameBuffer, targets);
   if (!target.IsComplete())
@@ -481,8 +484,8 @@ bool vtkFXSSAOPass::MakeSurfaceMask(
     static_cast<int>(this->Occlusion->GetHeight()) };
   const int full[2] = { static_cast<int>(depth->GetWidth()), static_cast<int>(depth->GetHeight()) };
   depth->Activate();
-  const bool made = vtkFXRenderUtilities::DrawDepthMask(window, this->SurfaceMask,
-    this->SurfaceMaskFrameBuffer, this->SurfaceMaskQuad, size[0], size[1], vtkFXSurfaceMaskFS,
+  const bool made = vtkFXRenderUtilities::DrawDepthMask(window, this->SurfaceMask, size[0],
+    size[1], vtkFXSurfaceMaskFS,
     [&](vtkShaderProgram* program) {
       program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());
       program->SetUniform2i("fxGBufferSize", full);
@@ -492,19 +495,12 @@ bool vtkFXSSAOPass::MakeSurfaceMask(
   return made;
 }
 
-void vtkFXSSAOPass::ReleaseSurfaceMask(vtkWindow* window)
-{
-  // (the framebuffer holds the texture while it is attached: both go)
-  vtkFXRenderUtilities::ReleaseQuad(this->SurfaceMaskQuad, window);
-  vtkFXRenderUtilities::Release(this->SurfaceMask, window);
-  vtkFXRenderUtilities::Release(this->SurfaceMaskFrameBuffer, window);
-}
-
 void vtkFXSSAOPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->SkippedSurfaces = nullptr; // (the mask goes)
-  this->SurfaceMaskFailed = false; // (another context may draw it)
-  this->ReleaseSurfaceMask(w);
+  // (another context may draw it)
+  this->SurfaceMaskFailedSize[0] = this->SurfaceMaskFailedSize[1] = 0;
+  vtkFXRenderUtilities::ReleaseDepthMask(this->SurfaceMask, w);
   vtkFXRenderUtilities::ReleaseQuad(this->Quad, w);
   this->UnbindCompositeResources();
   vtkFXRenderUtilities::Release(this->Occlusion, w);

@@ -247,7 +247,8 @@ protected:
   vtkTextureObject* SkippedSurfaces = nullptr; // the depth the last frame was tested against
   double EffectiveRadius = 0.0;
   bool WarnedIncomplete = false; // the occlusion texture could not be made (said once)
-  bool SurfaceMaskFailed = false; // the mask could not be drawn: not retried at that size
+  // The mask could not be drawn at this size (0 x 0: it could): not
+  // retried until the size changes.
   int SurfaceMaskFailedSize[2] = { 0, 0 };
   int Channels = 1; // values the estimator writes per texel: 1 or 3
   int TileSize = 4; // side of the tile of per-pixel rotations: 4 or 8
@@ -257,13 +258,10 @@ protected:
   vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;
   vtkFXRenderUtilities::FullScreenQuad Quad;
   // At half resolution, Depth32F: 0 where a texel holds a surface (SkipBackground)
-  vtkSmartPointer<vtkTextureObject> SurfaceMask;
-  vtkSmartPointer<vtkOpenGLFramebufferObject> SurfaceMaskFrameBuffer;
-  vtkFXRenderUtilities::FullScreenQuad SurfaceMaskQuad;
+  vtkFXRenderUtilities::DepthMask SurfaceMask;
   bool MakeSurfaceMask(vtkOpenGLRenderWindow* window, vtkTextureObject* depth, int step);
   /** What the shader writes where there is no surface. */
   void GetOpenValue(float value[4]) const;
-  void ReleaseSurfaceMask(vtkWindow* window);
 
 private:
   vtkFXSSAOPass(const vtkFXSSAOPass&) = delete;

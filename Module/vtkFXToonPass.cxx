@@ -248,22 +248,13 @@ bool vtkFXToonPass::MakeEdgeMask(
   vtkShaderProgram::Substitute(
     fs, "//VTK::System::Dec", GatherDefinesFor(this->UseTextureGather), false);
   depth->Activate();
-  const bool made = vtkFXRenderUtilities::DrawDepthMask(window, this->EdgeMask,
-    this->EdgeMaskFrameBuffer, this->EdgeMaskQuad, size[0], size[1], fs,
+  const bool made = vtkFXRenderUtilities::DrawDepthMask(window, this->EdgeMask, size[0], size[1], fs,
     [&](vtkShaderProgram* program) {
       program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());
       program->SetUniform2i("fxGBufferSize", size);
     });
   depth->Deactivate();
   return made;
-}
-
-void vtkFXToonPass::ReleaseEdgeMask(vtkWindow* window)
-{
-  // (the framebuffer holds the texture while it is attached: both go)
-  vtkFXRenderUtilities::ReleaseQuad(this->EdgeMaskQuad, window);
-  vtkFXRenderUtilities::Release(this->EdgeMask, window);
-  vtkFXRenderUtilities::Release(this->EdgeMaskFrameBuffer, window);
 }
 
 std::string vtkFXToonPass::EdgesSource(bool imageStores) const
@@ -295,7 +286,7 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
   this->TilesFlagged = false;
   if (this->CullLineTiles && CanFlagLineTiles())
   {
-    this->ReleaseEdgeMask(window);
+    vtkFXRenderUtilities::ReleaseDepthMask(this->EdgeMask, window);
     this->TilesFlagged = this->StoreEdgeMarks(s, window, size);
     if (this->TilesFlagged)
     {
@@ -358,7 +349,7 @@ bool vtkFXToonPass::DrawEdgeMarks(
   }
   if (!masked)
   {
-    this->ReleaseEdgeMask(window);
+    vtkFXRenderUtilities::ReleaseDepthMask(this->EdgeMask, window);
   }
   vtkFXRenderUtilities::RenderTargetScope target(window, this->EdgeFrameBuffer, this->Edges);
   this->EdgeQuad.AtFarPlane = masked;
@@ -373,7 +364,7 @@ bool vtkFXToonPass::DrawEdgeMarks(
     // Rejected pixels keep "no mark".
     const float noMark[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     vtkFXRenderUtilities::ClearTargets(1, noMark);
-    target.SkipWhereDepthIsOne(this->EdgeMask);
+    target.SkipWhereDepthIsOne(this->EdgeMask.Texture);
   }
   this->RenderEdgesQuad(s, program, size);
   return true;
@@ -602,7 +593,7 @@ void vtkFXToonPass::Render(const vtkRenderState* s)
     vtkFXRenderUtilities::Release(this->Edges, window);
     vtkFXRenderUtilities::Release(this->EdgeFrameBuffer, window);
     vtkFXRenderUtilities::Release(this->MarkFrameBuffer, window);
-    this->ReleaseEdgeMask(window);
+    vtkFXRenderUtilities::ReleaseDepthMask(this->EdgeMask, window);
     return;
   }
   if (!this->GBuffer || !this->GBuffer->GetChannelTexture(GB::LinearDepth) ||
@@ -626,7 +617,7 @@ void vtkFXToonPass::Render(const vtkRenderState* s)
 void vtkFXToonPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkFXRenderUtilities::ReleaseQuad(this->EdgeQuad, w);
-  this->ReleaseEdgeMask(w);
+  vtkFXRenderUtilities::ReleaseDepthMask(this->EdgeMask, w);
   this->EdgeMaskFailed = false;
   this->LineTiles->ReleaseGraphicsResources();
   vtkFXRenderUtilities::Release(this->TileMask, w);

@@ -256,7 +256,6 @@ protected:
   bool DrawEdgeMarks(const vtkRenderState* s, vtkOpenGLRenderWindow* window, const int size[2]);
   void RenderEdgesQuad(const vtkRenderState* s, vtkShaderProgram* program, const int size[2]);
   bool MakeEdgeMask(vtkOpenGLRenderWindow* window, vtkTextureObject* depth, const int size[2]);
-  void ReleaseEdgeMask(vtkWindow* window);
   /** Texel offsets a line pixel reads marks from (first, last) at `height` rows. */
   void GetLineWindow(int height, int window[2]) const;
   void ClearTileMask(vtkOpenGLRenderWindow* window, const int size[2]);
@@ -293,9 +292,7 @@ protected:
   vtkFXRenderUtilities::FullScreenQuad EdgeQuad;
   // Depth32F, 0 where the edges pass can mark (SkipBackgroundEdges,
   // marks drawn as colour: without image stores or with CullLineTiles off)
-  vtkSmartPointer<vtkTextureObject> EdgeMask;
-  vtkSmartPointer<vtkOpenGLFramebufferObject> EdgeMaskFrameBuffer;
-  vtkFXRenderUtilities::FullScreenQuad EdgeMaskQuad;
+  vtkFXRenderUtilities::DepthMask EdgeMask;
   bool EdgeMaskFailed = false;
   vtkNew<vtkOpenGLVertexArrayObject> LineTiles; // no attributes: a point per tile, or one strip
   std::string LineSource; // the lines' fragment shader, generated

@@ -178,6 +178,16 @@ std::array<double, 2> ValueDifference(const std::vector<float>& a, const std::ve
   return { largest, count ? std::sqrt(squares / count) : 1e30 };
 }
 
+// The crease of AddCrease with a plane floating above its floor: depth
+// edges for the blur and the upsample to keep apart.
+void AddCreaseAndFloatingPlane(Setup& s)
+{
+  AddCrease(s);
+  const double o[3] = { -0.6, 0.25, 0.6 }, p1[3] = { 0.6, 0.25, 0.6 }, p2[3] = { -0.6, 0.25, 1.6 };
+  s.Renderer->AddActor(Plane(o, p1, p2));
+  s.Renderer->ResetCameraClippingRange();
+}
+
 float LowestOnPlane(const std::vector<float>& ao,
   const std::vector<std::array<double, 4>>& world, double margin, int& inside)
 {
@@ -609,11 +619,7 @@ int TestSSAO(int, char*[])
       }
       else
       {
-        AddCrease(s);
-        const double o[3] = { -0.6, 0.25, 0.6 }, p1[3] = { 0.6, 0.25, 0.6 },
-                     p2[3] = { -0.6, 0.25, 1.6 };
-        s.Renderer->AddActor(Plane(o, p1, p2));
-        s.Renderer->ResetCameraClippingRange();
+        AddCreaseAndFloatingPlane(s);
       }
       pass->SetMethod(vtkFXSSAOPass::Horizon);
       pass->SetRadius(radius);
@@ -670,10 +676,7 @@ int TestSSAO(int, char*[])
     for (int k = 0; k < 3; ++k)
     {
       Setup s = MakeSetup(target);
-      AddCrease(s);
-      const double o[3] = { -0.6, 0.25, 0.6 }, p1[3] = { 0.6, 0.25, 0.6 }, p2[3] = { -0.6, 0.25, 1.6 };
-      s.Renderer->AddActor(Plane(o, p1, p2));
-      s.Renderer->ResetCameraClippingRange();
+      AddCreaseAndFloatingPlane(s);
       s.Pipeline->GetSSAOPass()->SetRadius(radius);
       s.Pipeline->GetSSAOPass()->SetDepthAwareUpsample(k != 2);
       s.Pipeline->GetOcclusionBlurPass()->SetUpsample(k == 1);
