@@ -22,8 +22,9 @@
  * composite it scales the ambient visibility by the resolved value, read
  * from its optional input "denoised" (vtkFXBilateralBlurPass with three
  * components, which reads the packing in one fetch per tap) when that ran,
- * bilinearly: at a crease, the one full-resolution pixel between two
- * half-resolution texels blends channels of two bases.
+ * upsampled by depth as vtkFXSSAOPass::DepthAwareUpsample says (at a
+ * crease, the one full-resolution pixel between two half-resolution texels
+ * still blends channels of two bases).
  *
  * Method Hemisphere (the default, the seed's estimator): vtkFXSSAOPass's
  * hemisphere sampling (the seed's

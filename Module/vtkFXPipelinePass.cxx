@@ -179,9 +179,10 @@ vtkFXPipelinePass::vtkFXPipelinePass()
   this->OcclusionBlurPass = vtkSmartPointer<vtkFXBilateralBlurPass>::New();
   this->OcclusionBlurPass->SetInputConnection("source", "ssao.occlusion");
   this->SSAOPass->SetInputConnection("denoised", "ssao-blur.blurred");
-  // The composite samples the half-resolution occlusion bilinearly: at
-  // 1280x720 that saves a full-resolution pass, and the depth-aware upsample
-  // measured no better against the ray-traced reference (vtkfx-bench ao).
+  // The composite upsamples the half-resolution occlusion itself, by depth
+  // (vtkFXSSAOPass::DepthAwareUpsample, the same joint-bilateral weights as
+  // the blur's upsample pass): at 1280x720 that saves a full-resolution
+  // pass and its texture.
   this->OcclusionBlurPass->UpsampleOff();
   this->ApplyAmbientOcclusionPreset();
   this->DirectionalOcclusionPass = vtkSmartPointer<vtkFXDirectionalOcclusionPass>::New();

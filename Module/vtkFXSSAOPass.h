@@ -25,12 +25,12 @@
  * visible props' bounds, so any dataset scale works unchanged. Bias is a
  * fraction of the radius. Pair it with vtkFXBilateralBlurPass to remove the
  * noise of the rotated kernel (the blur can also upsample a half-resolution
- * result; the pipeline leaves that to the composite's bilinear read);
+ * result; the pipeline leaves that to the composite: DepthAwareUpsample);
  * vtkFXPipelinePass does so with SetAmbientOcclusion(true).
  *
  * Cost: one full-screen pass (a quarter of the pixels at half resolution)
- * with NumberOfSamples depth fetches per pixel, and one texture read per
- * pixel in the composite. The pixels without a surface are left out
+ * with NumberOfSamples depth fetches per pixel, and in the composite two
+ * gathers per pixel (one bilinear read with DepthAwareUpsample off). The pixels without a surface are left out
  * before the shader runs (SkipBackground): by the G-buffer's depth test at
  * full resolution, at half by a mask pass of one fetch per texel into a
  * Depth32F image of the pass's size (not with bleeding's second target).
