@@ -225,8 +225,13 @@ bool vtkFXAVSMPass::HasWork(const vtkFXSceneInfo& scene)
   {
     this->CastingLights.resize(this->MaximumNumberOfLights);
   }
-  return !this->CastingLights.empty() && !this->Casters.empty() && !scene.OpaqueProps.empty() &&
-    this->Superclass::HasWork(scene);
+  // Without opaque receivers only the translucent props can receive; the
+  // look-up (and the G-buffer's depth it reads) is then left out and the
+  // capture need not wait for the G-buffer.
+  this->OpaqueReceivers = this->Superclass::HasWork(scene);
+  this->Stage = this->OpaqueReceivers ? AfterGBuffer : LightSpace;
+  return !this->CastingLights.empty() && !this->Casters.empty() &&
+    (this->OpaqueReceivers || this->TranslucentReceivers);
 }
 
 int vtkFXAVSMPass::GetCastingLightIndex(int k) const
@@ -389,7 +394,7 @@ bool vtkFXAVSMPass::GetViewOrigin(int view, int origin[2]) const
 
 unsigned int vtkFXAVSMPass::GetRequiredChannels()
 {
-  return GB::ChannelBit(GB::LinearDepth);
+  return this->OpaqueReceivers ? GB::ChannelBit(GB::LinearDepth) : 0u;
 }
 
 vtkFXEffectPass::Output vtkFXAVSMPass::GetOutput(const char* name)
@@ -836,7 +841,7 @@ void vtkFXAVSMPass::BeginForwardShading(const vtkRenderState* s)
   // that could not be made, which leaves this pass out of the frame and
   // its curves from an earlier one): no shadows.
   const bool ready = this->Exact ? this->Buffers[HeadsBuffer] != 0 : !this->Curves.empty();
-  if (!ready || this->CastingLights.empty() || this->Views.empty() || !this->Visibility ||
+  if (!ready || !this->FrameReady || this->CastingLights.empty() || this->Views.empty() ||
     (this->GBuffer && !this->GBuffer->GetFrameComplete()))
   {
     return;
@@ -1229,6 +1234,21 @@ void vtkFXAVSMPass::ReleaseCurveUnits()
   }
 }
 
+void vtkFXAVSMPass::ComputeViewToLight(vtkOpenGLRenderer* ren)
+{
+  // For each light view: the viewer's view -> world -> light view -> light
+  // clip (the look-up's, kept for the translucent step).
+  vtkNew<vtkMatrix4x4> worldFromView;
+  worldFromView->DeepCopy(ren->GetActiveCamera()->GetViewTransformMatrix());
+  worldFromView->Invert();
+  for (LightView& view : this->Views)
+  {
+    vtkNew<vtkMatrix4x4> viewToLightView;
+    vtkMatrix4x4::Multiply4x4(view.Camera->GetViewTransformMatrix(), worldFromView, viewToLightView);
+    vtkMatrix4x4::Multiply4x4(view.Projection, viewToLightView, view.ViewToLight);
+  }
+}
+
 bool vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window)
 {
   vtkTextureObject* depth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
@@ -1244,17 +1264,7 @@ bool vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
   vtkShaderProgram::Substitute(fs, "//VTK::FXViewPosition::Dec", vtkFXViewPosition, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMCurves::Dec", this->CurveCode(), false);
 
-  // For each light view: the viewer's view -> world -> light view -> light
-  // clip (kept for the translucent step).
-  vtkNew<vtkMatrix4x4> worldFromView;
-  worldFromView->DeepCopy(ren->GetActiveCamera()->GetViewTransformMatrix());
-  worldFromView->Invert();
-  for (LightView& view : this->Views)
-  {
-    vtkNew<vtkMatrix4x4> viewToLightView;
-    vtkMatrix4x4::Multiply4x4(view.Camera->GetViewTransformMatrix(), worldFromView, viewToLightView);
-    vtkMatrix4x4::Multiply4x4(view.Projection, viewToLightView, view.ViewToLight);
-  }
+  this->ComputeViewToLight(ren);
 
   vtkFXRenderUtilities::RenderTargetScope target(window, this->LookUpFrameBuffer, this->Visibility);
   if (!target.IsComplete())
@@ -1293,10 +1303,14 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
   this->ErrorThisFrame = false;
   vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (!this->GBuffer || !this->GBuffer->GetChannelTexture(GB::LinearDepth) ||
+  this->FrameReady = false;
+  const bool opaqueReceivers = this->OpaqueReceivers;
+  if ((opaqueReceivers &&
+        (!this->GBuffer || !this->GBuffer->GetChannelTexture(GB::LinearDepth))) ||
     this->CastingLights.empty())
   {
-    this->ReportError("vtkFXAVSMPass needs a G-buffer with linear depth and a casting light.");
+    this->ReportError("vtkFXAVSMPass needs a casting light, and for opaque receivers a "
+                      "G-buffer with linear depth.");
     this->AbandonFrame(window);
     return;
   }
@@ -1372,7 +1386,17 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
     vtkFXRenderUtilities::Release(this->ResolveFrameBuffer, window);
   }
   phase(1);
-  drawn = drawn && this->LookUp(ren, window);
+  if (opaqueReceivers)
+  {
+    drawn = drawn && this->LookUp(ren, window);
+  }
+  else
+  {
+    // Only translucent props receive: the look-up has no one to shade.
+    vtkFXRenderUtilities::Release(this->Visibility, window);
+    vtkFXRenderUtilities::Release(this->LookUpFrameBuffer, window);
+    this->ComputeViewToLight(ren);
+  }
   phase(2);
   // The casters and lights are the frame's (HasWork sets them again); the
   // lights' indices and views stay for the translucent step.
@@ -1397,6 +1421,7 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
     this->AbandonFrame(window);
     return;
   }
+  this->FrameReady = true;
   if (!this->ErrorThisFrame)
   {
     this->LastError.clear(); // (a frame without trouble: a later failure is news)
@@ -1433,6 +1458,7 @@ void vtkFXAVSMPass::AbandonFrame(vtkOpenGLRenderWindow* window)
   // Nothing for the composite or the translucent step to read, and no
   // pointers into the scene kept.
   vtkFXRenderUtilities::Release(this->Visibility, window);
+  this->FrameReady = false;
   this->Views.clear();
   this->Casters.clear();
   this->CastingLights.clear();

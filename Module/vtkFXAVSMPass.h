@@ -45,15 +45,17 @@
  * RGBA32F for three or four); in the composite it scales that light's contribution
  * (LightVisibility hook).
  *
- * Work: some prop is translucent, some is opaque (a receiver) and a light
- * can cast (HasWork finds them, each frame: vtkFXPipelinePass calls it);
- * otherwise the pass, its buffers and the G-buffer's linear depth it reads
- * are left out. A list buffer too small for a frame (counted by the
+ * Work: some prop is translucent, a light can cast, and something
+ * receives: an opaque prop, or, with TranslucentReceivers on, the
+ * translucent props themselves (HasWork finds them, each frame:
+ * vtkFXPipelinePass calls it); otherwise the pass, its buffers and the
+ * G-buffer's linear depth it reads are left out. Without an opaque prop
+ * the pass runs at the LightSpace stage (capture and resolve, no look-up,
+ * no G-buffer): a particle cloud alone still shadows itself. A list buffer too small for a frame (counted by the
  * atomic counter; no out-of-bounds write happens) drops the extra fragments
  * that frame, warns once and grows for the next one.
  *
- * Receivers: opaque props (the look-up above) and translucent props (in a
- * scene that has some opaque prop: the pass runs after the G-buffer), whose
+ * Receivers: opaque props (the look-up above) and translucent props, whose
  * VTK shaders scale each casting light's terms by its visibility at each
  * fragment during the pipeline's translucent step. A translucent surface
  * does not shadow itself: casters within Bias of a fragment do not
@@ -368,6 +370,7 @@ protected:
   // Both return false when their target could not be allocated.
   bool Resolve(vtkOpenGLRenderWindow* window);
   bool LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window);
+  void ComputeViewToLight(vtkOpenGLRenderer* ren);
   std::string CurveDefines(bool exact) const;
   std::string CurveCode() const;
   void SetCurveUniforms(vtkShaderProgram* program);
@@ -414,6 +417,11 @@ protected:
   bool Profile = false;
   bool TranslucentReceivers = true;
   bool Receiving = false; // between Begin- and EndForwardShading
+  // Some prop is opaque this frame: the look-up runs after the G-buffer.
+  // Without one, the pass runs at the LightSpace stage, captures and
+  // resolves only, for the translucent receivers.
+  bool OpaqueReceivers = true;
+  bool FrameReady = false; // this frame's curves (or lists) are there to read
   vtkTimeStamp ShaderStageTime;
   double PhaseMilliseconds[3] = { 0.0, 0.0, 0.0 };
   bool WarnedUnsupported = false;
