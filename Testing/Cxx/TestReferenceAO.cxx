@@ -10,19 +10,58 @@
 // footprint), pixels farther than R from the wall are exactly 1, and the
 // traced standard error is far below the screen-space errors that
 // vtkfx-bench measures (< 0.01).
+// The same for the two other quantities vtkfx-bench do traces:
+// - directional occlusion, with a shading normal s = (sin a, 0, cos a)
+//   tilted towards the wall (a > 0) or away from it: the visibility
+//   weighted by max(0, s . w) over the floor's hemisphere, normalised by
+//   that weight's integral there (midpoint rule on (theta, phi));
+// - one bounce of diffuse light from a wall of albedo rho lit by a
+//   directional light with diffuse factor D (unshadowed, constant over the
+//   wall): rho D times the cosine-weighted share of rays that hit the wall
+//   within R, rho D (1 - A_binary(h)).
 #include "vtkFXReferenceAO.h"
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
 
 #include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkCamera.h"
+#include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 
 namespace
 {
+// The directional visibility at distance h from the wall, shading normal
+// tilted by `tilt` radians towards it (see the top of this file).
+double TiltedCreaseOcclusion(double h, double R, double tilt, int falloff)
+{
+  const int n = 600;
+  const double pi = 3.14159265358979323846;
+  const double s[3] = { std::sin(tilt), 0.0, std::cos(tilt) };
+  double occluded = 0.0, total = 0.0;
+  for (int i = 0; i < n; ++i)
+  {
+    const double theta = (i + 0.5) / n * pi / 2;
+    for (int j = 0; j < n; ++j)
+    {
+      const double phi = (j + 0.5) / n * 2 * pi;
+      const double w[3] = { std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+        std::cos(theta) };
+      const double weight = std::max(0.0, vtkMath::Dot(s, w)) * std::sin(theta);
+      total += weight;
+      if (w[0] > 0.0 && h / w[0] < R)
+      {
+        occluded += weight * (falloff == 0 ? 1.0 : 1.0 - std::cbrt(h / w[0] / R));
+      }
+    }
+  }
+  return 1.0 - occluded / total;
+}
+
 vtkSmartPointer<vtkActor> Plane(double ox, double oy, double oz, double ax, double ay, double az,
   double bx, double by, double bz)
 {
@@ -36,6 +75,135 @@ vtkSmartPointer<vtkActor> Plane(double ox, double oy, double oz, double ax, doub
   actor->SetMapper(mapper);
   return actor;
 }
+}
+
+// The floor's distance to the wall at pixel (x, y), or -1 on the wall.
+double FloorDistance(vtkMatrix4x4* inverse, int x, int y, int w, int h)
+{
+  double o[3], d[3];
+  vtkFXReferenceAO::PixelRay(inverse, x, y, w, h, o, d);
+  const double px = o[0] - o[2] / d[2] * d[0]; // where the ray meets the floor's plane
+  return px > -1e-3 ? -1.0 : -px;
+}
+
+vtkSmartPointer<vtkMatrix4x4> InversePixelProjection(vtkRenderer* renderer, int w, int h)
+{
+  auto inverse = vtkSmartPointer<vtkMatrix4x4>::New();
+  inverse->DeepCopy(
+    renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(double(w) / h, -1, 1));
+  inverse->Invert();
+  return inverse;
+}
+
+// Directional occlusion: the floor's pixels within R of the wall against
+// TiltedCreaseOcclusion, for a shading normal tilted 40 degrees towards
+// the wall and away from it (both falloffs), within 4 standard errors plus
+// 3e-3; the two tilts differ by far more than that.
+int CheckShadingNormals(
+  vtkRenderer* renderer, const vtkFXReferenceAO& reference, int w, int h, double R)
+{
+  auto inverse = InversePixelProjection(renderer, w, h);
+  for (int falloff : { vtkFXReferenceAO::Binary, vtkFXReferenceAO::CubeRoot })
+  {
+    for (double degrees : { 40.0, -40.0 })
+    {
+      const double tilt = vtkMath::RadiansFromDegrees(degrees);
+      std::vector<float> normals;
+      for (int i = 0; i < w * h; ++i)
+      {
+        normals.insert(normals.end(),
+          { static_cast<float>(std::sin(tilt)), 0.0f, static_cast<float>(std::cos(tilt)) });
+      }
+      const auto result = reference.Trace(renderer, w, h, R, 1024, falloff, 2, &normals);
+      double worst = 0.0;
+      int checked = 0;
+      for (int y = 0; y < h; ++y)
+      {
+        for (int x = 0; x < w; ++x)
+        {
+          const double distance = FloorDistance(inverse, x, y, w, h);
+          if (distance < 0.0 || distance > R)
+          {
+            continue;
+          }
+          const size_t i = static_cast<size_t>(y) * w + x;
+          const double expected = TiltedCreaseOcclusion(distance, R, tilt, falloff);
+          worst = std::max(worst, std::fabs(result.Occlusion[i] - expected));
+          FX_CHECK(std::fabs(result.Occlusion[i] - expected) <= 4.0 * result.StandardError[i] + 3e-3,
+            "shading normal tilted " << degrees << " degrees, pixel (" << x << "," << y
+                                     << ") at h = " << distance << ": traced "
+                                     << result.Occlusion[i] << ", closed form " << expected);
+          ++checked;
+        }
+      }
+      std::cout << vtkFXTest::FalloffName(falloff) << ", shading normal tilted " << degrees
+                << " degrees " << (degrees > 0 ? "towards" : "away from") << " the wall: "
+                << checked << " floor pixels, worst difference " << worst << std::endl;
+      FX_CHECK(checked > 50, "floor pixels near the wall in view");
+    }
+    const double toward = TiltedCreaseOcclusion(0.3 * R, R, vtkMath::RadiansFromDegrees(40.0), falloff);
+    const double away = TiltedCreaseOcclusion(0.3 * R, R, vtkMath::RadiansFromDegrees(-40.0), falloff);
+    FX_CHECK(away - toward > 0.1, "the tilts must differ: " << toward << " and " << away);
+  }
+  return EXIT_SUCCESS;
+}
+
+// One bounce: the wall coloured (1, 0.5, 0.25) with Diffuse 0.8, lit by a
+// white directional light of intensity 1 along (1, 0, -0.5) (diffuse factor
+// on the wall D = 1 / sqrt(1.25), on the floor's side); the floor black.
+// Each floor pixel within R: rho D (1 - A_binary(h)) per channel, within 4
+// standard errors of a mean of values in [0, rho D] (at most rho D / 2 /
+// sqrt(rays)) plus 2e-3; beyond R exactly 0.
+int CheckBleeding(vtkRenderer* renderer, int w, int h, double R)
+{
+  vtkActor* floor = vtkActor::SafeDownCast(renderer->GetActors()->GetItemAsObject(0));
+  vtkActor* wall = vtkActor::SafeDownCast(renderer->GetActors()->GetItemAsObject(1));
+  floor->GetProperty()->SetColor(0.0, 0.0, 0.0);
+  wall->GetProperty()->SetColor(1.0, 0.5, 0.25);
+  wall->GetProperty()->SetDiffuse(0.8);
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->PositionalOff();
+  light->SetPosition(-1.0, 0.0, 0.5);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->AddLight(light);
+  vtkFXReferenceAO reference;
+  std::string error;
+  FX_CHECK(reference.Build(renderer, error), error);
+  const int rays = 1024;
+  const auto bleeding = reference.TraceBleeding(renderer, w, h, R, rays);
+  auto inverse = InversePixelProjection(renderer, w, h);
+  const double rho[3] = { 0.8, 0.4, 0.2 };
+  const double D = 1.0 / std::sqrt(1.25);
+  double worst = 0.0;
+  int checked = 0, open = 0;
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      const double distance = FloorDistance(inverse, x, y, w, h);
+      if (distance < 0.0)
+      {
+        continue;
+      }
+      const double share = distance > R ? 0.0 : 1.0 - vtkFXTest::CreaseOcclusionBinary(distance, R);
+      for (int c = 0; c < 3; ++c)
+      {
+        const double expected = rho[c] * D * share;
+        const double traced = bleeding[3 * (static_cast<size_t>(y) * w + x) + c];
+        const double tolerance = 4.0 * rho[c] * D / 2.0 / std::sqrt(double(rays)) + 2e-3;
+        worst = std::max(worst, std::fabs(traced - expected));
+        FX_CHECK(std::fabs(traced - expected) <= (distance > R ? 0.0 : tolerance),
+          "bleeding at pixel (" << x << "," << y << "), h = " << distance << ", channel " << c
+                                << ": traced " << traced << ", closed form " << expected);
+      }
+      distance > R ? ++open : ++checked;
+    }
+  }
+  std::cout << "bleeding: " << checked << " floor pixels within R of the wall (worst difference "
+            << worst << "), " << open << " beyond it, exactly 0" << std::endl;
+  FX_CHECK(checked > 50 && open > 50, "both regions in view");
+  return EXIT_SUCCESS;
 }
 
 int TestReferenceAO(int, char*[])
@@ -104,5 +272,8 @@ int TestReferenceAO(int, char*[])
               << worst << "), " << open << " beyond it" << std::endl;
     FX_CHECK(checked > 50 && open > 50, "both regions in view");
   }
+  FX_CHECK(CheckShadingNormals(renderer, reference, w, h, R) == EXIT_SUCCESS,
+    "directional occlusion's reference");
+  FX_CHECK(CheckBleeding(renderer, w, h, R) == EXIT_SUCCESS, "bleeding's reference");
   return EXIT_SUCCESS;
 }
