@@ -30,10 +30,11 @@
 // the geometric hemisphere; the normals are the vtkFX G-buffer's, read
 // back from the directional-occlusion method's frame, so bumps and normal
 // textures enter both sides alike). Methods: directional occlusion at 9,
-// 15 (its default) and 30 samples; plain vtkFX SSAO with its default
-// (Medium) and with hemisphere samples at the directional default's
-// count, which is the cost it is compared with; vtkSSAOPass 16 and 64
-// with blur.
+// 15 (its default) and 30 samples, and with the horizon method at 16 and
+// 32; plain vtkFX SSAO with its default (Medium), with hemisphere samples
+// at the directional default's count, which is the cost it is compared
+// with, and each estimator with 32 samples; vtkSSAOPass 16 and 64 with
+// blur.
 #include "vtkFXBench.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXDirectionalOcclusionPass.h"

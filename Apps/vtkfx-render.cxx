@@ -257,6 +257,12 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
     error = "--do-method is directional occlusion's: add --effects do";
     return false;
   }
+  if (args.DOMethod == 1 && has("bleed"))
+  {
+    // (vtkFXDirectionalOcclusionPass would quietly take the hemisphere)
+    error = "'bleed' reads each hemisphere sample's occluder: --do-method horizon cannot bleed";
+    return false;
+  }
   if (has("do") && args.AOQualityGiven)
   {
     error = "--ao-quality picks an ambient-occlusion preset; 'do' has none (--ao-radius and "

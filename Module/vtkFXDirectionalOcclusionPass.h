@@ -63,7 +63,8 @@
  *
  * Cost: vtkFXSSAOPass's hemisphere pass (the same fetches; three weights
  * per occluded sample), a blur of three values (two passes of one
- * RGBA32F fetch per tap), one texture read in the composite, and while a
+ * RGBA32F fetch per tap), four texel reads in the composite (its
+ * depth-aware upsample; one with DepthAwareUpsample off), and while a
  * visible prop perturbs its normal the geometric-normal channel (4 bytes
  * per pixel, written by the G-buffer, read by the composite).
  */
@@ -90,7 +91,11 @@ public:
    * that bounce in the units of VTK's diffuse light, written to the output
    * "bleeding" (RGBA16F; blurred like the channels when the pipeline runs
    * it, input "bleeding-denoised"). The composite adds Bleeding x the
-   * surface's albedo x that to lit pixels: 1 is the physical one bounce.
+   * surface's albedo x that to lit pixels: 1 is the physical one bounce
+   * within R under the Binary falloff. Under CubeRoot the samples lie at
+   * u^3 R, so a bounce from distance t counts with the falloff's weight
+   * 1 - (t/R)^(1/3), as occlusion does (nearer occluders reflect more);
+   * vtkfx-bench do's reference is the unweighted one bounce.
    * Costs two more fetches per blocked sample and a second blur.
    */
   vtkFXSetClampMacro(Bleeding, double, 0.0, 10.0);

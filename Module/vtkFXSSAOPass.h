@@ -121,10 +121,10 @@ public:
    * Estimator (default Horizon). Measured with vtkfx-bench ao (640x480, half
    * resolution, blur radius 4, against the ray-traced reference of the same
    * falloff; see vtkFXPipelinePass::SetAmbientOcclusionQuality):
-   * - Binary: Horizon with 16 fetches is 2.2 to 4.2 dB ahead of the best
-   *   vtkSSAOPass setting on the five bench scenes (README); Hemisphere
+   * - Binary: Horizon with 16 fetches is 2.5 to 4.3 dB ahead of the best
+   *   vtkSSAOPass setting on the four bench scenes (README); Hemisphere
    *   with 8 (samples at distance R) is more accurate on scene:corner, but
-   *   behind Horizon on the other four.
+   *   behind Horizon on the other three.
    * - CubeRoot: Horizon with 8 fetches is 1.0 to 5.1 dB ahead of Hemisphere
    *   with 8; more horizon steps move away from this definition (they find
    *   higher horizons, which its falloff discounts).

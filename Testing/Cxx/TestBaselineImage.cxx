@@ -6,9 +6,11 @@
 // (the occlusion view after it) and "ssao-lit" (the lit image with it), or
 // toon shading: "toon" (bands and feature lines) and "lines" (lines alone),
 // "bloom" (the glow of emissive props), or "avsm" (shadows of translucent
-// props, vtkFXAVSMPass's defaults).
-//   TestBaselineImage INPUT lit|CHANNEL|ssao-raw|ssao-blur|ssao-lit|toon|lines|bloom|avsm
-//     -V baseline.png -T outdir
+// props, vtkFXAVSMPass's defaults); the ssao views with "-cuberoot" use
+// that falloff's preset; directional occlusion: "do-channels",
+// "do-resolved", "do-lit", "do-bleed".
+//   TestBaselineImage INPUT lit|CHANNEL|ssao-raw|ssao-blur|ssao-lit[-cuberoot]|toon|lines|
+//     bloom|avsm|do-channels|do-resolved|do-lit|do-bleed -V baseline.png -T outdir
 #include "vtkFXAVSMPass.h"
 #include "vtkFXBilateralBlurPass.h"
 #include "vtkFXBloomPass.h"

@@ -14,7 +14,7 @@
 //   fetches) and 0.02, 0.085 and 0.11 (CubeRoot, 8 fetches);
 //   every estimate darkens toward the crease band after band (bands of 20
 //   pixels or more);
-// - the horizon-based estimator keeps a flat plane at 0.93 or more;
+// - the horizon-based estimator keeps a flat plane at 0.92 or more;
 // - every value of every float read-back texture is finite, >= 0 and at
 //   most 1 (hemisphere) or pi/2 (horizon, before averaging over slices), at full
 //   and half resolution, blurred or not;
