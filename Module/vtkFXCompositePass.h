@@ -267,6 +267,9 @@ protected:
   vtkSmartPointer<vtkTextureObject> LightTexture;
   std::unique_ptr<vtkFXLightTiles> LightTiles;
   bool LightTilesUsed = false;
+  // The light texture's first row of a point light and of a spot light
+  // (rows sorted: directional, point, spot).
+  int FirstLightOfKind[2] = { 0, 0 };
   bool WarnedLightTiles = false;
   bool WarnedEarlierError = false; // a GL error pending before the depth copy (said once)
   vtkFXRenderUtilities::FullScreenQuad Quad;

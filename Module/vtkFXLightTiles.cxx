@@ -122,7 +122,7 @@ bool vtkFXLightTiles::CoveredTiles(const Light& light, const double p[16], int b
 }
 
 bool vtkFXLightTiles::Build(const std::vector<Light>& lights, const double projection[16],
-  int width, int height, const double depthRange[2])
+  int width, int height, const double depthRange[2], int firstRow, size_t pointLights)
 {
   const bool ranged = depthRange && depthRange[0] >= 0.0 && depthRange[1] > depthRange[0] &&
     std::isfinite(depthRange[1]);
@@ -151,50 +151,51 @@ bool vtkFXLightTiles::Build(const std::vector<Light>& lights, const double proje
       }
     }
   };
-  std::vector<size_t> counts(tiles, 0);
+  // Per tile, the point lights (lights[0, pointLights)) and the spot
+  // lights covering it; filled in the lights' order, so points come first.
+  const size_t points = std::min(pointLights, lights.size());
+  std::vector<size_t> counts(2 * tiles, 0);
   for (size_t i = 0; i < lights.size(); ++i)
   {
-    forEachCoveredTile(i, [&](size_t t) { ++counts[t]; });
+    const size_t kind = i < points ? 0 : 1;
+    forEachCoveredTile(i, [&](size_t t) { ++counts[2 * t + kind]; });
   }
   size_t total = 0;
-  for (size_t t = 0; t < tiles; ++t)
+  for (size_t c : counts)
   {
-    total += counts[t];
+    total += c;
   }
+  this->HeaderData.assign(HeaderValues * tiles, 0.0f);
   if (total > MaximumEntries || lights.size() > MaximumEntries)
   {
-    // One shared list of every light (row i is light i): exact, untiled.
+    // One shared list of every light: exact, untiled.
     this->IndexData.resize(std::max<size_t>(lights.size(), 1));
     for (size_t i = 0; i < this->IndexData.size(); ++i)
     {
-      this->IndexData[i] = static_cast<float>(i);
+      this->IndexData[i] = static_cast<float>(firstRow + i);
     }
-    this->HeaderData.assign(2 * tiles, 0.0f);
     for (size_t t = 0; t < tiles; ++t)
     {
-      this->HeaderData[2 * t + 1] = static_cast<float>(lights.size());
+      this->HeaderData[HeaderValues * t + 1] = static_cast<float>(points);
+      this->HeaderData[HeaderValues * t + 2] = static_cast<float>(lights.size() - points);
     }
     return false;
   }
-  this->HeaderData.assign(2 * tiles, 0.0f);
   total = 0;
+  std::vector<size_t> next(tiles);
   for (size_t t = 0; t < tiles; ++t)
   {
-    this->HeaderData[2 * t] = static_cast<float>(total);
-    total += counts[t];
+    this->HeaderData[HeaderValues * t] = static_cast<float>(total);
+    this->HeaderData[HeaderValues * t + 1] = static_cast<float>(counts[2 * t]);
+    this->HeaderData[HeaderValues * t + 2] = static_cast<float>(counts[2 * t + 1]);
+    next[t] = total;
+    total += counts[2 * t] + counts[2 * t + 1];
   }
   this->IndexData.assign(std::max<size_t>(total, 1), 0.0f);
-  std::fill(counts.begin(), counts.end(), 0);
   for (size_t i = 0; i < lights.size(); ++i)
   {
-    forEachCoveredTile(i, [&](size_t t) {
-      this->IndexData[static_cast<size_t>(this->HeaderData[2 * t]) + counts[t]++] =
-        static_cast<float>(i);
-    });
-  }
-  for (size_t t = 0; t < tiles; ++t)
-  {
-    this->HeaderData[2 * t + 1] = static_cast<float>(counts[t]);
+    forEachCoveredTile(
+      i, [&](size_t t) { this->IndexData[next[t]++] = static_cast<float>(firstRow + i); });
   }
   return true;
 }
@@ -202,10 +203,10 @@ bool vtkFXLightTiles::Build(const std::vector<Light>& lights, const double proje
 void vtkFXLightTiles::Upload(vtkOpenGLRenderWindow* window)
 {
   vtkFXRenderUtilities::EnsureTexture(
-    this->Headers, window, this->TilesX, this->TilesY, vtkFXRenderUtilities::RG32F);
+    this->Headers, window, this->TilesX, this->TilesY, vtkFXRenderUtilities::RGBA32F);
   this->Headers->Activate(); // its own unit: binding elsewhere could replace a sampler's texture
   glTexSubImage2D(
-    GL_TEXTURE_2D, 0, 0, 0, this->TilesX, this->TilesY, GL_RG, GL_FLOAT, this->HeaderData.data());
+    GL_TEXTURE_2D, 0, 0, 0, this->TilesX, this->TilesY, GL_RGBA, GL_FLOAT, this->HeaderData.data());
   const int entries = static_cast<int>(this->IndexData.size());
   const int rows = (entries + IndicesPerRow - 1) / IndicesPerRow;
   const int columns = std::min(entries, static_cast<int>(IndicesPerRow));
@@ -218,11 +219,11 @@ void vtkFXLightTiles::Upload(vtkOpenGLRenderWindow* window)
 
 double vtkFXLightTiles::GetMeanLightsPerTile() const
 {
-  const size_t tiles = this->HeaderData.size() / 2;
+  const size_t tiles = this->HeaderData.size() / HeaderValues;
   double sum = 0.0;
   for (size_t t = 0; t < tiles; ++t)
   {
-    sum += this->HeaderData[2 * t + 1];
+    sum += this->HeaderData[HeaderValues * t + 1] + this->HeaderData[HeaderValues * t + 2];
   }
   return tiles ? sum / tiles : 0.0;
 }

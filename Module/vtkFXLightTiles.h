@@ -17,9 +17,9 @@
  * the cost grows with the lights that reach a pixel, not with the lights
  * in the scene; the error is below the cutoff per light and channel.
  *
- * Textures (uploaded by Upload): headers, RG32F, one texel per tile
- * (first entry, count); indices, R32F, 4096 entries per row, each a light's
- * row in the composite's light texture. Floats hold the integers exactly
+ * Textures (uploaded by Upload): headers, RGBA32F, one texel per tile
+ * (first entry, point lights, spot lights); indices, R32F, 4096 entries per
+ * row, each a light's row in the composite's light texture. Floats hold the integers exactly
  * up to 2^24 entries (MaximumEntries): lists that would hold more (a
  * thousand lights that each cover a 4K viewport's 32,400 tiles) are not
  * built; every tile then lists every light, the untiled loop's cost, and
@@ -34,6 +34,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h" // for the textures held
 
+#include <limits>
 #include <vector>
 
 class vtkOpenGLRenderWindow;
@@ -45,6 +46,7 @@ public:
   static const int TileSize = 16;       // pixels
   static const int IndicesPerRow = 4096;
   static const size_t MaximumEntries = size_t(1) << 24;
+  static const size_t HeaderValues = 4; // per tile, see GetHeaderData
 
   vtkFXLightTiles();
   ~vtkFXLightTiles();
@@ -70,21 +72,26 @@ public:
 
   /**
    * Lists for a width x height viewport; `projection` is the camera's
-   * view-to-clip matrix (row-major). Light i of `lights` is row i of the
-   * light texture. With `depthRange` (the camera's clipping range, near
-   * and far distances), a light counts only for surfaces between those
-   * depths: one whose sphere crosses the camera's plane no longer reaches
-   * every tile unless its sphere reaches the visible depths there.
-   * Returns false when the lists would exceed MaximumEntries: every tile
-   * then lists every light.
+   * view-to-clip matrix (row-major). Light i of `lights` is row
+   * firstRow + i of the light texture; the first `pointLights` of them are
+   * point lights, the rest spot lights, which each tile lists after its
+   * point lights (the composite loops over each kind with its own code).
+   * With `depthRange` (the camera's clipping range, near and far
+   * distances), a light counts only for surfaces between those depths: one
+   * whose sphere crosses the camera's plane no longer reaches every tile
+   * unless its sphere reaches the visible depths there. Returns false when
+   * the lists would exceed MaximumEntries: every tile then lists every
+   * light.
    */
   bool Build(const std::vector<Light>& lights, const double projection[16], int width, int height,
-    const double depthRange[2] = nullptr);
+    const double depthRange[2] = nullptr, int firstRow = 0,
+    size_t pointLights = std::numeric_limits<size_t>::max());
 
   ///@{
   /**
-   * What the last Build made (for tests): per tile (first, count), and the
-   * entries.
+   * What the last Build made (for tests): per tile HeaderValues floats
+   * (first entry, point lights, spot lights, 0), and the entries (light
+   * texture rows).
    */
   const std::vector<float>& GetHeaderData() const { return this->HeaderData; }
   const std::vector<float>& GetIndexData() const { return this->IndexData; }
@@ -114,7 +121,7 @@ private:
   int Height = 0;
   int TilesX = 0;
   int TilesY = 0;
-  std::vector<float> HeaderData; // (first, count) per tile
+  std::vector<float> HeaderData; // (first, point lights, spot lights, 0) per tile
   std::vector<float> IndexData;
   vtkSmartPointer<vtkTextureObject> Headers;
   vtkSmartPointer<vtkTextureObject> Indices;

@@ -42,13 +42,19 @@ uniform sampler2D fxEmission;
 #endif
 #if FX_LIGHT_TEXTURE
 // Lights beyond VTK's per-light uniforms: 4 RGBA32F texels per light (one
-// row each): colour and positional flag; direction (view space) and cone
-// angle; position (view space) and exponent; attenuation.
+// row each): colour and attenuation a0; position (view space) and a1;
+// direction (view space) and a2; cone angle, exponent and the light's
+// place among those that are on. Rows sorted: directional lights, then
+// point lights (no cone) from fxFirstPoint, then spot lights from
+// fxFirstSpot (vtkFXCompositePass::UploadLightTexture).
 uniform sampler2D fxLights;
 uniform int fxLightCount;
+uniform int fxFirstPoint;
+uniform int fxFirstSpot;
 #if FX_LIGHT_TILES
-// Per 16 x 16 pixel tile, the lights that reach it (vtkFXLightTiles).
-uniform sampler2D fxLightTileHeaders; // (first entry, count)
+// Per 16 x 16 pixel tile, the positional lights that reach it
+// (vtkFXLightTiles).
+uniform sampler2D fxLightTileHeaders; // (first entry, point lights, spot lights)
 uniform sampler2D fxLightTileIndices; // light rows
 #endif
 #endif

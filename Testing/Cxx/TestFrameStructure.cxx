@@ -474,9 +474,20 @@ int TestHooks()
     p->Code[vtkFXEffectPass::Color] = "";
   }
 
-  // Two directional lights, on the uniform and on the light-texture path:
-  // hiding light 1 by visibility equals switching it off.
+  // A dim point light, then two directional lights, on the uniform and on
+  // the light-texture path (which sorts its rows: directional lights
+  // first): hiding light 2 by visibility equals switching it off.
   scene.Renderer->RemoveAllLights();
+  {
+    vtkNew<vtkLight> point;
+    point->SetLightTypeToSceneLight();
+    point->PositionalOn();
+    point->SetConeAngle(180.0);
+    point->SetPosition(0, -0.5, 3);
+    point->SetFocalPoint(0, 0, 0);
+    point->SetIntensity(0.1);
+    scene.Renderer->AddLight(point);
+  }
   for (double x : { -1.0, 1.0 })
   {
     vtkNew<vtkLight> light;
@@ -486,7 +497,7 @@ int TestHooks()
     light->SetIntensity(0.5);
     scene.Renderer->AddLight(light);
   }
-  vtkLight* second = vtkLight::SafeDownCast(scene.Renderer->GetLights()->GetItemAsObject(1));
+  vtkLight* second = vtkLight::SafeDownCast(scene.Renderer->GetLights()->GetItemAsObject(2));
   for (int maxUniform : { 8, 1 })
   {
     scene.Pipeline->GetCompositePass()->SetMaximumUniformLights(maxUniform);
@@ -494,7 +505,7 @@ int TestHooks()
     const auto firstOnly = scene.Centre();
     second->SwitchOn();
     const auto both = scene.Centre();
-    a->Code[vtkFXEffectPass::LightVisibility] = "if (lightIndex == 1) lightVisibility = 0.0;";
+    a->Code[vtkFXEffectPass::LightVisibility] = "if (lightIndex == 2) lightVisibility = 0.0;";
     const auto hidden = scene.Centre();
     a->Code[vtkFXEffectPass::LightVisibility] = "";
     std::cout << (maxUniform == 1 ? "light texture" : "uniforms") << ": first light "
@@ -506,8 +517,9 @@ int TestHooks()
   return EXIT_SUCCESS;
 }
 
-// 20 positional lights (spots and points, with attenuation) on the fandisk:
-// the light texture must give VTK's forward image.
+// 20 lights on the fandisk, in mixed order: spots and points with
+// attenuation, and two directional lights: the light texture (whose rows
+// are sorted by kind) must give VTK's forward image.
 int TestManyLights()
 {
   auto window = FreshWindow(400, 300);
@@ -527,7 +539,7 @@ int TestManyLights()
   {
     vtkNew<vtkLight> light;
     light->SetLightTypeToSceneLight();
-    light->PositionalOn();
+    light->SetPositional(i != 5 && i != 13); // two directional lights among them
     const double angle = 2.0 * 3.14159265358979 * i / 20;
     light->SetPosition(centre[0] + size * std::cos(angle), centre[1] + size * std::sin(angle),
       centre[2] + size * (0.5 + 0.05 * i));
@@ -552,7 +564,7 @@ int TestManyLights()
     const auto deferred = vtkFXScenes::Capture(window);
     const double psnr = vtkFXScenes::PSNR(forward, deferred, background);
     const int diff = vtkFXScenes::MaxDifference(forward, deferred);
-    std::cout << "20 positional lights, " << (maxUniform < 20 ? "light texture" : "uniforms")
+    std::cout << "20 lights of three kinds, " << (maxUniform < 20 ? "light texture" : "uniforms")
               << ": PSNR " << psnr << " dB, largest difference " << diff << std::endl;
     FX_CHECK(pipeline->GetLastSceneInfo().LightingComplexity == 3, "positional lighting");
     FX_CHECK(psnr >= 50.0 && diff <= 2, "matches VTK's forward render");

@@ -146,25 +146,42 @@ int TestLights(int, char*[])
 
   // Lists past 2^24 entries (17 lights over every tile of a 16384^2
   // viewport: 17.8 million) would lose exactness in their float offsets:
-  // every tile lists every light instead, in light order.
+  // every tile lists every light instead, in light order. The 17 are the
+  // light texture's rows 5 to 21, 12 point lights and then 5 spot lights.
   {
     vtkFXLightTiles tiles;
     std::vector<vtkFXLightTiles::Light> everywhere(17, { { 0.0, 0.0, -1.0 }, HUGE_VAL });
     const double identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
-    FX_CHECK(!tiles.Build(everywhere, identity, 16384, 16384), "the overflow is reported");
+    const size_t H = vtkFXLightTiles::HeaderValues;
+    FX_CHECK(!tiles.Build(everywhere, identity, 16384, 16384, nullptr, 5, 12),
+      "the overflow is reported");
     const auto& headers = tiles.GetHeaderData();
     const auto& entries = tiles.GetIndexData();
-    FX_CHECK(headers.size() == 2u * 1024 * 1024 && entries.size() == 17, "one shared list");
-    for (size_t t = 0; t < headers.size() / 2; ++t)
+    FX_CHECK(headers.size() == H * 1024 * 1024 && entries.size() == 17, "one shared list");
+    for (size_t t = 0; t < headers.size() / H; ++t)
     {
-      FX_CHECK(headers[2 * t] == 0.0f && headers[2 * t + 1] == 17.0f, "tile " << t);
+      FX_CHECK(headers[H * t] == 0.0f && headers[H * t + 1] == 12.0f && headers[H * t + 2] == 5.0f,
+        "tile " << t);
     }
     for (size_t i = 0; i < entries.size(); ++i)
     {
-      FX_CHECK(entries[i] == static_cast<float>(i), "entry " << i);
+      FX_CHECK(entries[i] == static_cast<float>(5 + i), "entry " << i);
     }
-    FX_CHECK(tiles.Build(everywhere, identity, 256, 256), "small lists are built");
+    FX_CHECK(tiles.Build(everywhere, identity, 256, 256, nullptr, 5, 12), "small lists are built");
     FX_CHECK(tiles.GetIndexData().size() == 17u * 16 * 16, "every tile lists the 17 lights");
+    // Each tile's list: its point lights, then its spot lights.
+    for (size_t t = 0; t < 16 * 16; ++t)
+    {
+      const auto& h = tiles.GetHeaderData();
+      FX_CHECK(h[H * t + 1] == 12.0f && h[H * t + 2] == 5.0f, "tile " << t << " counts");
+      const size_t first = static_cast<size_t>(h[H * t]);
+      for (size_t k = 0; k < 17; ++k)
+      {
+        FX_CHECK(tiles.GetIndexData()[first + k] == static_cast<float>(5 + k),
+          "tile " << t << " entry " << k);
+      }
+    }
+    FX_CHECK(std::fabs(tiles.GetMeanLightsPerTile() - 17.0) < 1e-12, "17 lights per tile");
   }
 
   // A light whose sphere crosses the camera's plane lights surfaces only
