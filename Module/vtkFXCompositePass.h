@@ -26,9 +26,12 @@
  * pixel), then a lighting pass whose depth test leaves out the background
  * before the fragment shader runs (see UseDepthPrepass), with one texture read per
  * allocated channel and a loop over the lights per surface pixel (on the
- * light-texture path, over the lights of the pixel's tile, with 5 texel
- * reads per light, 4 without culling, and building the tiles' lists on the
- * CPU), plus what the contributing effects' code costs.
+ * light-texture path, over the lights of the pixel's tile, with 4 texel
+ * reads per point light (its tile entry and three of its row), 5 per spot
+ * light, 2 per directional light (which every pixel loops over), one less
+ * without culling, and building the tiles' lists on the CPU), plus what
+ * the contributing effects' code costs. The rows are sorted by kind and
+ * each kind has its own loop, so no light pays for another kind's terms.
  *
  * Effects contribute code at the composite's hook points (declarations,
  * per-light visibility, ambient visibility, final colour; see
