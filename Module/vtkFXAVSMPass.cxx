@@ -31,7 +31,7 @@
 #include "vtkTextureObject.h"
 #include "vtkTimerLog.h"
 #include "vtkTranslucentPass.h"
-#include "vtk_glew.h"
+#include "vtkFXOpenGL.h"
 
 #include <algorithm>
 #include <cmath>
@@ -135,7 +135,7 @@ double Brightness(vtkLight* light)
 // barriers: all of OpenGL 4.3 (llvmpipe has 4.5).
 bool StorageBuffersSupported()
 {
-  return glewIsSupported("GL_VERSION_4_3");
+  return vtkFXRenderUtilities::IsOpenGLSupported("GL_VERSION_4_3");
 }
 
 // VTK's point-gaussian splats (vtkPointGaussianGS.glsl: a triangle around

@@ -20,7 +20,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkFXOpenGL.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkFXOpenGL.h"
 
 #include <algorithm>
 #include <cmath>

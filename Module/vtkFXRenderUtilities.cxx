@@ -11,9 +11,11 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkFXOpenGL.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstring>
 
 vtkStandardNewMacro(vtkFXRenderUtilities);
 
@@ -287,6 +289,33 @@ vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow
 {
 }
 
+bool vtkFXRenderUtilities::IsOpenGLSupported(const char* name)
+{
+  if (!name)
+  {
+    return false;
+  }
+  int major = 0, minor = 0;
+  if (std::sscanf(name, "GL_VERSION_%d_%d", &major, &minor) == 2)
+  {
+    GLint has[2] = { 0, 0 };
+    glGetIntegerv(GL_MAJOR_VERSION, &has[0]);
+    glGetIntegerv(GL_MINOR_VERSION, &has[1]);
+    return has[0] > major || (has[0] == major && has[1] >= minor);
+  }
+  GLint count = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+  for (GLint i = 0; i < count; ++i)
+  {
+    const char* extension = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, i));
+    if (extension && std::strcmp(extension, name) == 0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow* window,
   vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
   const std::vector<vtkTextureObject*>& targets)
@@ -323,7 +352,8 @@ vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow
   // incomplete, which its users check). One with a depth attachment (the
   // masks of DrawDepthMask) has that size and needs neither.
   if (targets.empty() &&
-    (glewIsSupported("GL_VERSION_4_3") || glewIsSupported("GL_ARB_framebuffer_no_attachments")))
+    (IsOpenGLSupported("GL_VERSION_4_3") ||
+      IsOpenGLSupported("GL_ARB_framebuffer_no_attachments")))
   {
     glFramebufferParameteri(GL_DRAW_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_WIDTH, width);
     glFramebufferParameteri(GL_DRAW_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_HEIGHT, height);

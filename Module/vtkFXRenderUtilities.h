@@ -71,6 +71,13 @@ public:
   static int GetBytesPerTexel(int format);
 
   /**
+   * Whether the current OpenGL context has `name`: "GL_VERSION_4_3" (that
+   * version or later) or an extension ("GL_ARB_clear_texture"). Asks the
+   * context itself (core OpenGL 3.0 queries), whichever loader VTK uses.
+   */
+  static bool IsOpenGLSupported(const char* name);
+
+  /**
    * Make `texture` a width x height 2D texture of the given format.
    * Allocates only when it is missing or its size or format differ, and
    * then sets nearest filtering and clamped edges (a texture kept from an

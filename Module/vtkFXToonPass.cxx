@@ -23,7 +23,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkFXOpenGL.h"
 
 #include <algorithm>
 #include <limits>
@@ -217,12 +217,13 @@ bool vtkFXToonPass::CanFlagLineTiles()
 {
   // The shaders are GLSL 1.50 (VTK's version line) and enable the
   // extension by name: GL 4.2 alone is not enough.
-  const bool imageStores = glewIsSupported("GL_ARB_shader_image_load_store");
+  using U = vtkFXRenderUtilities;
+  const bool imageStores = U::IsOpenGLSupported("GL_ARB_shader_image_load_store");
   const bool textureClears =
-    glewIsSupported("GL_VERSION_4_4") || glewIsSupported("GL_ARB_clear_texture");
+    U::IsOpenGLSupported("GL_VERSION_4_4") || U::IsOpenGLSupported("GL_ARB_clear_texture");
   // (the marks' framebuffer has no colour attachment)
-  const bool noAttachments =
-    glewIsSupported("GL_VERSION_4_3") || glewIsSupported("GL_ARB_framebuffer_no_attachments");
+  const bool noAttachments = U::IsOpenGLSupported("GL_VERSION_4_3") ||
+    U::IsOpenGLSupported("GL_ARB_framebuffer_no_attachments");
   // (a flagged tile is drawn as a point as wide as the tile)
   float pointSizes[2] = { 1.0f, 1.0f };
   glGetFloatv(GL_POINT_SIZE_RANGE, pointSizes);

@@ -62,7 +62,7 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkPointData.h"
 #include "vtkCellData.h"
-#include "vtk_glew.h"
+#include "vtkFXOpenGL.h"
 
 #include <algorithm>
 #include <array>

@@ -36,7 +36,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 #include "vtkOpenGLState.h"
-#include "vtk_glew.h"
+#include "vtkFXOpenGL.h"
 
 #include <functional>
 #include <limits>

@@ -44,7 +44,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkSphereSource.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkFXOpenGL.h"
 
 #include <algorithm>
 #include <cmath>
@@ -1007,12 +1007,38 @@ int TestPipelineOwner()
   return EXIT_SUCCESS;
 }
 
+// vtkFXRenderUtilities::IsOpenGLSupported answers from the context (no
+// GLEW): llvmpipe's 4.5 core context has 3.2 and 4.5, not 99.0; it has
+// the extensions vtkFX's paths test for, and not a made-up one.
+int TestOpenGLQueries()
+{
+  auto window = FreshWindow(64, 64);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  window->Render();
+  window->MakeCurrent();
+  using U = vtkFXRenderUtilities;
+  FX_CHECK(U::IsOpenGLSupported("GL_VERSION_3_2") && U::IsOpenGLSupported("GL_VERSION_4_5"),
+    "the context's version");
+  FX_CHECK(!U::IsOpenGLSupported("GL_VERSION_99_0") && !U::IsOpenGLSupported("GL_VERSION_4_99"),
+    "a version above the context's");
+  FX_CHECK(U::IsOpenGLSupported("GL_ARB_shader_image_load_store") &&
+      U::IsOpenGLSupported("GL_ARB_clear_texture"),
+    "llvmpipe's extensions");
+  FX_CHECK(!U::IsOpenGLSupported("GL_FX_no_such_extension") && !U::IsOpenGLSupported(nullptr) &&
+      !U::IsOpenGLSupported("GL_ARB"),
+    "an extension the context lacks");
+  std::cout << "OpenGL queries: versions and extensions answered from the context" << std::endl;
+  return EXIT_SUCCESS;
+}
+
 int TestFrameStructure(int, char*[])
 {
   auto window = vtkFXTest::MakeWindow(400, 300);
   SharedWindow = window;
-  for (auto test : { TestStages, TestConnections, TestHooks, TestManyLights, TestLayers,
-         TestDepthPrepass, TestEmission, TestHDRIdentity, TestHDRRobustness, TestPipelineOwner })
+  for (auto test : { TestOpenGLQueries, TestStages, TestConnections, TestHooks, TestManyLights,
+         TestLayers, TestDepthPrepass, TestEmission, TestHDRIdentity, TestHDRRobustness,
+         TestPipelineOwner })
   {
     if (test() != EXIT_SUCCESS)
     {
