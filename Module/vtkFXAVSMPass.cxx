@@ -12,7 +12,8 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkCompositePolyDataMapper2.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkMapper.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -111,7 +112,10 @@ bool CanCast(vtkProp* prop)
   vtkProperty* back = actor->GetBackfaceProperty();
   vtkShaderProperty* shaders = actor->GetShaderProperty();
   return (back && !(back->GetOpacity() <= 0.0)) ||
-    vtkCompositePolyDataMapper2::SafeDownCast(actor->GetMapper()) ||
+    // (composite data whichever mapper draws it: VTK 9.3 replaced
+    // vtkCompositePolyDataMapper2 with vtkCompositePolyDataMapper)
+    (actor->GetMapper() &&
+      vtkCompositeDataSet::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0))) ||
     (shaders && (shaders->GetNumberOfShaderReplacements() > 0 || shaders->HasVertexShaderCode() ||
                   shaders->HasFragmentShaderCode() || shaders->HasGeometryShaderCode()));
 }

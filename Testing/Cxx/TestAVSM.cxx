@@ -62,6 +62,9 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkPointData.h"
 #include "vtkCellData.h"
+#include "vtkCompositePolyDataMapper2.h"
+#include "vtkCompositeDataDisplayAttributes.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkFXOpenGL.h"
 
 #include <algorithm>
@@ -1164,6 +1167,29 @@ int TestAVSM(int, char*[])
     Visibility(window, avsm, { slab }, true);
     FX_CHECK(avsm->GetCapacity() > 0, "an actor of opacity 0 with a back-face property of "
                                       "opacity 0.5 was left out of the casters");
+  }
+  // So does one of opacity 0 that draws composite data, whose blocks may
+  // have opacities of their own (here 0.5: its shadow is 0.5).
+  {
+    vtkNew<vtkPlaneSource> plane;
+    plane->SetOrigin(-10.0, -10.0, 1.0);
+    plane->SetPoint1(0.0, -10.0, 1.0);
+    plane->SetPoint2(-10.0, 10.0, 1.0);
+    plane->Update();
+    vtkNew<vtkMultiBlockDataSet> blocks;
+    blocks->SetBlock(0, plane->GetOutput());
+    vtkNew<vtkCompositePolyDataMapper2> mapper;
+    mapper->SetInputDataObject(blocks);
+    vtkNew<vtkCompositeDataDisplayAttributes> attributes;
+    mapper->SetCompositeDataDisplayAttributes(attributes);
+    mapper->SetBlockOpacity(1, 0.5); // (flat index 1: block 0)
+    auto slab = vtkSmartPointer<vtkActor>::New();
+    slab->SetMapper(mapper);
+    slab->GetProperty()->SetOpacity(0.0);
+    auto avsm = MakeAVSM(8, false, true);
+    FX_CHECK(CheckHalves("opacity 0, composite data with a block of opacity 0.5",
+               Visibility(window, avsm, { slab }, true), 0.5, 1e-3) == EXIT_SUCCESS,
+      "composite data's block opacity left out of the casters");
   }
 
   auto avsm = MakeAVSM(8, false, true);
