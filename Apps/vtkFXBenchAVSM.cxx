@@ -157,8 +157,21 @@ void WriteRayPlot(std::vector<Method>& methods, const std::string& title, const 
       continue;
     }
     m.Window->MakeCurrent();
+    // The slices span the casters' depth range of the view that holds the
+    // texel (a point light's cube has six, each its own range).
+    int view = 0;
+    for (int v = 0; v < m.AVSM->GetNumberOfViews(); ++v)
+    {
+      int origin[2];
+      const int size = m.AVSM->GetShadowMapSize();
+      if (m.AVSM->GetViewOrigin(v, origin) && x >= origin[0] && x < origin[0] + size &&
+        y >= origin[1] && y < origin[1] + size)
+      {
+        view = v;
+      }
+    }
     double range[2];
-    m.AVSM->GetCasterDepthRange(range);
+    m.AVSM->GetCasterDepthRange(range, view);
     if (m.AVSM->GetTexelCurve(x, y, nodeDepths, nodeTau))
     {
       addLine(m.Name + " " + m.Setting,
@@ -244,6 +257,7 @@ int BenchAVSM(const Options& o)
     { "vtkfx-avsm", "16 nodes", 16, false, nodes },
     { "opacity-shadow-map", "8 slices (memory of 4 nodes)", 4, false, slices },
     { "opacity-shadow-map", "16 slices (memory of 8 nodes)", 8, false, slices },
+    { "opacity-shadow-map", "32 slices (memory of 16 nodes)", 16, false, slices },
     { "vtkfx-exact", "all fragments", 8, true, nodes },
     { "vtk-shadow-map", "vtkShadowMapPass 1024", -1, false, nodes } };
   for (auto& m : methods)
