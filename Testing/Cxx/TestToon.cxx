@@ -754,6 +754,112 @@ int CheckScaledScreenshot(vtkRenderWindow* window)
 }
 }
 
+// A lit floor (40 x 40, z = 0) seen from 2, 5 and 15 degrees above it in
+// perspective: its depth changes fast across pixels near the horizon, but
+// it is one plane, so the silhouette test (positions against the tangent
+// planes, relative to depth) must draw no line on it. Lines may only run
+// along the floor's border with the background (within 3 px of a
+// background pixel): no pixel farther in has coverage above 0.04.
+int CheckGrazingFloor(vtkRenderWindow* window)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-20.0, -20.0, 0.0);
+  plane->SetPoint1(20.0, -20.0, 0.0);
+  plane->SetPoint2(-20.0, 20.0, 0.0);
+  plane->SetResolution(40, 40);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(plane->GetOutputPort());
+  vtkNew<vtkActor> floor;
+  floor->SetMapper(mapper);
+  floor->GetProperty()->SetAmbient(0.4);
+  floor->GetProperty()->SetDiffuse(0.6);
+  int width = 0, height = 0;
+  for (double elevation : { 2.0, 5.0, 15.0 })
+  {
+    vtkFXToonPass* toon = MakeScene(window, floor, false);
+    toon->BandsOff();
+    width = window->GetSize()[0];
+    height = window->GetSize()[1];
+    vtkCamera* camera = window->GetRenderers()->GetFirstRenderer()->GetActiveCamera();
+    const double a = vtkMath::RadiansFromDegrees(elevation);
+    camera->SetPosition(0.0, -15.0 * std::cos(a), 15.0 * std::sin(a));
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    camera->SetViewAngle(40.0);
+    window->GetRenderers()->GetFirstRenderer()->ResetCameraClippingRange();
+    std::vector<unsigned char> plain;
+    const auto coverage = LineCoverage(window, toon, &plain);
+    unsigned char background[3];
+    vtkFXScenes::BackgroundBytes(window->GetRenderers()->GetFirstRenderer(), background);
+    const auto isBackground = [&](int x, int y) {
+      const size_t i = 3 * (static_cast<size_t>(y) * width + x);
+      return plain[i] == background[0] && plain[i + 1] == background[1] &&
+        plain[i + 2] == background[2];
+    };
+    int interior = 0, stray = 0;
+    for (int y = 0; y < height; ++y)
+    {
+      for (int x = 0; x < width; ++x)
+      {
+        bool nearBorder = false;
+        for (int dy = -3; dy <= 3 && !nearBorder; ++dy)
+        {
+          for (int dx = -3; dx <= 3 && !nearBorder; ++dx)
+          {
+            const int u = x + dx, v = y + dy;
+            nearBorder = u >= 0 && v >= 0 && u < width && v < height && isBackground(u, v);
+          }
+        }
+        if (nearBorder)
+        {
+          continue;
+        }
+        ++interior;
+        stray += coverage[static_cast<size_t>(y) * width + x] > 0.04 ? 1 : 0;
+      }
+    }
+    std::cout << "floor seen from " << elevation << " degrees: " << interior
+              << " pixels away from its border, " << stray << " with a line" << std::endl;
+    FX_CHECK(interior > width * height / 4, "the floor fills little of the view");
+    FX_CHECK(stray == 0, stray << " line pixels on a plane seen at " << elevation << " degrees");
+  }
+  return EXIT_SUCCESS;
+}
+
+// LineColor: red lines on the sphere's silhouette. Where the green
+// channel says a pixel is covered by c (> 0.3), its red channel is the
+// blend c x 255 + (1 - c) x plain, within 3 levels (8-bit rounding of
+// both images and of the blend).
+int CheckLineColor(vtkRenderWindow* window)
+{
+  window->SetSize(400, 300);
+  vtkFXToonPass* toon = MakeScene(window, Sphere(0.4, 0.6), true);
+  toon->BandsOff();
+  toon->SetLineColor(1.0, 0.0, 0.0);
+  window->Render();
+  const auto lined = vtkFXScenes::Capture(window);
+  toon->FeatureLinesOff();
+  window->Render();
+  const auto plain = vtkFXScenes::Capture(window);
+  toon->FeatureLinesOn();
+  const auto coverage = Coverage(lined, plain);
+  int checked = 0;
+  double worst = 0.0;
+  for (size_t i = 0; i < coverage.size(); ++i)
+  {
+    if (coverage[i] > 0.3)
+    {
+      const double expected = coverage[i] * 255.0 + (1.0 - coverage[i]) * plain[3 * i];
+      worst = std::max(worst, std::fabs(lined[3 * i] - expected));
+      ++checked;
+    }
+  }
+  std::cout << "red lines: " << checked << " covered pixels, red off the blend by at most "
+            << worst << " levels" << std::endl;
+  FX_CHECK(checked > 200 && worst <= 3.0, "line colour: " << worst << " levels off");
+  return EXIT_SUCCESS;
+}
+
 int TestToon(int, char*[])
 {
   // One window for every part: a window per part can exhaust a virtual X
@@ -778,6 +884,8 @@ int TestToon(int, char*[])
   FX_CHECK(CheckUnlitBackdrop(window) == EXIT_SUCCESS, "unlit backdrop");
   FX_CHECK(CheckScaledScreenshot(window) == EXIT_SUCCESS, "scaled screenshot");
   FX_CHECK(CheckOffsetViewport(window) == EXIT_SUCCESS, "offset viewport");
+  FX_CHECK(CheckGrazingFloor(window) == EXIT_SUCCESS, "floor at grazing angles");
+  FX_CHECK(CheckLineColor(window) == EXIT_SUCCESS, "line colour");
 
   // What a configuration needs and no more: bands alone read no linear
   // depth; lines of no kind (silhouettes and creases off) are no work.
