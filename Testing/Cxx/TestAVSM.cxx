@@ -724,7 +724,28 @@ int TestAVSM(int, char*[])
     const auto v = Visibility(window, avsm, { Layers(heights, 0.9999) }, true, 2);
     FX_CHECK(CheckHalves(exactMode ? "1000 layers, exact" : "1000 layers, AVSM-8", v, 0.0, 1e-6) ==
         EXIT_SUCCESS, "");
-    if (!exactMode)
+    if (exactMode)
+    {
+      // The deep shadow map itself: along the ray with the most fragments,
+      // 1000 segments, each of finite non-negative optical depth
+      // (-ln 0.0001 = 9.21), so the transmittance in front of any depth
+      // never increases along the ray.
+      int x = 0, y = 0;
+      std::vector<double> depths, tau;
+      FX_CHECK(avsm->GetLongestListTexel(x, y) && avsm->GetTexelFragments(x, y, depths, tau),
+        "no list to read back");
+      double total = 0.0;
+      for (double t : tau)
+      {
+        FX_CHECK(std::isfinite(t) && t >= 0.0, "a segment's optical depth " << t);
+        total += t;
+      }
+      std::cout << "1000 layers, exact: " << tau.size() << " segments on the longest ray, optical "
+                << "depth " << total << std::endl;
+      FX_CHECK(tau.size() == 1000 && std::fabs(total - 1000 * -std::log(1e-4)) < 1.0,
+        tau.size() << " segments of optical depth " << total);
+    }
+    else
     {
       // Along every light ray the curve's nodes go deeper and the optical
       // depth never decreases (transmittance never increases), finite.
