@@ -41,6 +41,7 @@ using GB = vtkFXGBufferPass;
 
 // Texels per light in the light texture, and the layout both sides share.
 constexpr int LightTexels = 4;
+static_assert(LightTexels == vtkFXLightTiles::EntryTexels, "tile entries copy whole rows");
 
 // Wraps one light's call so that the effects' per-light visibility code can
 // scale what this light contributes; without such code, the call adds
@@ -98,8 +99,9 @@ std::string UniformLightCalls(int complexity, int lightCount, const std::string&
 // point lights at 1280x720 on llvmpipe: 83-89 ms to 77). `fetches` lists
 // the texels a kind reads; the light's row in VTK's order (for the
 // effects' per-light code) is read only when such code exists.
+// A light's texels come from `sampler` at texel `at` + (k, 0) for texel k.
 std::string LightLoopBody(const std::string& call, const std::string& fetches,
-  const std::string& visibilityCode)
+  const std::string& visibilityCode, const std::string& sampler, const std::string& at)
 {
   std::string body;
   std::string wanted = fetches + (visibilityCode.empty() ? "" : "3");
@@ -107,8 +109,8 @@ std::string LightLoopBody(const std::string& call, const std::string& fetches,
   {
     if (wanted.find(texel) != std::string::npos)
     {
-      body += std::string("      vec4 light") + texel + " = texelFetch(fxLights, ivec2(" + texel +
-        ", i), 0);\n";
+      body += std::string("      vec4 light") + texel + " = texelFetch(" + sampler + ", " + at +
+        " + ivec2(" + texel + ", 0), 0);\n";
     }
   }
   return body + LightTerm(call, "int(light3.z)", visibilityCode) + "    }\n";
@@ -117,7 +119,8 @@ std::string LightLoopBody(const std::string& call, const std::string& fetches,
 // Loops over the light texture: directional lights over every pixel;
 // positional ones over all of them or, with tiles, over this pixel's tile
 // (vtkFXLightTiles: per tile the first entry and the counts of point and
-// spot lights; entries hold light rows, IndicesPerRow to a row).
+// spot lights; each entry a copy of its light's row, EntriesPerRow to a
+// row of the entries' texture).
 std::string TextureLightLoop(int complexity, const std::string& visibilityCode, bool tiled)
 {
   const std::string attenuation = "vec3(light0.w, light1.w, light2.w)";
@@ -125,10 +128,10 @@ std::string TextureLightLoop(int complexity, const std::string& visibilityCode, 
   code += "    for (int i = 0; i < fxFirstPoint; ++i)\n    {\n";
   code += complexity == 2
     ? LightLoopBody("fxDirectionalLight(n, view, light2.xyz, light0.rgb, specularPower, ", "02",
-        visibilityCode)
+        visibilityCode, "fxLights", "ivec2(0, i)")
     : LightLoopBody("fxPositionalLight(n, position, view, 0, light2.xyz, vec3(0.0), vec3(1.0, 0.0, "
                     "0.0), 180.0, 1.0, light0.rgb, specularPower, ",
-        "02", visibilityCode);
+        "02", visibilityCode, "fxLights", "ivec2(0, i)");
   if (complexity < 3)
   {
     return code; // (directional lights only)
@@ -140,25 +143,25 @@ std::string TextureLightLoop(int complexity, const std::string& visibilityCode, 
   if (!tiled)
   {
     code += "    for (int i = fxFirstPoint; i < fxFirstSpot; ++i)\n    {\n" +
-      LightLoopBody(point, "012", visibilityCode);
+      LightLoopBody(point, "012", visibilityCode, "fxLights", "ivec2(0, i)");
     code += "    for (int i = fxFirstSpot; i < fxLightCount; ++i)\n    {\n" +
-      LightLoopBody(spot, "0123", visibilityCode);
+      LightLoopBody(spot, "0123", visibilityCode, "fxLights", "ivec2(0, i)");
     return code;
   }
-  const std::string perRow = std::to_string(vtkFXLightTiles::IndicesPerRow);
-  const std::string row =
-    "      int i = int(texelFetch(fxLightTileIndices, ivec2(entry % " + perRow + ", entry / " +
-    perRow + "), 0).r);\n";
+  const std::string perRow = std::to_string(vtkFXLightTiles::EntriesPerRow);
+  const std::string entry = "      ivec2 fxAt = ivec2(" +
+    std::to_string(vtkFXLightTiles::EntryTexels) + " * (entry % " + perRow + "), entry / " +
+    perRow + ");\n";
   code += "    ivec2 fxTile = ivec2(texCoord * vec2(textureSize(fxAlbedo, 0))) / " +
     std::to_string(vtkFXLightTiles::TileSize) +
     ";\n"
     "    vec4 fxTileList = texelFetch(fxLightTileHeaders, fxTile, 0);\n"
     "    int fxPointsEnd = int(fxTileList.r) + int(fxTileList.g);\n"
     "    int fxSpotsEnd = fxPointsEnd + int(fxTileList.b);\n";
-  code += "    for (int entry = int(fxTileList.r); entry < fxPointsEnd; ++entry)\n    {\n" + row +
-    LightLoopBody(point, "012", visibilityCode);
-  code += "    for (int entry = fxPointsEnd; entry < fxSpotsEnd; ++entry)\n    {\n" + row +
-    LightLoopBody(spot, "0123", visibilityCode);
+  code += "    for (int entry = int(fxTileList.r); entry < fxPointsEnd; ++entry)\n    {\n" + entry +
+    LightLoopBody(point, "012", visibilityCode, "fxLightTileEntries", "fxAt");
+  code += "    for (int entry = fxPointsEnd; entry < fxSpotsEnd; ++entry)\n    {\n" + entry +
+    LightLoopBody(spot, "0123", visibilityCode, "fxLightTileEntries", "fxAt");
   return code;
 }
 
@@ -406,7 +409,11 @@ int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
         range = std::max(range, vtkFXLightTiles::Range(1.0, attenuation, 2.0 * raised));
       }
     }
-    r.Sphere = { { positionVC[0], positionVC[1], positionVC[2] }, range };
+    r.Sphere.Center[0] = positionVC[0];
+    r.Sphere.Center[1] = positionVC[1];
+    r.Sphere.Center[2] = positionVC[2];
+    r.Sphere.Radius = range;
+    std::copy(r.Texels, r.Texels + LightTexels * 4, r.Sphere.Row);
     rows.push_back(r);
   }
   std::stable_sort(
@@ -492,7 +499,7 @@ void vtkFXCompositePass::BuildLightTiles(
   const int firstPoint = this->FirstLightOfKind[0];
   if (!this->LightTiles->Build(lights, &projection->Element[0][0],
         static_cast<int>(albedo->GetWidth()), static_cast<int>(albedo->GetHeight()), depthRange,
-        firstPoint, this->FirstLightOfKind[1] - firstPoint) &&
+        static_cast<size_t>(this->FirstLightOfKind[1] - firstPoint)) &&
     !this->WarnedLightTiles)
   {
     vtkWarningMacro("The per-tile light lists would exceed "
@@ -525,7 +532,7 @@ void vtkFXCompositePass::SetUniforms(vtkShaderProgram* program, vtkOpenGLRendere
     if (this->LightTilesUsed)
     {
       BindSampler(program, "fxLightTileHeaders", this->LightTiles->GetHeaderTexture());
-      BindSampler(program, "fxLightTileIndices", this->LightTiles->GetIndexTexture());
+      BindSampler(program, "fxLightTileEntries", this->LightTiles->GetEntryTexture());
     }
   }
   else
@@ -767,7 +774,7 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
   if (this->LightTilesUsed)
   {
     this->LightTiles->GetHeaderTexture()->Deactivate();
-    this->LightTiles->GetIndexTexture()->Deactivate();
+    this->LightTiles->GetEntryTexture()->Deactivate();
   }
   for (const auto& contributor : this->Contributors)
   {

@@ -122,7 +122,7 @@ bool vtkFXLightTiles::CoveredTiles(const Light& light, const double p[16], int b
 }
 
 bool vtkFXLightTiles::Build(const std::vector<Light>& lights, const double projection[16],
-  int width, int height, const double depthRange[2], int firstRow, size_t pointLights)
+  int width, int height, const double depthRange[2], size_t pointLights)
 {
   const bool ranged = depthRange && depthRange[0] >= 0.0 && depthRange[1] > depthRange[0] &&
     std::isfinite(depthRange[1]);
@@ -166,13 +166,18 @@ bool vtkFXLightTiles::Build(const std::vector<Light>& lights, const double proje
     total += c;
   }
   this->HeaderData.assign(HeaderValues * tiles, 0.0f);
+  const size_t entryFloats = EntryTexels * 4;
+  const auto copyEntry = [&](size_t entry, size_t light) {
+    std::copy(lights[light].Row, lights[light].Row + entryFloats,
+      this->EntryData.begin() + entry * entryFloats);
+  };
   if (total > MaximumEntries || lights.size() > MaximumEntries)
   {
     // One shared list of every light: exact, untiled.
-    this->IndexData.resize(std::max<size_t>(lights.size(), 1));
-    for (size_t i = 0; i < this->IndexData.size(); ++i)
+    this->EntryData.assign(entryFloats * std::max<size_t>(lights.size(), 1), 0.0f);
+    for (size_t i = 0; i < lights.size(); ++i)
     {
-      this->IndexData[i] = static_cast<float>(firstRow + i);
+      copyEntry(i, i);
     }
     for (size_t t = 0; t < tiles; ++t)
     {
@@ -191,11 +196,10 @@ bool vtkFXLightTiles::Build(const std::vector<Light>& lights, const double proje
     next[t] = total;
     total += counts[2 * t] + counts[2 * t + 1];
   }
-  this->IndexData.assign(std::max<size_t>(total, 1), 0.0f);
+  this->EntryData.assign(entryFloats * std::max<size_t>(total, 1), 0.0f);
   for (size_t i = 0; i < lights.size(); ++i)
   {
-    forEachCoveredTile(
-      i, [&](size_t t) { this->IndexData[next[t]++] = static_cast<float>(firstRow + i); });
+    forEachCoveredTile(i, [&](size_t t) { copyEntry(next[t]++, i); });
   }
   return true;
 }
@@ -207,14 +211,17 @@ void vtkFXLightTiles::Upload(vtkOpenGLRenderWindow* window)
   this->Headers->Activate(); // its own unit: binding elsewhere could replace a sampler's texture
   glTexSubImage2D(
     GL_TEXTURE_2D, 0, 0, 0, this->TilesX, this->TilesY, GL_RGBA, GL_FLOAT, this->HeaderData.data());
-  const int entries = static_cast<int>(this->IndexData.size());
-  const int rows = (entries + IndicesPerRow - 1) / IndicesPerRow;
-  const int columns = std::min(entries, static_cast<int>(IndicesPerRow));
-  this->IndexData.resize(static_cast<size_t>(rows) * columns, 0.0f);
+  // EntriesPerRow entries of EntryTexels texels to a row: an entry never
+  // straddles two.
+  const size_t entryFloats = EntryTexels * 4;
+  const int entries = static_cast<int>(this->EntryData.size() / entryFloats);
+  const int rows = (entries + EntriesPerRow - 1) / EntriesPerRow;
+  const int columns = EntryTexels * std::min(entries, static_cast<int>(EntriesPerRow));
+  this->EntryData.resize(static_cast<size_t>(rows) * columns * 4, 0.0f);
   vtkFXRenderUtilities::EnsureTexture(
-    this->Indices, window, columns, rows, vtkFXRenderUtilities::R32F);
-  this->Indices->Activate();
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, columns, rows, GL_RED, GL_FLOAT, this->IndexData.data());
+    this->Entries, window, columns, rows, vtkFXRenderUtilities::RGBA32F);
+  this->Entries->Activate();
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, columns, rows, GL_RGBA, GL_FLOAT, this->EntryData.data());
 }
 
 double vtkFXLightTiles::GetMeanLightsPerTile() const
@@ -231,5 +238,5 @@ double vtkFXLightTiles::GetMeanLightsPerTile() const
 void vtkFXLightTiles::ReleaseGraphicsResources(vtkWindow* window)
 {
   vtkFXRenderUtilities::Release(this->Headers, window);
-  vtkFXRenderUtilities::Release(this->Indices, window);
+  vtkFXRenderUtilities::Release(this->Entries, window);
 }

@@ -18,12 +18,14 @@
  * in the scene; the error is below the cutoff per light and channel.
  *
  * Textures (uploaded by Upload): headers, RGBA32F, one texel per tile
- * (first entry, point lights, spot lights); indices, R32F, 4096 entries per
- * row, each a light's row in the composite's light texture. Floats hold the integers exactly
- * up to 2^24 entries (MaximumEntries): lists that would hold more (a
- * thousand lights that each cover a 4K viewport's 32,400 tiles) are not
- * built; every tile then lists every light, the untiled loop's cost, and
- * Build says so.
+ * (first entry, point lights, spot lights); entries, RGBA32F, 1024 to a
+ * row, each a copy of its light's row of the composite's light texture (4
+ * texels), so the composite reads a light straight from its tile's list
+ * (with an index per entry instead, that index's fetch was a tenth of a
+ * 1024-light frame). Lists past 2^20 entries (MaximumEntries, 64 MiB: a
+ * thousand lights that each cover a third of a 1280 x 720 viewport's
+ * tiles) are not built; every tile then lists every light, the untiled
+ * loop's cost, and Build says so.
  *
  * A plain C++ helper of vtkFXCompositePass (not wrapped).
  */
@@ -43,9 +45,10 @@ class vtkWindow;
 class VTKFX_EXPORT vtkFXLightTiles
 {
 public:
-  static const int TileSize = 16;       // pixels
-  static const int IndicesPerRow = 4096;
-  static const size_t MaximumEntries = size_t(1) << 24;
+  static const int TileSize = 16;        // pixels
+  static const int EntryTexels = 4;      // RGBA32F texels an entry holds (a light's row)
+  static const int EntriesPerRow = 1024; // of the entries' texture
+  static const size_t MaximumEntries = size_t(1) << 20;
   static const size_t HeaderValues = 4; // per tile, see GetHeaderData
 
   vtkFXLightTiles();
@@ -62,21 +65,23 @@ public:
 
   /**
    * A light as the composite uploads it: its sphere of influence in view
-   * coordinates (Radius infinite: every tile).
+   * coordinates (Radius infinite: every tile), and the EntryTexels x 4
+   * floats of its row in the composite's light texture, which every tile
+   * entry of it carries.
    */
   struct Light
   {
     double Center[3];
     double Radius;
+    float Row[EntryTexels * 4];
   };
 
   /**
    * Lists for a width x height viewport; `projection` is the camera's
-   * view-to-clip matrix (row-major). Light i of `lights` is row
-   * firstRow + i of the light texture; the first `pointLights` of them are
-   * point lights, the rest spot lights, which each tile lists after its
-   * point lights (the composite loops over each kind with its own code).
-   * With `depthRange` (the camera's clipping range, near and far
+   * view-to-clip matrix (row-major). The first `pointLights` of `lights`
+   * are point lights, the rest spot lights, which each tile lists after
+   * its point lights (the composite loops over each kind with its own
+   * code). With `depthRange` (the camera's clipping range, near and far
    * distances), a light counts only for surfaces between those depths: one
    * whose sphere crosses the camera's plane no longer reaches every tile
    * unless its sphere reaches the visible depths there. Returns false when
@@ -84,17 +89,17 @@ public:
    * light.
    */
   bool Build(const std::vector<Light>& lights, const double projection[16], int width, int height,
-    const double depthRange[2] = nullptr, int firstRow = 0,
+    const double depthRange[2] = nullptr,
     size_t pointLights = std::numeric_limits<size_t>::max());
 
   ///@{
   /**
    * What the last Build made (for tests): per tile HeaderValues floats
-   * (first entry, point lights, spot lights, 0), and the entries (light
-   * texture rows).
+   * (first entry, point lights, spot lights, 0), and the entries, each the
+   * EntryTexels x 4 floats of its light's row.
    */
   const std::vector<float>& GetHeaderData() const { return this->HeaderData; }
-  const std::vector<float>& GetIndexData() const { return this->IndexData; }
+  const std::vector<float>& GetEntryData() const { return this->EntryData; }
   ///@}
 
   /**
@@ -102,7 +107,7 @@ public:
    */
   void Upload(vtkOpenGLRenderWindow* window);
   vtkTextureObject* GetHeaderTexture() const { return this->Headers; }
-  vtkTextureObject* GetIndexTexture() const { return this->Indices; }
+  vtkTextureObject* GetEntryTexture() const { return this->Entries; }
 
   /**
    * Mean list length over the tiles of the last Build (lights per pixel,
@@ -122,9 +127,9 @@ private:
   int TilesX = 0;
   int TilesY = 0;
   std::vector<float> HeaderData; // (first, point lights, spot lights, 0) per tile
-  std::vector<float> IndexData;
+  std::vector<float> EntryData;
   vtkSmartPointer<vtkTextureObject> Headers;
-  vtkSmartPointer<vtkTextureObject> Indices;
+  vtkSmartPointer<vtkTextureObject> Entries;
 };
 
 #endif

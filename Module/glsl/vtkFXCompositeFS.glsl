@@ -55,7 +55,7 @@ uniform int fxFirstSpot;
 // Per 16 x 16 pixel tile, the positional lights that reach it
 // (vtkFXLightTiles).
 uniform sampler2D fxLightTileHeaders; // (first entry, point lights, spot lights)
-uniform sampler2D fxLightTileIndices; // light rows
+uniform sampler2D fxLightTileEntries; // copies of the lights' rows
 #endif
 #endif
 uniform float fxOcclusionDiffuseStrength;

@@ -144,20 +144,29 @@ int TestLights(int, char*[])
   std::cout << "attenuation (1, 1, 1e-20): range " << linearRange << std::endl;
   FX_CHECK(std::fabs(linearRange - 1023.0) < 1e-6, "range " << linearRange << " for (1, 1, 1e-20)");
 
-  // Lists past 2^24 entries (17 lights over every tile of a 16384^2
-  // viewport: 17.8 million) would lose exactness in their float offsets:
-  // every tile lists every light instead, in light order. The 17 are the
-  // light texture's rows 5 to 21, 12 point lights and then 5 spot lights.
+  // Lists past 2^20 entries (17 lights over every tile of a 16384^2
+  // viewport: 17.8 million) are not built: every tile lists every light
+  // instead, in light order. The 17 are 12 point lights and then 5 spot
+  // lights; each entry carries its light's row (here 16 times the light's
+  // number, 5 to 21).
   {
     vtkFXLightTiles tiles;
-    std::vector<vtkFXLightTiles::Light> everywhere(17, { { 0.0, 0.0, -1.0 }, HUGE_VAL });
+    std::vector<vtkFXLightTiles::Light> everywhere(17);
+    for (size_t k = 0; k < everywhere.size(); ++k)
+    {
+      everywhere[k].Center[0] = everywhere[k].Center[1] = 0.0;
+      everywhere[k].Center[2] = -1.0;
+      everywhere[k].Radius = HUGE_VAL;
+      std::fill(std::begin(everywhere[k].Row), std::end(everywhere[k].Row), 5.0f + k);
+    }
     const double identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
     const size_t H = vtkFXLightTiles::HeaderValues;
-    FX_CHECK(!tiles.Build(everywhere, identity, 16384, 16384, nullptr, 5, 12),
+    const size_t E = 4 * vtkFXLightTiles::EntryTexels; // floats per entry
+    FX_CHECK(!tiles.Build(everywhere, identity, 16384, 16384, nullptr, 12),
       "the overflow is reported");
     const auto& headers = tiles.GetHeaderData();
-    const auto& entries = tiles.GetIndexData();
-    FX_CHECK(headers.size() == H * 1024 * 1024 && entries.size() == 17, "one shared list");
+    const auto& entries = tiles.GetEntryData();
+    FX_CHECK(headers.size() == H * 1024 * 1024 && entries.size() == 17 * E, "one shared list");
     for (size_t t = 0; t < headers.size() / H; ++t)
     {
       FX_CHECK(headers[H * t] == 0.0f && headers[H * t + 1] == 12.0f && headers[H * t + 2] == 5.0f,
@@ -165,11 +174,12 @@ int TestLights(int, char*[])
     }
     for (size_t i = 0; i < entries.size(); ++i)
     {
-      FX_CHECK(entries[i] == static_cast<float>(5 + i), "entry " << i);
+      FX_CHECK(entries[i] == static_cast<float>(5 + i / E), "entry value " << i);
     }
-    FX_CHECK(tiles.Build(everywhere, identity, 256, 256, nullptr, 5, 12), "small lists are built");
-    FX_CHECK(tiles.GetIndexData().size() == 17u * 16 * 16, "every tile lists the 17 lights");
-    // Each tile's list: its point lights, then its spot lights.
+    FX_CHECK(tiles.Build(everywhere, identity, 256, 256, nullptr, 12), "small lists are built");
+    FX_CHECK(tiles.GetEntryData().size() == 17u * 16 * 16 * E, "every tile lists the 17 lights");
+    // Each tile's list: its point lights, then its spot lights, each
+    // entry its light's row.
     for (size_t t = 0; t < 16 * 16; ++t)
     {
       const auto& h = tiles.GetHeaderData();
@@ -177,8 +187,11 @@ int TestLights(int, char*[])
       const size_t first = static_cast<size_t>(h[H * t]);
       for (size_t k = 0; k < 17; ++k)
       {
-        FX_CHECK(tiles.GetIndexData()[first + k] == static_cast<float>(5 + k),
-          "tile " << t << " entry " << k);
+        for (size_t f = 0; f < E; ++f)
+        {
+          FX_CHECK(tiles.GetEntryData()[(first + k) * E + f] == static_cast<float>(5 + k),
+            "tile " << t << " entry " << k);
+        }
       }
     }
     FX_CHECK(std::fabs(tiles.GetMeanLightsPerTile() - 17.0) < 1e-12, "17 lights per tile");
