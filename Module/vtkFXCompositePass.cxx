@@ -489,6 +489,17 @@ void vtkFXCompositePass::BuildLightTiles(
   {
     this->LightTiles.reset(new vtkFXLightTiles);
   }
+  // Each tile's surfaces' depths, so that a light counts only for tiles
+  // whose surfaces its sphere reaches in depth too (a floor seen at an
+  // angle: a sphere's screen rectangle covers much floor nearer and
+  // farther than the sphere).
+  vtkTextureObject* linearDepth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
+  if (!this->TileDepthBounds || !linearDepth ||
+    !this->LightTiles->MeasureTileDepths(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()),
+      linearDepth, static_cast<int>(albedo->GetWidth()), static_cast<int>(albedo->GetHeight())))
+  {
+    this->LightTiles->ForgetTileDepths();
+  }
   // (the clipping range, a little wider: the depth buffer's own rounding)
   double depthRange[2];
   ren->GetActiveCamera()->GetClippingRange(depthRange);
@@ -525,6 +536,10 @@ void vtkFXCompositePass::SetUniforms(vtkShaderProgram* program, vtkOpenGLRendere
   if (lightTexture)
   {
     const int count = this->UploadLightTexture(ren);
+    // (measuring the tiles' depths bound a program of its own)
+    vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow())
+      ->GetShaderCache()
+      ->ReadyShaderProgram(program);
     BindSampler(program, "fxLights", this->LightTexture);
     program->SetUniformi("fxLightCount", count);
     program->SetUniformi("fxFirstPoint", this->FirstLightOfKind[0]);

@@ -13,8 +13,9 @@
  * light count is a uniform: adding a light recompiles nothing. On that
  * path lights are culled per 16 x 16 pixel tile (vtkFXLightTiles): a
  * positional light counts only where its attenuated light can still add
- * LightCutoff to a colour, so each pixel loops over the lights that reach
- * it, not over every light in the scene.
+ * LightCutoff to a colour, on the screen and in depth (TileDepthBounds),
+ * so each pixel loops over the lights that reach it, not over every light
+ * in the scene.
  *
  * Writes: the lit colour of every covered pixel into the current framebuffer
  * (blended like VTK's opaque pass), and the G-buffer depth into its depth
@@ -26,12 +27,14 @@
  * pixel), then a lighting pass whose depth test leaves out the background
  * before the fragment shader runs (see UseDepthPrepass), with one texture read per
  * allocated channel and a loop over the lights per surface pixel (on the
- * light-texture path, over the lights of the pixel's tile, with 4 texel
- * reads per point light (its tile entry and three of its row), 5 per spot
- * light, 2 per directional light (which every pixel loops over), one less
- * without culling, and building the tiles' lists on the CPU), plus what
- * the contributing effects' code costs. The rows are sorted by kind and
- * each kind has its own loop, so no light pays for another kind's terms.
+ * light-texture path, over the lights of the pixel's tile, with 3 texel
+ * reads per point light (its tile entry, a copy of its row), 4 per spot
+ * light, 2 per directional light (which every pixel loops over), the
+ * same without culling; building the tiles' lists on the CPU, and with
+ * TileDepthBounds a pass of one fetch per pixel that measures each
+ * tile's depth range, read back), plus what the contributing effects'
+ * code costs. The rows are sorted by kind and each kind has its own loop,
+ * so no light pays for another kind's terms.
  *
  * Effects contribute code at the composite's hook points (declarations,
  * per-light visibility, ambient visibility, final colour; see
@@ -189,6 +192,19 @@ public:
   vtkGetMacro(LightCutoff, double);
 
   /**
+   * With LightCutoff above 0, also leave a positional light out of a tile
+   * whose surfaces all lie nearer or farther than its sphere of influence
+   * (default on): each tile's range of linear depth is measured from the
+   * G-buffer (one pass of one fetch per pixel into a texel per tile, read
+   * back to the CPU, which builds the lists). Exact: no light is left out
+   * where it reaches a surface. Off: tiles are culled by the lights'
+   * screen rectangles only.
+   */
+  vtkSetMacro(TileDepthBounds, bool);
+  vtkGetMacro(TileDepthBounds, bool);
+  vtkBooleanMacro(TileDepthBounds, bool);
+
+  /**
    * The largest material colour component of the visible props (at least
    * 1, default 1): a light adds its light times that, so the culling range
    * is taken for a light that much brighter. vtkFXPipelinePass sets it
@@ -270,6 +286,7 @@ protected:
   vtkSmartPointer<vtkTextureObject> LightTexture;
   std::unique_ptr<vtkFXLightTiles> LightTiles;
   bool LightTilesUsed = false;
+  bool TileDepthBounds = true;
   // The light texture's first row of a point light and of a spot light
   // (rows sorted: directional, point, spot).
   int FirstLightOfKind[2] = { 0, 0 };

@@ -2,7 +2,12 @@
 
 #include "vtkFXRenderUtilities.h"
 
+#include "vtkFXTileDepthFS.h"
+
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkFXOpenGL.h"
 
@@ -141,13 +146,24 @@ bool vtkFXLightTiles::Build(const std::vector<Light>& lights, const double proje
   }
   // Calls visit(tile) for every tile light i covers: once to count the
   // lists, once to fill them.
+  // With measured tile depths, a tile counts only where the light's
+  // sphere reaches depths its surfaces have.
+  const bool depthTested = this->TileDepthSize[0] == this->Width &&
+    this->TileDepthSize[1] == this->Height && this->TileDepths.size() == 2 * tiles;
   const auto forEachCoveredTile = [&](size_t i, auto&& visit) {
     const int* box = &boxes[4 * i];
+    const double depth = -lights[i].Center[2];
+    const double nearest = depth - lights[i].Radius, farthest = depth + lights[i].Radius;
+    const bool bounded = depthTested && std::isfinite(lights[i].Radius);
     for (int y = box[1]; visible[i] && y <= box[3]; ++y)
     {
       for (int x = box[0]; x <= box[2]; ++x)
       {
-        visit(static_cast<size_t>(y) * this->TilesX + x);
+        const size_t t = static_cast<size_t>(y) * this->TilesX + x;
+        if (!bounded || (farthest >= this->TileDepths[2 * t] && nearest <= this->TileDepths[2 * t + 1]))
+        {
+          visit(t);
+        }
       }
     }
   };
@@ -235,8 +251,48 @@ double vtkFXLightTiles::GetMeanLightsPerTile() const
   return tiles ? sum / tiles : 0.0;
 }
 
+bool vtkFXLightTiles::MeasureTileDepths(
+  vtkOpenGLRenderWindow* window, vtkTextureObject* linearDepth, int width, int height)
+{
+  this->TileDepths.clear();
+  this->TileDepthSize[0] = this->TileDepthSize[1] = 0;
+  if (!window || !linearDepth || width < 1 || height < 1)
+  {
+    return false;
+  }
+  const int tiles[2] = { (width + TileSize - 1) / TileSize, (height + TileSize - 1) / TileSize };
+  vtkFXRenderUtilities::EnsureTexture(
+    this->DepthRanges, window, tiles[0], tiles[1], vtkFXRenderUtilities::RG32F);
+  vtkFXRenderUtilities::RenderTargetScope target(window, this->DepthFrameBuffer, this->DepthRanges);
+  std::string fs = vtkFXTileDepthFS;
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define FX_TILE " + std::to_string(TileSize) + "\n",
+    false);
+  vtkShaderProgram* program = vtkFXRenderUtilities::ReadyQuad(this->DepthQuad, window, fs);
+  if (!program || !target.IsComplete())
+  {
+    return false;
+  }
+  linearDepth->Activate();
+  program->SetUniformi("fxLinearDepth", linearDepth->GetTextureUnit());
+  const int size[2] = { width, height };
+  program->SetUniform2i("fxSize", size);
+  this->DepthQuad.Helper->Render();
+  linearDepth->Deactivate();
+  this->TileDepths.resize(2 * static_cast<size_t>(tiles[0]) * tiles[1]);
+  this->DepthFrameBuffer->ActivateReadBuffer(0);
+  glReadPixels(0, 0, tiles[0], tiles[1], GL_RG, GL_FLOAT, this->TileDepths.data());
+  this->TileDepthSize[0] = width;
+  this->TileDepthSize[1] = height;
+  return true;
+}
+
 void vtkFXLightTiles::ReleaseGraphicsResources(vtkWindow* window)
 {
+  vtkFXRenderUtilities::ReleaseQuad(this->DepthQuad, window);
+  vtkFXRenderUtilities::Release(this->DepthRanges, window);
+  vtkFXRenderUtilities::Release(this->DepthFrameBuffer, window);
+  this->TileDepths.clear();
   vtkFXRenderUtilities::Release(this->Headers, window);
   vtkFXRenderUtilities::Release(this->Entries, window);
 }

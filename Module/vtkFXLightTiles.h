@@ -6,7 +6,8 @@
  * goes into the list of every tile its sphere of influence covers on the
  * screen (the bounding rectangle of the sphere's projected bounding box;
  * a sphere reaching the camera's plane covers every tile, unless Build is
- * given the visible depth range, as the composite does). A light's
+ * given the visible depth range, as the composite does) and, after
+ * MeasureTileDepths, reaches in depth (the tile's surfaces' range). A light's
  * sphere of influence ends where VTK's attenuation, 1 / (a0 + a1 d + a2 d^2),
  * brings the most it can add to a colour (twice its intensity times
  * colour: diffuse and specular coefficients at most 1 each) below a
@@ -33,12 +34,14 @@
 #define vtkFXLightTiles_h
 
 #include "vtkFXModule.h"
+#include "vtkFXRenderUtilities.h" // for the depth pass's quad
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h" // for the textures held
 
 #include <limits>
 #include <vector>
 
+class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkWindow;
 
@@ -92,6 +95,29 @@ public:
     const double depthRange[2] = nullptr,
     size_t pointLights = std::numeric_limits<size_t>::max());
 
+  /**
+   * Measures each tile's range of linear depth (its nearest and farthest
+   * surface) in `linearDepth`, a width x height G-buffer channel, on the
+   * GPU (one pass over the channel into a texel per tile) and reads it
+   * back: until the next call, Build for that size counts a light for a
+   * tile only where its sphere's depth extent (view-space depth of its
+   * centre plus or minus its radius) meets the tile's range, and never for
+   * a tile without a surface. Binds its own program and framebuffer (the
+   * caller binds its program again). Returns false, and forgets earlier
+   * ranges, when the pass cannot run.
+   */
+  bool MeasureTileDepths(
+    vtkOpenGLRenderWindow* window, vtkTextureObject* linearDepth, int width, int height);
+  /**
+   * Drop the measured ranges (Build then tests no depths).
+   */
+  void ForgetTileDepths() { this->TileDepths.clear(); }
+  /**
+   * The ranges measured (nearest, farthest per tile, rows bottom-up), for
+   * tests.
+   */
+  const std::vector<float>& GetTileDepths() const { return this->TileDepths; }
+
   ///@{
   /**
    * What the last Build made (for tests): per tile HeaderValues floats
@@ -130,6 +156,13 @@ private:
   std::vector<float> EntryData;
   vtkSmartPointer<vtkTextureObject> Headers;
   vtkSmartPointer<vtkTextureObject> Entries;
+  // The tiles' depth ranges (MeasureTileDepths), for a viewport of
+  // TileDepthSize pixels.
+  std::vector<float> TileDepths;
+  int TileDepthSize[2] = { 0, 0 };
+  vtkFXRenderUtilities::FullScreenQuad DepthQuad;
+  vtkSmartPointer<vtkTextureObject> DepthRanges;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFrameBuffer;
 };
 
 #endif

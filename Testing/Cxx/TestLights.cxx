@@ -97,6 +97,10 @@ void NoCulling(vtkFXCompositePass* composite)
 {
   composite->SetLightCutoff(0.0);
 }
+void NoDepthBounds(vtkFXCompositePass* composite)
+{
+  composite->TileDepthBoundsOff();
+}
 
 int Check(const char* name, const std::vector<unsigned char>& a, const std::vector<unsigned char>& b,
   double minimum, int largest = 255)
@@ -247,6 +251,22 @@ int TestLights(int, char*[])
   const int culledOff = vtkFXScenes::MaxDifference(culled.FX, all.FX);
   std::cout << "culled against all lights: at most " << culledOff << " levels off" << std::endl;
   FX_CHECK(culledOff <= 2, "culling cut visible light");
+  // The tiles' depth bounds (TileDepthBounds) leave a light out of tiles
+  // whose surfaces its sphere does not reach in depth: far fewer lights
+  // per tile on the ground seen at an angle, the same image (a light is
+  // only left out where it adds under the cutoff: within 2 levels of the
+  // unbounded tiles, and of VTK).
+  const Lit unbounded = Render(window, 64, false, false, NoDepthBounds);
+  const int boundsOff = vtkFXScenes::MaxDifference(culled.FX, unbounded.FX);
+  std::cout << "64 lights, tiles bounded in depth: " << culled.LightsPerTile
+            << " lights per tile against " << unbounded.LightsPerTile << " unbounded, images at most "
+            << boundsOff << " levels apart" << std::endl;
+  FX_CHECK(culled.LightsPerTile < 0.75 * unbounded.LightsPerTile,
+    "depth bounds left out too little: " << culled.LightsPerTile << " of "
+                                        << unbounded.LightsPerTile);
+  FX_CHECK(boundsOff <= 2, "depth bounds cut visible light");
+  FX_CHECK(Check("64 lights, tiles bounded in depth", culled.FX, culled.VTK, 55.0, 2) == EXIT_SUCCESS,
+    "");
 
   // Toon bands raise a light's diffuse factor from the first threshold on
   // (here 0.001) to a whole band (0.5) however dim the light is: the tiles
