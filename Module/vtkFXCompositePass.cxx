@@ -120,8 +120,10 @@ std::string LightLoopBody(const std::string& call, const std::string& fetches,
 // positional ones over all of them or, with tiles, over this pixel's tile
 // (vtkFXLightTiles: per tile the first entry and the counts of point and
 // spot lights; each entry a copy of its light's row, EntriesPerRow to a
-// row of the entries' texture).
-std::string TextureLightLoop(int complexity, const std::string& visibilityCode, bool tiled)
+// row of the entries' texture, or, with `entriesAreRows` false, the row's
+// index in the light texture, IndicesPerRow to a row).
+std::string TextureLightLoop(
+  int complexity, const std::string& visibilityCode, bool tiled, bool entriesAreRows)
 {
   const std::string attenuation = "vec3(light0.w, light1.w, light2.w)";
   std::string code;
@@ -148,10 +150,14 @@ std::string TextureLightLoop(int complexity, const std::string& visibilityCode, 
       LightLoopBody(spot, "0123", visibilityCode, "fxLights", "ivec2(0, i)");
     return code;
   }
-  const std::string perRow = std::to_string(vtkFXLightTiles::EntriesPerRow);
-  const std::string entry = "      ivec2 fxAt = ivec2(" +
-    std::to_string(vtkFXLightTiles::EntryTexels) + " * (entry % " + perRow + "), entry / " +
-    perRow + ");\n";
+  const std::string perRow = std::to_string(
+    entriesAreRows ? vtkFXLightTiles::EntriesPerRow : vtkFXLightTiles::IndicesPerRow);
+  const std::string entry = entriesAreRows
+    ? "      ivec2 fxAt = ivec2(" + std::to_string(vtkFXLightTiles::EntryTexels) + " * (entry % " +
+      perRow + "), entry / " + perRow + ");\n"
+    : "      int i = int(texelFetch(fxLightTileEntries, ivec2(entry % " + perRow + ", entry / " +
+      perRow + "), 0).r);\n      ivec2 fxAt = ivec2(0, i);\n";
+  const std::string source = entriesAreRows ? "fxLightTileEntries" : "fxLights";
   code += "    ivec2 fxTile = ivec2(texCoord * vec2(textureSize(fxAlbedo, 0))) / " +
     std::to_string(vtkFXLightTiles::TileSize) +
     ";\n"
@@ -159,9 +165,9 @@ std::string TextureLightLoop(int complexity, const std::string& visibilityCode, 
     "    int fxPointsEnd = int(fxTileList.r) + int(fxTileList.g);\n"
     "    int fxSpotsEnd = fxPointsEnd + int(fxTileList.b);\n";
   code += "    for (int entry = int(fxTileList.r); entry < fxPointsEnd; ++entry)\n    {\n" + entry +
-    LightLoopBody(point, "012", visibilityCode, "fxLightTileEntries", "fxAt");
+    LightLoopBody(point, "012", visibilityCode, source, "fxAt");
   code += "    for (int entry = fxPointsEnd; entry < fxSpotsEnd; ++entry)\n    {\n" + entry +
-    LightLoopBody(spot, "0123", visibilityCode, "fxLightTileEntries", "fxAt");
+    LightLoopBody(spot, "0123", visibilityCode, source, "fxAt");
   return code;
 }
 
@@ -229,6 +235,14 @@ bool vtkFXCompositePass::UsesLightTexture(vtkOpenGLRenderer* ren) const
   return ren->GetLightingComplexity() >= 2 && ren->GetLightingCount() > this->MaximumUniformLights;
 }
 
+int vtkFXCompositePass::LightingComplexity(vtkOpenGLRenderer* ren) const
+{
+  // (no normals: nothing to light)
+  return (ren->GetLightingCount() == 0 || !this->GBuffer->GetChannelTexture(GB::Normal))
+    ? 0
+    : ren->GetLightingComplexity();
+}
+
 unsigned int vtkFXCompositePass::GetRequiredChannels(int lightingComplexity) const
 {
   unsigned int mask = GB::ChannelBit(GB::Albedo);
@@ -265,8 +279,7 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
 {
   vtkFXGBufferPass* gb = this->GBuffer;
   const int lightCount = ren->GetLightingCount();
-  const int complexity =
-    (lightCount == 0 || !gb->GetChannelTexture(GB::Normal)) ? 0 : ren->GetLightingComplexity();
+  const int complexity = this->LightingComplexity(ren);
   const bool hasDepth = gb->GetChannelTexture(GB::LinearDepth) != nullptr;
   bool hasSpecular = gb->GetChannelTexture(GB::Specular) != nullptr && complexity > 0;
   if (complexity >= 2 && hasSpecular && !hasDepth)
@@ -323,7 +336,8 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
   vtkShaderProgram::Substitute(fs, "//VTK::Light::Dec",
     complexity > 0 && !lightTexture ? ren->GetLightingUniforms() : "", false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXLight::Impl",
-    lightTexture ? TextureLightLoop(complexity, visibility, this->LightCutoff > 0.0)
+    lightTexture ? TextureLightLoop(complexity, visibility, this->LightCutoff > 0.0,
+                     !this->LightTilesUsed || this->LightTiles->GetEntriesAreRows())
                  : UniformLightCalls(complexity, lightCount, visibility),
     false);
   vtkShaderProgram::Substitute(
@@ -447,7 +461,8 @@ int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
     if (!this->ReportedTooManyLights)
     {
       vtkErrorMacro(<< count << " lights are on; this OpenGL's textures hold " << maxRows
-                    << " rows, one per light: the lights past that are left out.");
+                    << " rows, one per light: the last spot lights (or point lights, or "
+                       "directional ones: the texture is sorted so) are left out.");
       this->ReportedTooManyLights = true;
     }
     count = maxRows;
@@ -492,9 +507,12 @@ void vtkFXCompositePass::BuildLightTiles(
   // Each tile's surfaces' depths, so that a light counts only for tiles
   // whose surfaces its sphere reaches in depth too (a floor seen at an
   // angle: a sphere's screen rectangle covers much floor nearer and
-  // farther than the sphere).
+  // farther than the sphere); not measured when no light's sphere is
+  // bounded (VTK's default attenuation), which the bounds could not cull.
   vtkTextureObject* linearDepth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
-  if (!this->TileDepthBounds || !linearDepth ||
+  const bool bounded = std::any_of(lights.begin(), lights.end(),
+    [](const vtkFXLightTiles::Light& light) { return std::isfinite(light.Radius); });
+  if (!this->TileDepthBounds || !linearDepth || !bounded ||
     !this->LightTiles->MeasureTileDepths(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()),
       linearDepth, static_cast<int>(albedo->GetWidth()), static_cast<int>(albedo->GetHeight())))
   {
@@ -510,7 +528,7 @@ void vtkFXCompositePass::BuildLightTiles(
   const int firstPoint = this->FirstLightOfKind[0];
   if (!this->LightTiles->Build(lights, &projection->Element[0][0],
         static_cast<int>(albedo->GetWidth()), static_cast<int>(albedo->GetHeight()), depthRange,
-        static_cast<size_t>(this->FirstLightOfKind[1] - firstPoint)) &&
+        static_cast<size_t>(this->FirstLightOfKind[1] - firstPoint), firstPoint) &&
     !this->WarnedLightTiles)
   {
     vtkWarningMacro("The per-tile light lists would exceed "
@@ -535,13 +553,9 @@ void vtkFXCompositePass::SetUniforms(vtkShaderProgram* program, vtkOpenGLRendere
   const bool lightTexture = program->IsUniformUsed("fxLights");
   if (lightTexture)
   {
-    const int count = this->UploadLightTexture(ren);
-    // (measuring the tiles' depths bound a program of its own)
-    vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow())
-      ->GetShaderCache()
-      ->ReadyShaderProgram(program);
+    // (uploaded by Render, before the shader: its loops follow the tiles)
     BindSampler(program, "fxLights", this->LightTexture);
-    program->SetUniformi("fxLightCount", count);
+    program->SetUniformi("fxLightCount", this->UploadedLights);
     program->SetUniformi("fxFirstPoint", this->FirstLightOfKind[0]);
     program->SetUniformi("fxFirstSpot", this->FirstLightOfKind[1]);
     if (this->LightTilesUsed)
@@ -751,6 +765,14 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
   }
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   this->UsedDepthPrepass = this->CanUseDepthPrepass(ren);
+  // The light texture and its tiles first: how the tiles hold their
+  // entries (copies of rows, or indices) decides the shader's loops, and
+  // measuring the tiles' depths draws with a program of its own.
+  this->UploadedLights = 0;
+  if (this->LightingComplexity(ren) >= 2 && this->UsesLightTexture(ren))
+  {
+    this->UploadedLights = this->UploadLightTexture(ren);
+  }
   const std::string fragmentShader = this->BuildFragmentShader(ren);
   if (fragmentShader.empty())
   {

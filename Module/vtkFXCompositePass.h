@@ -259,7 +259,9 @@ protected:
   std::string BuildFragmentShader(vtkOpenGLRenderer* ren);
   std::string EffectCode(int hook) const;
   bool UsesLightTexture(vtkOpenGLRenderer* ren) const;
+  int LightingComplexity(vtkOpenGLRenderer* ren) const; // 0 without lights or normals
   int UploadLightTexture(vtkOpenGLRenderer* ren); // returns the lights uploaded
+  int UploadedLights = 0; // by this frame's UploadLightTexture
   void BuildLightTiles(vtkOpenGLRenderer* ren, const std::vector<vtkFXLightTiles::Light>& lights);
   void SetUniforms(vtkShaderProgram* program, vtkOpenGLRenderer* ren);
   void Draw(vtkOpenGLRenderer* ren);

@@ -127,7 +127,7 @@ bool vtkFXLightTiles::CoveredTiles(const Light& light, const double p[16], int b
 }
 
 bool vtkFXLightTiles::Build(const std::vector<Light>& lights, const double projection[16],
-  int width, int height, const double depthRange[2], size_t pointLights)
+  int width, int height, const double depthRange[2], size_t pointLights, int firstRow)
 {
   const bool ranged = depthRange && depthRange[0] >= 0.0 && depthRange[1] > depthRange[0] &&
     std::isfinite(depthRange[1]);
@@ -182,18 +182,28 @@ bool vtkFXLightTiles::Build(const std::vector<Light>& lights, const double proje
     total += c;
   }
   this->HeaderData.assign(HeaderValues * tiles, 0.0f);
-  const size_t entryFloats = EntryTexels * 4;
-  const auto copyEntry = [&](size_t entry, size_t light) {
-    std::copy(lights[light].Row, lights[light].Row + entryFloats,
-      this->EntryData.begin() + entry * entryFloats);
+  // Entries: copies of the lights' rows while they fit, else the rows'
+  // indices (one shared list of every light past MaximumEntries).
+  const bool overflow = total > MaximumEntries || lights.size() > MaximumEntries;
+  this->EntriesAreRows = std::max(overflow ? lights.size() : total, size_t(1)) <= MaximumRowEntries;
+  const size_t entryFloats = this->EntriesAreRows ? EntryTexels * 4 : 1;
+  const auto writeEntry = [&](size_t entry, size_t light) {
+    if (this->EntriesAreRows)
+    {
+      std::copy(lights[light].Row, lights[light].Row + entryFloats,
+        this->EntryData.begin() + entry * entryFloats);
+    }
+    else
+    {
+      this->EntryData[entry] = static_cast<float>(firstRow + light);
+    }
   };
-  if (total > MaximumEntries || lights.size() > MaximumEntries)
+  if (overflow)
   {
-    // One shared list of every light: exact, untiled.
     this->EntryData.assign(entryFloats * std::max<size_t>(lights.size(), 1), 0.0f);
     for (size_t i = 0; i < lights.size(); ++i)
     {
-      copyEntry(i, i);
+      writeEntry(i, i);
     }
     for (size_t t = 0; t < tiles; ++t)
     {
@@ -215,7 +225,7 @@ bool vtkFXLightTiles::Build(const std::vector<Light>& lights, const double proje
   this->EntryData.assign(entryFloats * std::max<size_t>(total, 1), 0.0f);
   for (size_t i = 0; i < lights.size(); ++i)
   {
-    forEachCoveredTile(i, [&](size_t t) { copyEntry(next[t]++, i); });
+    forEachCoveredTile(i, [&](size_t t) { writeEntry(next[t]++, i); });
   }
   return true;
 }
@@ -227,17 +237,20 @@ void vtkFXLightTiles::Upload(vtkOpenGLRenderWindow* window)
   this->Headers->Activate(); // its own unit: binding elsewhere could replace a sampler's texture
   glTexSubImage2D(
     GL_TEXTURE_2D, 0, 0, 0, this->TilesX, this->TilesY, GL_RGBA, GL_FLOAT, this->HeaderData.data());
-  // EntriesPerRow entries of EntryTexels texels to a row: an entry never
-  // straddles two.
-  const size_t entryFloats = EntryTexels * 4;
+  // Rows: EntriesPerRow entries of EntryTexels texels to a row (an entry
+  // never straddles two); indices: IndicesPerRow to a row.
+  const size_t entryFloats = this->EntriesAreRows ? EntryTexels * 4 : 1;
+  const int texelsPerEntry = this->EntriesAreRows ? EntryTexels : 1;
+  const int perRow = this->EntriesAreRows ? EntriesPerRow : IndicesPerRow;
   const int entries = static_cast<int>(this->EntryData.size() / entryFloats);
-  const int rows = (entries + EntriesPerRow - 1) / EntriesPerRow;
-  const int columns = EntryTexels * std::min(entries, static_cast<int>(EntriesPerRow));
-  this->EntryData.resize(static_cast<size_t>(rows) * columns * 4, 0.0f);
-  vtkFXRenderUtilities::EnsureTexture(
-    this->Entries, window, columns, rows, vtkFXRenderUtilities::RGBA32F);
+  const int rows = (entries + perRow - 1) / perRow;
+  const int columns = texelsPerEntry * std::min(entries, perRow);
+  this->EntryData.resize(static_cast<size_t>(rows) * columns * (this->EntriesAreRows ? 4 : 1), 0.0f);
+  vtkFXRenderUtilities::EnsureTexture(this->Entries, window, columns, rows,
+    this->EntriesAreRows ? vtkFXRenderUtilities::RGBA32F : vtkFXRenderUtilities::R32F);
   this->Entries->Activate();
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, columns, rows, GL_RGBA, GL_FLOAT, this->EntryData.data());
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, columns, rows, this->EntriesAreRows ? GL_RGBA : GL_RED,
+    GL_FLOAT, this->EntryData.data());
 }
 
 double vtkFXLightTiles::GetMeanLightsPerTile() const
@@ -273,12 +286,17 @@ bool vtkFXLightTiles::MeasureTileDepths(
   {
     return false;
   }
+  // (a texture the caller already bound stays bound)
+  const bool bound = linearDepth->GetTextureUnit() >= 0;
   linearDepth->Activate();
   program->SetUniformi("fxLinearDepth", linearDepth->GetTextureUnit());
   const int size[2] = { width, height };
   program->SetUniform2i("fxSize", size);
   this->DepthQuad.Helper->Render();
-  linearDepth->Deactivate();
+  if (!bound)
+  {
+    linearDepth->Deactivate();
+  }
   this->TileDepths.resize(2 * static_cast<size_t>(tiles[0]) * tiles[1]);
   this->DepthFrameBuffer->ActivateReadBuffer(0);
   glReadPixels(0, 0, tiles[0], tiles[1], GL_RG, GL_FLOAT, this->TileDepths.data());

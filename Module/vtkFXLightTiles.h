@@ -23,10 +23,12 @@
  * row, each a copy of its light's row of the composite's light texture (4
  * texels), so the composite reads a light straight from its tile's list
  * (with an index per entry instead, that index's fetch was a tenth of a
- * 1024-light frame). Lists past 2^20 entries (MaximumEntries, 64 MiB: a
- * thousand lights that each cover a third of a 1280 x 720 viewport's
- * tiles) are not built; every tile then lists every light, the untiled
- * loop's cost, and Build says so.
+ * 1024-light frame). Past 2^20 entries (MaximumRowEntries, 64 MiB of
+ * copies) the entries are the rows' indices instead (R32F, 4096 to a row;
+ * GetEntriesAreRows false), exact in floats up to 2^24 entries
+ * (MaximumEntries, 64 MiB); lists past that (a thousand lights that each
+ * cover a 4K viewport's 32,400 tiles) are not built: every tile then
+ * lists every light, the untiled loop's cost, and Build says so.
  *
  * A plain C++ helper of vtkFXCompositePass (not wrapped).
  */
@@ -50,8 +52,10 @@ class VTKFX_EXPORT vtkFXLightTiles
 public:
   static const int TileSize = 16;        // pixels
   static const int EntryTexels = 4;      // RGBA32F texels an entry holds (a light's row)
-  static const int EntriesPerRow = 1024; // of the entries' texture
-  static const size_t MaximumEntries = size_t(1) << 20;
+  static const int EntriesPerRow = 1024; // of the entries' texture, entries with rows
+  static const int IndicesPerRow = 4096; // of the entries' texture, entries with indices
+  static const size_t MaximumRowEntries = size_t(1) << 20; // 64 MiB of rows
+  static const size_t MaximumEntries = size_t(1) << 24;    // 64 MiB of indices
   static const size_t HeaderValues = 4; // per tile, see GetHeaderData
 
   vtkFXLightTiles();
@@ -93,7 +97,15 @@ public:
    */
   bool Build(const std::vector<Light>& lights, const double projection[16], int width, int height,
     const double depthRange[2] = nullptr,
-    size_t pointLights = std::numeric_limits<size_t>::max());
+    size_t pointLights = std::numeric_limits<size_t>::max(), int firstRow = 0);
+
+  /**
+   * Whether the last Build's entries are copies of the lights' rows
+   * (EntryTexels RGBA32F texels each), or, for lists past
+   * MaximumRowEntries, their rows' indices in the light texture (one R32F
+   * texel each: light i of Build is row firstRow + i).
+   */
+  bool GetEntriesAreRows() const { return this->EntriesAreRows; }
 
   /**
    * Measures each tile's range of linear depth (its nearest and farthest
@@ -122,7 +134,7 @@ public:
   /**
    * What the last Build made (for tests): per tile HeaderValues floats
    * (first entry, point lights, spot lights, 0), and the entries, each the
-   * EntryTexels x 4 floats of its light's row.
+   * EntryTexels x 4 floats of its light's row, or its row's index.
    */
   const std::vector<float>& GetHeaderData() const { return this->HeaderData; }
   const std::vector<float>& GetEntryData() const { return this->EntryData; }
@@ -154,6 +166,7 @@ private:
   int TilesY = 0;
   std::vector<float> HeaderData; // (first, point lights, spot lights, 0) per tile
   std::vector<float> EntryData;
+  bool EntriesAreRows = true;
   vtkSmartPointer<vtkTextureObject> Headers;
   vtkSmartPointer<vtkTextureObject> Entries;
   // The tiles' depth ranges (MeasureTileDepths), for a viewport of

@@ -474,45 +474,59 @@ int TestHooks()
     p->Code[vtkFXEffectPass::Color] = "";
   }
 
-  // A dim point light, then two directional lights, on the uniform and on
-  // the light-texture path (which sorts its rows: directional lights
-  // first): hiding light 2 by visibility equals switching it off.
-  scene.Renderer->RemoveAllLights();
+  // Two directional lights (VTK's complexity 2), then a point light before
+  // them (complexity 3), on the uniform and on the light-texture path
+  // (which sorts its rows: directional lights first): hiding a light by
+  // its lightIndex equals switching it off, for each directional light
+  // and for the point light.
+  for (bool withPoint : { false, true })
   {
-    vtkNew<vtkLight> point;
-    point->SetLightTypeToSceneLight();
-    point->PositionalOn();
-    point->SetConeAngle(180.0);
-    point->SetPosition(0, -0.5, 3);
-    point->SetFocalPoint(0, 0, 0);
-    point->SetIntensity(0.1);
-    scene.Renderer->AddLight(point);
-  }
-  for (double x : { -1.0, 1.0 })
-  {
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToSceneLight();
-    light->SetPosition(x, 0.5, 3);
-    light->SetFocalPoint(0, 0, 0);
-    light->SetIntensity(0.5);
-    scene.Renderer->AddLight(light);
-  }
-  vtkLight* second = vtkLight::SafeDownCast(scene.Renderer->GetLights()->GetItemAsObject(2));
-  for (int maxUniform : { 8, 1 })
-  {
-    scene.Pipeline->GetCompositePass()->SetMaximumUniformLights(maxUniform);
-    second->SwitchOff();
-    const auto firstOnly = scene.Centre();
-    second->SwitchOn();
-    const auto both = scene.Centre();
-    a->Code[vtkFXEffectPass::LightVisibility] = "if (lightIndex == 2) lightVisibility = 0.0;";
-    const auto hidden = scene.Centre();
-    a->Code[vtkFXEffectPass::LightVisibility] = "";
-    std::cout << (maxUniform == 1 ? "light texture" : "uniforms") << ": first light "
-              << firstOnly[0] << ", both " << both[0] << ", second hidden " << hidden[0]
-              << std::endl;
-    FX_CHECK(both[0] > firstOnly[0] + 20, "the second light adds");
-    FX_CHECK(std::abs(hidden[0] - firstOnly[0]) <= 1, "lightIndex follows VTK's light order");
+    scene.Renderer->RemoveAllLights();
+    if (withPoint)
+    {
+      vtkNew<vtkLight> point;
+      point->SetLightTypeToSceneLight();
+      point->PositionalOn();
+      point->SetConeAngle(180.0);
+      point->SetPosition(0, -0.5, 3);
+      point->SetFocalPoint(0, 0, 0);
+      point->SetIntensity(0.4);
+      scene.Renderer->AddLight(point);
+    }
+    for (double x : { -1.0, 1.0 })
+    {
+      vtkNew<vtkLight> light;
+      light->SetLightTypeToSceneLight();
+      light->SetPosition(x, 0.5, 3);
+      light->SetFocalPoint(0, 0, 0);
+      light->SetIntensity(0.5);
+      scene.Renderer->AddLight(light);
+    }
+    const int count = scene.Renderer->GetLights()->GetNumberOfItems();
+    for (int maxUniform : { 8, 1 })
+    {
+      scene.Pipeline->GetCompositePass()->SetMaximumUniformLights(maxUniform);
+      const auto all = scene.Centre();
+      for (int index = 0; index < count; ++index)
+      {
+        vtkLight* light = vtkLight::SafeDownCast(scene.Renderer->GetLights()->GetItemAsObject(index));
+        light->SwitchOff();
+        const auto off = scene.Centre();
+        light->SwitchOn();
+        a->Code[vtkFXEffectPass::LightVisibility] =
+          "if (lightIndex == " + std::to_string(index) + ") lightVisibility = 0.0;";
+        const auto hidden = scene.Centre();
+        a->Code[vtkFXEffectPass::LightVisibility] = "";
+        std::cout << (maxUniform == 1 ? "light texture" : "uniforms") << ", "
+                  << (withPoint ? "a point light and two directional" : "two directional")
+                  << ": light " << index << " off " << off[0] << ", hidden " << hidden[0]
+                  << ", all on " << all[0] << std::endl;
+        FX_CHECK(all[0] > off[0] + 10, "light " << index << " adds");
+        FX_CHECK(std::abs(hidden[0] - off[0]) <= 1, "lightIndex follows VTK's light order");
+      }
+      FX_CHECK(scene.Pipeline->GetLastSceneInfo().LightingComplexity == (withPoint ? 3 : 2),
+        "lighting complexity");
+    }
   }
   return EXIT_SUCCESS;
 }
@@ -557,14 +571,19 @@ int TestManyLights()
   renderer->SetPass(pipeline);
   unsigned char background[3];
   vtkFXScenes::BackgroundBytes(renderer, background);
-  for (int maxUniform : { 64, 8 })
+  // Uniforms; the light texture culled per tile; the light texture
+  // untiled (LightCutoff 0).
+  for (int variant : { 0, 1, 2 })
   {
+    const int maxUniform = variant == 0 ? 64 : 8;
     pipeline->GetCompositePass()->SetMaximumUniformLights(maxUniform);
+    pipeline->GetCompositePass()->SetLightCutoff(variant == 2 ? 0.0 : 1.0 / 512.0);
     window->Render();
     const auto deferred = vtkFXScenes::Capture(window);
     const double psnr = vtkFXScenes::PSNR(forward, deferred, background);
     const int diff = vtkFXScenes::MaxDifference(forward, deferred);
-    std::cout << "20 lights of three kinds, " << (maxUniform < 20 ? "light texture" : "uniforms")
+    std::cout << "20 lights of three kinds, "
+              << (variant == 0 ? "uniforms" : variant == 1 ? "light texture" : "light texture, untiled")
               << ": PSNR " << psnr << " dB, largest difference " << diff << std::endl;
     FX_CHECK(pipeline->GetLastSceneInfo().LightingComplexity == 3, "positional lighting");
     FX_CHECK(psnr >= 50.0 && diff <= 2, "matches VTK's forward render");

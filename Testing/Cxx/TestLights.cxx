@@ -28,7 +28,10 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkRendererCollection.h"
+#include "vtkTextureObject.h"
+#include "vtkOpenGLRenderWindow.h"
 
+#include <cmath>
 #include <limits>
 
 namespace
@@ -40,10 +43,11 @@ struct Lit
 };
 
 // scene:spheres on its ground lit by `count` point lights (and, with
-// `atCamera`, one more at the camera), in vtkFX (with the composite set up
-// by `configure`) and in VTK's forward render.
+// `atCamera`, one more at the camera; with `spots`, every third light a
+// spot light of 50 degrees looking down), in vtkFX (with the composite set
+// up by `configure`) and in VTK's forward render.
 Lit Render(vtkRenderWindow* window, int count, bool atCamera, bool parallel,
-  void (*configure)(vtkFXCompositePass*))
+  void (*configure)(vtkFXCompositePass*), bool spots = false)
 {
   Lit result;
   for (bool fx : { true, false })
@@ -59,6 +63,16 @@ Lit Render(vtkRenderWindow* window, int count, bool atCamera, bool parallel,
       return result;
     }
     vtkFXScenes::AddPointLights(renderer, count, bounds);
+    if (spots)
+    {
+      vtkLightCollection* lights = renderer->GetLights();
+      for (int i = 0; i < lights->GetNumberOfItems(); i += 3)
+      {
+        vtkLight* light = vtkLight::SafeDownCast(lights->GetItemAsObject(i));
+        light->SetConeAngle(50.0);
+        light->SetExponent(2.0);
+      }
+    }
     vtkCamera* camera = renderer->GetActiveCamera();
     camera->SetParallelProjection(parallel);
     if (atCamera)
@@ -115,6 +129,79 @@ int Check(const char* name, const std::vector<unsigned char>& a, const std::vect
 }
 }
 
+// vtkFXLightTiles::MeasureTileDepths on a 40 x 20 linear-depth image (3 x
+// 2 tiles of 16 pixels, the last column and row partial): tile (0, 0)
+// depths 3 to 7 with a NaN pixel, tile (1, 0) all 5, tile (2, 0) (24 x
+// 16 pixels, 8 of them columns past the image's edge) 9 except a 0
+// (background) pixel, the upper row background. The ranges read back
+// exactly (empty tiles: nearest above farthest); Build then lists a light
+// for a tile only where its sphere's depth extent (depth of its centre,
+// -z in view space, plus or minus its radius) meets the range. Seen
+// through a projection that magnifies x and y a hundredfold, every
+// sphere covers every tile's rectangle, so the depth bounds alone decide.
+int CheckTileDepths(vtkRenderWindow* window)
+{
+  window->Render();
+  window->MakeCurrent();
+  const int w = 40, h = 20;
+  std::vector<float> depth(static_cast<size_t>(w) * h, 0.0f);
+  for (int y = 0; y < 16; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      float& d = depth[static_cast<size_t>(y) * w + x];
+      d = x < 16 ? 3.0f + 4.0f * (x + 16 * y) / 255.0f : x < 32 ? 5.0f : 9.0f;
+    }
+  }
+  depth[5 * w + 7] = std::numeric_limits<float>::quiet_NaN();
+  depth[3 * w + 35] = 0.0f;
+  vtkNew<vtkTextureObject> texture;
+  texture->SetContext(vtkOpenGLRenderWindow::SafeDownCast(window));
+  FX_CHECK(texture->Create2DFromRaw(w, h, 1, VTK_FLOAT, depth.data()), "depth texture");
+  vtkFXLightTiles tiles;
+  FX_CHECK(tiles.MeasureTileDepths(vtkOpenGLRenderWindow::SafeDownCast(window), texture, w, h),
+    "the depth pass ran");
+  const auto& ranges = tiles.GetTileDepths();
+  FX_CHECK(ranges.size() == 12, ranges.size() << " values for 6 tiles");
+  std::cout << "tile depths:";
+  for (size_t t = 0; t < 6; ++t)
+  {
+    std::cout << " (" << ranges[2 * t] << ", " << ranges[2 * t + 1] << ")";
+  }
+  std::cout << std::endl;
+  FX_CHECK(ranges[0] == 3.0f && ranges[1] == depth[15 * w + 15], "tile (0, 0)");
+  FX_CHECK(ranges[2] == 5.0f && ranges[3] == 5.0f, "tile (1, 0)");
+  FX_CHECK(ranges[4] == 9.0f && ranges[5] == 9.0f, "tile (2, 0): background and the edge");
+  for (size_t t = 3; t < 6; ++t)
+  {
+    FX_CHECK(ranges[2 * t] > ranges[2 * t + 1], "tile " << t << " has no surface");
+  }
+  // Lights over every tile's rectangle (a projection that magnifies x and
+  // y a hundredfold), told apart by depth only.
+  const double magnifying[16] = { 100, 0, 0, 0, 0, 100, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+  const auto listed = [&](double depthOfCentre, double radius) {
+    vtkFXLightTiles::Light light{ { 0.0, 0.0, -depthOfCentre }, radius, {} };
+    tiles.Build({ light }, magnifying, w, h);
+    std::vector<int> per(6);
+    for (size_t t = 0; t < 6; ++t)
+    {
+      per[t] = static_cast<int>(tiles.GetHeaderData()[vtkFXLightTiles::HeaderValues * t + 1]);
+    }
+    return per;
+  };
+  FX_CHECK(listed(8.0, 0.5) == std::vector<int>({ 0, 0, 0, 0, 0, 0 }), "a light between depths");
+  FX_CHECK(listed(8.5, 0.6) == std::vector<int>({ 0, 0, 1, 0, 0, 0 }), "a light reaching 9");
+  FX_CHECK(listed(8.0, 1.0) == std::vector<int>({ 1, 0, 1, 0, 0, 0 }), "one touching 7 and 9");
+  FX_CHECK(listed(4.0, 1.0) == std::vector<int>({ 1, 1, 0, 0, 0, 0 }), "a light from 3 to 5");
+  FX_CHECK(listed(4.0, HUGE_VAL) == std::vector<int>({ 1, 1, 1, 1, 1, 1 }),
+    "an unbounded light reaches every tile");
+  tiles.ForgetTileDepths();
+  FX_CHECK(listed(8.0, 0.5) == std::vector<int>({ 1, 1, 1, 1, 1, 1 }),
+    "without depths, every tile its rectangle covers");
+  tiles.ReleaseGraphicsResources(window);
+  return EXIT_SUCCESS;
+}
+
 int TestLights(int, char*[])
 {
   // The range: 2 x intensity / (a0 + a1 d + a2 d^2) is the cutoff there.
@@ -161,7 +248,10 @@ int TestLights(int, char*[])
       everywhere[k].Center[0] = everywhere[k].Center[1] = 0.0;
       everywhere[k].Center[2] = -1.0;
       everywhere[k].Radius = HUGE_VAL;
-      std::fill(std::begin(everywhere[k].Row), std::end(everywhere[k].Row), 5.0f + k);
+      for (int f = 0; f < 4 * vtkFXLightTiles::EntryTexels; ++f)
+      {
+        everywhere[k].Row[f] = 100.0f * (5 + k) + f; // the light's number, then the float's
+      }
     }
     const double identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
     const size_t H = vtkFXLightTiles::HeaderValues;
@@ -178,7 +268,7 @@ int TestLights(int, char*[])
     }
     for (size_t i = 0; i < entries.size(); ++i)
     {
-      FX_CHECK(entries[i] == static_cast<float>(5 + i / E), "entry value " << i);
+      FX_CHECK(entries[i] == 100.0f * (5 + i / E) + i % E, "entry value " << i);
     }
     FX_CHECK(tiles.Build(everywhere, identity, 256, 256, nullptr, 12), "small lists are built");
     FX_CHECK(tiles.GetEntryData().size() == 17u * 16 * 16 * E, "every tile lists the 17 lights");
@@ -193,12 +283,23 @@ int TestLights(int, char*[])
       {
         for (size_t f = 0; f < E; ++f)
         {
-          FX_CHECK(tiles.GetEntryData()[(first + k) * E + f] == static_cast<float>(5 + k),
+          FX_CHECK(tiles.GetEntryData()[(first + k) * E + f] == 100.0f * (5 + k) + f,
             "tile " << t << " entry " << k);
         }
       }
     }
     FX_CHECK(std::fabs(tiles.GetMeanLightsPerTile() - 17.0) < 1e-12, "17 lights per tile");
+    FX_CHECK(tiles.GetEntriesAreRows(), "small lists carry the rows");
+    // Past 2^20 entries (17 lights over the 65,536 tiles of 4096^2: 1.1
+    // million) the entries are the rows' indices, here from row 5 on.
+    FX_CHECK(tiles.Build(everywhere, identity, 4096, 4096, nullptr, 12, 5), "indices are built");
+    FX_CHECK(!tiles.GetEntriesAreRows() && tiles.GetEntryData().size() == 17u * 256 * 256,
+      "lists past 2^20 entries hold indices");
+    const size_t last = static_cast<size_t>(tiles.GetHeaderData()[H * (256 * 256 - 1)]);
+    for (size_t k = 0; k < 17; ++k)
+    {
+      FX_CHECK(tiles.GetEntryData()[last + k] == static_cast<float>(5 + k), "index entry " << k);
+    }
   }
 
   // A light whose sphere crosses the camera's plane lights surfaces only
@@ -227,6 +328,7 @@ int TestLights(int, char*[])
   }
 
   auto window = vtkFXTest::MakeWindow(200, 150);
+  FX_CHECK(CheckTileDepths(window) == EXIT_SUCCESS, "tile depths");
   const Lit many = Render(window, 256, false, false, Defaults);
   std::cout << "256 lights: " << many.LightsPerTile << " lights per tile" << std::endl;
   FX_CHECK(Check("256 point lights", many.FX, many.VTK, 55.0, 2) == EXIT_SUCCESS, "");
@@ -267,6 +369,19 @@ int TestLights(int, char*[])
   FX_CHECK(boundsOff <= 2, "depth bounds cut visible light");
   FX_CHECK(Check("64 lights, tiles bounded in depth", culled.FX, culled.VTK, 55.0, 2) == EXIT_SUCCESS,
     "");
+  // Every third light a spot light (50 degrees, looking down: the spot
+  // loop), culled by tiles and depth, and untiled (LightCutoff 0: the
+  // untiled spot loop), against VTK.
+  const Lit spots = Render(window, 64, false, false, Defaults, true);
+  FX_CHECK(spots.LightsPerTile > 0.0 && spots.LightsPerTile < 64 / 2, "spots culled");
+  FX_CHECK(Check("64 lights, a third spots", spots.FX, spots.VTK, 55.0, 2) == EXIT_SUCCESS, "");
+  const Lit spotsUntiled = Render(window, 64, false, false, NoCulling, true);
+  FX_CHECK(Check("64 lights, a third spots, untiled", spotsUntiled.FX, spotsUntiled.VTK, 55.0, 2) ==
+      EXIT_SUCCESS,
+    "");
+  FX_CHECK(vtkFXScenes::PSNR(spots.FX, spots.VTK) < 90.0 &&
+      vtkFXScenes::MaxDifference(spots.FX, culled.FX) > 10,
+    "the spot cones change the image");
 
   // Toon bands raise a light's diffuse factor from the first threshold on
   // (here 0.001) to a whole band (0.5) however dim the light is: the tiles
