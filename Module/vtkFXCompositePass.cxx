@@ -526,6 +526,7 @@ void vtkFXCompositePass::BuildLightTiles(
   // (the lights are the texture's rows from the first point light on; the
   // spot lights follow the point lights)
   const int firstPoint = this->FirstLightOfKind[0];
+  this->LightTiles->SetRowEntryBudget(static_cast<size_t>(this->MaximumTileRowEntries));
   if (!this->LightTiles->Build(lights, &projection->Element[0][0],
         static_cast<int>(albedo->GetWidth()), static_cast<int>(albedo->GetHeight()), depthRange,
         static_cast<size_t>(this->FirstLightOfKind[1] - firstPoint), firstPoint) &&

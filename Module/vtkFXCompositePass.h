@@ -205,6 +205,15 @@ public:
   vtkBooleanMacro(TileDepthBounds, bool);
 
   /**
+   * Tile list entries up to which each carries a copy of its light's
+   * parameters (64 bytes an entry, read straight by the lighting loop;
+   * 0..2^20, default 2^20: 64 MiB); longer lists hold the lights' indices
+   * (4 bytes an entry, one more texture read per light and pixel).
+   */
+  vtkFXSetClampMacro(MaximumTileRowEntries, vtkIdType, 0, vtkIdType(1) << 20);
+  vtkGetMacro(MaximumTileRowEntries, vtkIdType);
+
+  /**
    * The largest material colour component of the visible props (at least
    * 1, default 1): a light adds its light times that, so the culling range
    * is taken for a light that much brighter. vtkFXPipelinePass sets it
@@ -289,6 +298,7 @@ protected:
   std::unique_ptr<vtkFXLightTiles> LightTiles;
   bool LightTilesUsed = false;
   bool TileDepthBounds = true;
+  vtkIdType MaximumTileRowEntries = vtkIdType(1) << 20;
   // The light texture's first row of a point light and of a spot light
   // (rows sorted: directional, point, spot).
   int FirstLightOfKind[2] = { 0, 0 };

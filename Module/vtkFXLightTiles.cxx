@@ -185,7 +185,7 @@ bool vtkFXLightTiles::Build(const std::vector<Light>& lights, const double proje
   // Entries: copies of the lights' rows while they fit, else the rows'
   // indices (one shared list of every light past MaximumEntries).
   const bool overflow = total > MaximumEntries || lights.size() > MaximumEntries;
-  this->EntriesAreRows = std::max(overflow ? lights.size() : total, size_t(1)) <= MaximumRowEntries;
+  this->EntriesAreRows = std::max(overflow ? lights.size() : total, size_t(1)) <= this->RowEntryBudget;
   const size_t entryFloats = this->EntriesAreRows ? EntryTexels * 4 : 1;
   const auto writeEntry = [&](size_t entry, size_t light) {
     if (this->EntriesAreRows)

@@ -40,6 +40,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h" // for the textures held
 
+#include <algorithm>
 #include <limits>
 #include <vector>
 
@@ -108,6 +109,15 @@ public:
   bool GetEntriesAreRows() const { return this->EntriesAreRows; }
 
   /**
+   * Entries up to which they carry copies of their lights' rows (64 bytes
+   * each; default MaximumRowEntries, at most that); past it, indices.
+   */
+  void SetRowEntryBudget(size_t entries)
+  {
+    this->RowEntryBudget = std::min(entries, MaximumRowEntries);
+  }
+
+  /**
    * Measures each tile's range of linear depth (its nearest and farthest
    * surface) in `linearDepth`, a width x height G-buffer channel, on the
    * GPU (one pass over the channel into a texel per tile) and reads it
@@ -167,6 +177,7 @@ private:
   std::vector<float> HeaderData; // (first, point lights, spot lights, 0) per tile
   std::vector<float> EntryData;
   bool EntriesAreRows = true;
+  size_t RowEntryBudget = MaximumRowEntries;
   vtkSmartPointer<vtkTextureObject> Headers;
   vtkSmartPointer<vtkTextureObject> Entries;
   // The tiles' depth ranges (MeasureTileDepths), for a viewport of

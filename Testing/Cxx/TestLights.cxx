@@ -115,6 +115,10 @@ void NoDepthBounds(vtkFXCompositePass* composite)
 {
   composite->TileDepthBoundsOff();
 }
+void IndexEntries(vtkFXCompositePass* composite)
+{
+  composite->SetMaximumTileRowEntries(0); // every list holds indices
+}
 
 int Check(const char* name, const std::vector<unsigned char>& a, const std::vector<unsigned char>& b,
   double minimum, int largest = 255)
@@ -369,6 +373,10 @@ int TestLights(int, char*[])
   FX_CHECK(boundsOff <= 2, "depth bounds cut visible light");
   FX_CHECK(Check("64 lights, tiles bounded in depth", culled.FX, culled.VTK, 55.0, 2) == EXIT_SUCCESS,
     "");
+  // Tile entries as indices into the light texture instead of copies of
+  // the lights' rows (lists past MaximumTileRowEntries): the same image,
+  // spots included.
+  const Lit indexed = Render(window, 64, false, false, IndexEntries, true);
   // Every third light a spot light (50 degrees, looking down: the spot
   // loop), culled by tiles and depth, and untiled (LightCutoff 0: the
   // untiled spot loop), against VTK.
@@ -379,6 +387,9 @@ int TestLights(int, char*[])
   FX_CHECK(Check("64 lights, a third spots, untiled", spotsUntiled.FX, spotsUntiled.VTK, 55.0, 2) ==
       EXIT_SUCCESS,
     "");
+  FX_CHECK(vtkFXScenes::MaxDifference(indexed.FX, spots.FX) == 0 &&
+      std::fabs(indexed.LightsPerTile - spots.LightsPerTile) < 1e-12,
+    "index entries change the image");
   FX_CHECK(vtkFXScenes::PSNR(spots.FX, spots.VTK) < 90.0 &&
       vtkFXScenes::MaxDifference(spots.FX, culled.FX) > 10,
     "the spot cones change the image");
