@@ -184,7 +184,8 @@ double vtkFXBloomPass::GetLevelSigma(int k)
   double variance = 0.0;
   for (int j = 0; j < k; ++j)
   {
-    variance += 1.75 * std::pow(4.0, j); // down from level j
+    // down from level j: the 4x4 box from full resolution, then 13 taps
+    variance += (j == 0 ? 1.25 : 1.75) * std::pow(4.0, j);
     // up from level j + 1: a tent, or (j = 0) the last step's bilinear read
     variance += (j == 0 ? 0.1875 : 0.4375) * std::pow(4.0, j + 1);
   }
@@ -335,7 +336,8 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
     const bool readsEmission = first && !threshold;
     vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
       std::string("//VTK::System::Dec\n#define FX_FIRST ") + (readsEmission ? "1" : "0") +
-        "\n#define FX_KARIS " + (first && this->FireflySuppression ? "1" : "0") + "\n",
+        "\n#define FX_BOX " + (first ? "1" : "0") + "\n#define FX_KARIS " +
+        (first && this->FireflySuppression ? "1" : "0") + "\n",
       false);
     vtkFXRenderUtilities::RenderTargetScope target(window, level.DownTarget, level.Down);
     int rect[4];

@@ -5,8 +5,9 @@
  * Reads the G-buffer's emission channel (the EMISSIVE_COLOR of lit props,
  * see vtkFXGBufferPass, and the colour of unlit ones) and, with a
  * threshold set, the lit HDR image's light above it (soft knee). Builds a
- * pyramid by repeated 13-tap downsampling (Jimenez 2014; firefly
- * suppression by Karis averaging on the first step), climbs back with 3x3
+ * pyramid by repeated 13-tap downsampling (Jimenez 2014), the first step
+ * from full resolution a 4x4 box of four bilinear taps (firefly
+ * suppression by Karis averaging there), climbs back with 3x3
  * tent upsampling, each level adding an equal share, and adds Intensity
  * times the result onto the pipeline's HDR target (the last step, to full
  * resolution, reads bilinearly). Each filter is
@@ -39,7 +40,7 @@
  * Cost: one pass per level down and up, drawn only over the part of the
  * image the glow can reach (the emissive props' screen rectangle widened by
  * 4 deviations of the widest level; the whole image with a threshold), the first at half resolution with
- * 13 bilinear source reads per texel, each next one
+ * 4 bilinear source reads per texel, the next with 13, each next one
  * at a quarter of the texels of the one before, 4 bilinear reads per
  * texel up; one full-resolution pass of 1 bilinear read, blended. With a
  * threshold, first a full-resolution pass of one texel read (two when some
@@ -134,13 +135,14 @@ public:
    * that level k (1 = half resolution) receives on its way down and up:
    * the sum of the variances of its filters. Down, a 13-tap step from a
    * level of texel size 2^j pixels adds 1.75 x 4^j (its taps' spread, 1.5
-   * texels^2, plus their 2x2 bilinear boxes, 0.25); up, a tent step from a
+   * texels^2, plus their 2x2 bilinear boxes, 0.25), the first step's 4x4
+   * box 1.25 (spread 1, boxes 0.25); up, a tent step from a
    * level of texel size 2^m adds 0.4375 x 4^m (at twice the resolution the
    * four half-texel taps weigh the coarse texels 1/8, 4/8, 3/8 per axis,
    * a quarter of a texel off centre: variance 7/16), and the last step,
    * to full resolution, one bilinear read a quarter of a texel off centre
    * (weights 3/4, 1/4: variance 3/16), 0.75. So level k's glow is
-   * close to a Gaussian of that deviation (1.6, 4.1, 8.5, 17.2, 34.5, ...
+   * close to a Gaussian of that deviation (1.4, 4.0, 8.5, 17.2, 34.5, ...
    * pixels), and the whole glow close to the mean of those Gaussians: the
    * reference vtkfx-bench bloom compares with.
    */
