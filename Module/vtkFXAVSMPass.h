@@ -1,6 +1,6 @@
 /**
  * @class   vtkFXAVSMPass
- * @brief   Shadows cast by translucent props onto opaque ones: adaptive volumetric shadow maps.
+ * @brief   Shadows cast by translucent props onto opaque and translucent ones: adaptive volumetric shadow maps.
  *
  * After Salvi, Vidimce, Lauritzen, Lefohn, "Adaptive Volumetric Shadow
  * Maps" (EGSR 2010; seed 003). Lights cast when they are on, are not
@@ -51,7 +51,9 @@
  * vtkFXPipelinePass calls it); otherwise the pass, its buffers and the
  * G-buffer's linear depth it reads are left out. Without an opaque prop
  * the pass runs at the LightSpace stage (capture and resolve, no look-up,
- * no G-buffer): a particle cloud alone still shadows itself. A list buffer too small for a frame (counted by the
+ * no G-buffer): a particle cloud alone still shadows itself. HasWork sets
+ * the stage each frame (AfterGBuffer with opaque props): SetStage has no
+ * lasting effect on this pass. A list buffer too small for a frame (counted by the
  * atomic counter; no out-of-bounds write happens) drops the extra fragments
  * that frame, warns once and grows for the next one.
  *

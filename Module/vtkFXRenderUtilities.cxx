@@ -16,6 +16,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <string>
+#include <mutex>
+#include <map>
 
 vtkStandardNewMacro(vtkFXRenderUtilities);
 
@@ -295,25 +298,45 @@ bool vtkFXRenderUtilities::IsOpenGLSupported(const char* name)
   {
     return false;
   }
+  // Answered once per driver and name: passes ask every frame, and a
+  // missing extension means walking every extension string.
+  const GLubyte* renderer = glGetString(GL_RENDERER);
+  const GLubyte* version = glGetString(GL_VERSION);
+  if (!renderer || !version)
+  {
+    return false; // no current context
+  }
+  const std::string key = std::string(reinterpret_cast<const char*>(renderer)) + '|' +
+    reinterpret_cast<const char*>(version) + '|' + name;
+  static std::mutex mutex;
+  static std::map<std::string, bool> answers;
+  std::lock_guard<std::mutex> lock(mutex);
+  const auto known = answers.find(key);
+  if (known != answers.end())
+  {
+    return known->second;
+  }
+  bool supported = false;
   int major = 0, minor = 0;
   if (std::sscanf(name, "GL_VERSION_%d_%d", &major, &minor) == 2)
   {
     GLint has[2] = { 0, 0 };
     glGetIntegerv(GL_MAJOR_VERSION, &has[0]);
     glGetIntegerv(GL_MINOR_VERSION, &has[1]);
-    return has[0] > major || (has[0] == major && has[1] >= minor);
+    supported = has[0] > major || (has[0] == major && has[1] >= minor);
   }
-  GLint count = 0;
-  glGetIntegerv(GL_NUM_EXTENSIONS, &count);
-  for (GLint i = 0; i < count; ++i)
+  else
   {
-    const char* extension = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, i));
-    if (extension && std::strcmp(extension, name) == 0)
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count && !supported; ++i)
     {
-      return true;
+      const char* extension = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, i));
+      supported = extension && std::strcmp(extension, name) == 0;
     }
   }
-  return false;
+  answers[key] = supported;
+  return supported;
 }
 
 vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow* window,

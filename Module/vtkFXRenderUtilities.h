@@ -73,7 +73,10 @@ public:
   /**
    * Whether the current OpenGL context has `name`: "GL_VERSION_4_3" (that
    * version or later) or an extension ("GL_ARB_clear_texture"). Asks the
-   * context itself (core OpenGL 3.0 queries), whichever loader VTK uses.
+   * context itself (core OpenGL 3.0 queries), whichever loader VTK uses,
+   * once per driver (renderer and version strings) and name. Needs a
+   * current, initialised context (as a pass has while it renders); false
+   * without one that answers.
    */
   static bool IsOpenGLSupported(const char* name);
 

@@ -48,11 +48,10 @@ vec3 fxTap(ivec2 o)
 #endif
 }
 
-// Adds tap value v with its share of the kernel; with FX_KARIS the share
-// is divided by 1 + luma (Karis 2013). Jimenez weighs each 2x2 box that
-// way; here each tap is, because the five boxes overlap at the centre: a
-// lone bright pixel there lies in every box and no box average would
-// discount it, but it lies in at most two of the 13 taps.
+// Adds tap value v with its share of the kernel; with FX_KARIS (the first
+// step, always the 4x4 box) the share is divided by 1 + luma (Karis
+// 2013), per tap: each tap is one of the box's four non-overlapping 2x2
+// boxes, which is Jimenez's per-box weighting.
 void fxAccumulate(vec3 v, float share, inout vec3 sum, inout float weightSum)
 {
 #if FX_KARIS

@@ -348,13 +348,72 @@ int CheckSplatsShadowEachOther(vtkRenderWindow* window, bool withGround)
             << ": far " << far << ", near " << near << ", ratio " << far / std::max(near, 1.0)
             << " (expected 0.5)" << std::endl;
   FX_CHECK(near > 60.0 && std::fabs(far / near - 0.5) < 0.03, "splats do not shadow each other");
+  // The passes that ran: no G-buffer or composite without the ground, the
+  // shadows before the G-buffer then, after it otherwise.
+  std::string ran;
+  for (int i = 0; i < pipeline->GetNumberOfPassesThatRan(); ++i)
+  {
+    ran += std::string(pipeline->GetPassThatRan(i)) + ",";
+  }
+  const bool expected = withGround
+    ? ran.find("gbuffer,avsm,") != std::string::npos
+    : ran.find("avsm,") != std::string::npos && ran.find("gbuffer") == std::string::npos &&
+      ran.find("composite") == std::string::npos;
+  FX_CHECK(expected, "passes that ran: " << ran);
   if (!withGround)
   {
-    // Capture and resolve only: no look-up output, no G-buffer.
+    // Capture and resolve only: no look-up output.
     FX_CHECK(avsm->GetStage() == vtkFXEffectPass::LightSpace && !avsm->GetOutputTexture("visibility"),
       "the pass ran as if an opaque prop received");
-    FX_CHECK(!pipeline->GetGBufferPass()->GetChannelTexture(vtkFXGBufferPass::LinearDepth),
-      "a G-buffer was made for a scene without opaque props");
+  }
+  return EXIT_SUCCESS;
+}
+
+// One pipeline through frames with the ground, without it, and with it
+// again: the pass moves between the stages (after the G-buffer, before
+// it) and the splats shadow each other the same in every frame (the
+// far-to-near ratio 0.5 within 0.03, as in CheckSplatsShadowEachOther),
+// and the ground, when it is there, is shadowed where the splats are.
+int CheckStageSwitching(vtkRenderWindow* window)
+{
+  vtkActor* floor = nullptr;
+  vtkRenderer* renderer = GroundScene(window, true, &floor);
+  vtkSmartPointer<vtkActor> ground = floor; // (kept while it is out of the renderer)
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  vtkLight* light = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
+  light->SetPosition(1.0, 0.0, 0.0);
+  renderer->AddActor(Splats({ { -1.0, 0.0, 2.0 }, { 1.0, 0.0, 2.0 } }, 0.3, 0.5));
+  vtkNew<vtkFXPipelinePass> pipeline;
+  vtkNew<vtkFXAVSMPass> avsm;
+  pipeline->AddEffect("avsm", avsm);
+  renderer->SetPass(pipeline);
+  for (bool withGround : { true, false, true, false })
+  {
+    if (withGround)
+    {
+      renderer->AddActor(ground);
+    }
+    else
+    {
+      renderer->RemoveActor(ground);
+    }
+    window->Render();
+    const auto image = vtkFXScenes::Capture(window);
+    const auto green = [&](double worldX) {
+      const int x = static_cast<int>(0.5 * Width + worldX * Height / 8.0);
+      return double(image[3 * (static_cast<size_t>(Height / 2) * Width + x) + 1]);
+    };
+    const double far = green(-1.0), near = green(1.0);
+    std::cout << "one pipeline, " << (withGround ? "with" : "without") << " the ground: stage "
+              << vtkFXEffectPass::GetStageName(avsm->GetStage()) << ", splats " << far << " and "
+              << near << std::endl;
+    FX_CHECK(near > 60.0 && std::fabs(far / near - 0.5) < 0.03,
+      "splats' shadow after switching stages: " << far << " / " << near);
+    FX_CHECK(avsm->GetStage() ==
+        (withGround ? vtkFXEffectPass::AfterGBuffer : vtkFXEffectPass::LightSpace),
+      "stage");
+    FX_CHECK((avsm->GetOutputTexture("visibility") != nullptr) == withGround,
+      "the look-up's output follows the opaque props");
   }
   return EXIT_SUCCESS;
 }
@@ -1092,6 +1151,7 @@ int TestAVSM(int, char*[])
   FX_CHECK(CheckSplatsShadowEachOther(window, true) == EXIT_SUCCESS, "splat self-shadowing");
   FX_CHECK(CheckSplatsShadowEachOther(window, false) == EXIT_SUCCESS,
     "splat self-shadowing without an opaque prop");
+  FX_CHECK(CheckStageSwitching(window) == EXIT_SUCCESS, "frames with and without opaque props");
   FX_CHECK(CheckArrivalOrder(window) == EXIT_SUCCESS, "order independence");
   // Four splats whose chords overlap along the light (scale 0.6, centres
   // 0.5 apart, spheres 2.1 across): 8 entries and exits, which AVSM-16

@@ -334,7 +334,7 @@ int CheckHotPixels(vtkRenderWindow* window)
               << ": largest glow " << largest << std::endl;
     // On, the 1e30 pixel (clamped to 65504, minus the threshold) weighs
     // like one of value ~1 in the first taps: its glow stays below 0.2
-    // (measured 0.098), but is there; off, it glows as the clamped value
+    // (measured 0.099), but is there; off, it glows as the clamped value
     // it is, hundreds of times more (so the pixel did reach the bloom).
     if (suppress)
     {

@@ -1027,8 +1027,10 @@ int TestPipelineOwner()
 }
 
 // vtkFXRenderUtilities::IsOpenGLSupported answers from the context (no
-// GLEW): llvmpipe's 4.5 core context has 3.2 and 4.5, not 99.0; it has
-// the extensions vtkFX's paths test for, and not a made-up one.
+// GLEW): the context's own version and the one below it are there, the
+// next minor and major versions are not; its first and last extensions
+// are there (asked twice: the second answer comes from the cache), a
+// made-up one and a prefix of a real one are not.
 int TestOpenGLQueries()
 {
   auto window = FreshWindow(64, 64);
@@ -1037,17 +1039,35 @@ int TestOpenGLQueries()
   window->Render();
   window->MakeCurrent();
   using U = vtkFXRenderUtilities;
-  FX_CHECK(U::IsOpenGLSupported("GL_VERSION_3_2") && U::IsOpenGLSupported("GL_VERSION_4_5"),
-    "the context's version");
-  FX_CHECK(!U::IsOpenGLSupported("GL_VERSION_99_0") && !U::IsOpenGLSupported("GL_VERSION_4_99"),
-    "a version above the context's");
-  FX_CHECK(U::IsOpenGLSupported("GL_ARB_shader_image_load_store") &&
-      U::IsOpenGLSupported("GL_ARB_clear_texture"),
-    "llvmpipe's extensions");
-  FX_CHECK(!U::IsOpenGLSupported("GL_FX_no_such_extension") && !U::IsOpenGLSupported(nullptr) &&
-      !U::IsOpenGLSupported("GL_ARB"),
+  GLint major = 0, minor = 0, count = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+  const auto version = [](int a, int b) {
+    return "GL_VERSION_" + std::to_string(a) + "_" + std::to_string(b);
+  };
+  FX_CHECK(major >= 3 && count > 0, "a core context with extensions");
+  FX_CHECK(U::IsOpenGLSupported(version(major, minor).c_str()) &&
+      U::IsOpenGLSupported(version(major, 0).c_str()) &&
+      U::IsOpenGLSupported(version(major - 1, 9).c_str()),
+    "the context's version and the ones below");
+  FX_CHECK(!U::IsOpenGLSupported(version(major, minor + 1).c_str()) &&
+      !U::IsOpenGLSupported(version(major + 1, 0).c_str()),
+    "versions above the context's");
+  for (GLint i : { GLint(0), count - 1 })
+  {
+    const std::string extension = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, i));
+    for (int ask = 0; ask < 2; ++ask)
+    {
+      FX_CHECK(U::IsOpenGLSupported(extension.c_str()), extension << " is there");
+    }
+    FX_CHECK(!U::IsOpenGLSupported(extension.substr(0, extension.size() - 1).c_str()),
+      "a prefix of " << extension);
+  }
+  FX_CHECK(!U::IsOpenGLSupported("GL_FX_no_such_extension") && !U::IsOpenGLSupported(nullptr),
     "an extension the context lacks");
-  std::cout << "OpenGL queries: versions and extensions answered from the context" << std::endl;
+  std::cout << "OpenGL queries: version " << major << "." << minor << " and " << count
+            << " extensions answered from the context" << std::endl;
   return EXIT_SUCCESS;
 }
 
