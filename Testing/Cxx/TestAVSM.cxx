@@ -312,31 +312,33 @@ int CheckSplatSphere(vtkRenderWindow* window, bool exact, double height,
   return EXIT_SUCCESS;
 }
 
-// Self-shadowing: two white splats (scale 0.3, opacity 0.5) side by side
-// at x = -1 and x = 1, z = 2, lit along -x only, over a ground the light
-// grazes (black). Each centre pixel is the splat's alpha times its colour
-// times the transmittance at its centre plane: the one at x = +1 sees half
-// its own sphere, the one at x = -1 that and the whole other one, so their
-// ratio is the near one's centre transmittance, 0.5; from 8-bit pixels of
-// about 90 and 45, within 0.03. Without the ground (no opaque prop: the
-// pass runs before the G-buffer, which is left out, and looks nothing up
-// for opaque receivers) the cloud shadows itself the same.
-int CheckSplatsShadowEachOther(vtkRenderWindow* window, bool withGround)
+// Two white splats (scale 0.3, opacity 0.5) side by side at x = -1 and
+// x = 1, z = 2, lit along -x only, over GroundScene's ground (which the
+// light grazes: black), in a pipeline with `avsm`. The ground is returned
+// (kept alive) so that callers can take it out and put it back.
+vtkSmartPointer<vtkActor> SplatRow(vtkRenderWindow* window, vtkFXPipelinePass* pipeline,
+  vtkFXAVSMPass* avsm, vtkRenderer** renderer)
 {
-  vtkActor* ground = nullptr;
-  vtkRenderer* renderer = GroundScene(window, true, &ground);
-  if (!withGround)
-  {
-    renderer->RemoveActor(ground);
-  }
-  renderer->SetBackground(0.0, 0.0, 0.0);
-  vtkLight* light = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
+  vtkActor* floor = nullptr;
+  *renderer = GroundScene(window, true, &floor);
+  vtkSmartPointer<vtkActor> ground = floor;
+  (*renderer)->SetBackground(0.0, 0.0, 0.0);
+  vtkLight* light = vtkLight::SafeDownCast((*renderer)->GetLights()->GetItemAsObject(0));
   light->SetPosition(1.0, 0.0, 0.0);
-  renderer->AddActor(Splats({ { -1.0, 0.0, 2.0 }, { 1.0, 0.0, 2.0 } }, 0.3, 0.5));
-  vtkNew<vtkFXPipelinePass> pipeline;
-  vtkNew<vtkFXAVSMPass> avsm;
+  (*renderer)->AddActor(Splats({ { -1.0, 0.0, 2.0 }, { 1.0, 0.0, 2.0 } }, 0.3, 0.5));
   pipeline->AddEffect("avsm", avsm);
-  renderer->SetPass(pipeline);
+  (*renderer)->SetPass(pipeline);
+  return ground;
+}
+
+// Renders SplatRow's scene and checks the splats' centre pixels: each is
+// the splat's alpha times its colour times the transmittance at its
+// centre plane; the one at x = +1 sees half its own sphere, the one at
+// x = -1 that and the whole other one, so their ratio is the near one's
+// centre transmittance, 0.5; from 8-bit pixels of about 90 and 45,
+// within 0.03.
+int CheckSplatRow(vtkRenderWindow* window, const std::string& name)
+{
   window->Render();
   const auto image = vtkFXScenes::Capture(window);
   const auto green = [&](double worldX) {
@@ -344,10 +346,28 @@ int CheckSplatsShadowEachOther(vtkRenderWindow* window, bool withGround)
     return double(image[3 * (static_cast<size_t>(Height / 2) * Width + x) + 1]);
   };
   const double far = green(-1.0), near = green(1.0);
-  std::cout << "splats in a row along the light" << (withGround ? "" : ", no opaque prop")
-            << ": far " << far << ", near " << near << ", ratio " << far / std::max(near, 1.0)
-            << " (expected 0.5)" << std::endl;
-  FX_CHECK(near > 60.0 && std::fabs(far / near - 0.5) < 0.03, "splats do not shadow each other");
+  std::cout << "splats in a row along the light, " << name << ": far " << far << ", near " << near
+            << ", ratio " << far / std::max(near, 1.0) << " (expected 0.5)" << std::endl;
+  FX_CHECK(near > 60.0 && std::fabs(far / near - 0.5) < 0.03,
+    "splats do not shadow each other (" << name << ")");
+  return EXIT_SUCCESS;
+}
+
+// Self-shadowing: SplatRow's splats, with the ground, and without it (no
+// opaque prop: the pass runs before the G-buffer, which is left out, and
+// looks nothing up for opaque receivers) the same.
+int CheckSplatsShadowEachOther(vtkRenderWindow* window, bool withGround)
+{
+  vtkNew<vtkFXPipelinePass> pipeline;
+  vtkNew<vtkFXAVSMPass> avsm;
+  vtkRenderer* renderer = nullptr;
+  auto ground = SplatRow(window, pipeline, avsm, &renderer);
+  if (!withGround)
+  {
+    renderer->RemoveActor(ground);
+  }
+  FX_CHECK(CheckSplatRow(window, withGround ? "over the ground" : "no opaque prop") == EXIT_SUCCESS,
+    "");
   // The passes that ran: no G-buffer or composite without the ground, the
   // shadows before the G-buffer then, after it otherwise.
   std::string ran;
@@ -369,24 +389,16 @@ int CheckSplatsShadowEachOther(vtkRenderWindow* window, bool withGround)
   return EXIT_SUCCESS;
 }
 
-// One pipeline through frames with the ground, without it, and with it
-// again: the pass moves between the stages (after the G-buffer, before
-// it) and the splats shadow each other the same in every frame (the
-// far-to-near ratio 0.5 within 0.03, as in CheckSplatsShadowEachOther),
-// and the ground, when it is there, is shadowed where the splats are.
+// One pipeline through frames with the ground, without it, with it again
+// and without: the pass moves between the stages (after the G-buffer,
+// before it), the splats shadow each other the same in every frame, and
+// the look-up's output is there exactly while the ground is.
 int CheckStageSwitching(vtkRenderWindow* window)
 {
-  vtkActor* floor = nullptr;
-  vtkRenderer* renderer = GroundScene(window, true, &floor);
-  vtkSmartPointer<vtkActor> ground = floor; // (kept while it is out of the renderer)
-  renderer->SetBackground(0.0, 0.0, 0.0);
-  vtkLight* light = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
-  light->SetPosition(1.0, 0.0, 0.0);
-  renderer->AddActor(Splats({ { -1.0, 0.0, 2.0 }, { 1.0, 0.0, 2.0 } }, 0.3, 0.5));
   vtkNew<vtkFXPipelinePass> pipeline;
   vtkNew<vtkFXAVSMPass> avsm;
-  pipeline->AddEffect("avsm", avsm);
-  renderer->SetPass(pipeline);
+  vtkRenderer* renderer = nullptr;
+  auto ground = SplatRow(window, pipeline, avsm, &renderer);
   for (bool withGround : { true, false, true, false })
   {
     if (withGround)
@@ -397,18 +409,9 @@ int CheckStageSwitching(vtkRenderWindow* window)
     {
       renderer->RemoveActor(ground);
     }
-    window->Render();
-    const auto image = vtkFXScenes::Capture(window);
-    const auto green = [&](double worldX) {
-      const int x = static_cast<int>(0.5 * Width + worldX * Height / 8.0);
-      return double(image[3 * (static_cast<size_t>(Height / 2) * Width + x) + 1]);
-    };
-    const double far = green(-1.0), near = green(1.0);
-    std::cout << "one pipeline, " << (withGround ? "with" : "without") << " the ground: stage "
-              << vtkFXEffectPass::GetStageName(avsm->GetStage()) << ", splats " << far << " and "
-              << near << std::endl;
-    FX_CHECK(near > 60.0 && std::fabs(far / near - 0.5) < 0.03,
-      "splats' shadow after switching stages: " << far << " / " << near);
+    FX_CHECK(CheckSplatRow(window, std::string("one pipeline, ") +
+                 (withGround ? "with the ground" : "without it")) == EXIT_SUCCESS,
+      "");
     FX_CHECK(avsm->GetStage() ==
         (withGround ? vtkFXEffectPass::AfterGBuffer : vtkFXEffectPass::LightSpace),
       "stage");
