@@ -97,6 +97,19 @@ vtkSmartPointer<vtkActor> Sphere(double ambient, double diffuse)
   return actor;
 }
 
+// A surface from `port`, lit with ambient 0.4 and diffuse 0.6 (its
+// darkest side stays bright enough to measure lines on).
+vtkSmartPointer<vtkActor> LitSurface(vtkAlgorithmOutput* port)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(port);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetAmbient(0.4);
+  actor->GetProperty()->SetDiffuse(0.6);
+  return actor;
+}
+
 // What the seed's rule makes of a diffuse factor under `thresholds`.
 double Band(double df, const std::vector<double>& thresholds)
 {
@@ -326,12 +339,7 @@ int InteriorLinePixels(vtkRenderWindow* window, bool creases, int& interior, int
   reader->SetFileName((vtkFXScenes::DataDirectory() + "/fandisk.obj").c_str());
   vtkNew<vtkPolyDataNormals> normals; // splitting at 30 degrees, VTK's default
   normals->SetInputConnection(reader->GetOutputPort());
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(normals->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetAmbient(0.4);
-  actor->GetProperty()->SetDiffuse(0.6);
+  auto actor = LitSurface(normals->GetOutputPort());
   vtkFXToonPass* toon = MakeScene(window, actor, false);
   vtkRenderer* renderer = window->GetRenderers()->GetFirstRenderer();
   renderer->ResetCamera();
@@ -767,12 +775,7 @@ int CheckGrazingFloor(vtkRenderWindow* window)
   plane->SetPoint1(20.0, -20.0, 0.0);
   plane->SetPoint2(-20.0, 20.0, 0.0);
   plane->SetResolution(40, 40);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(plane->GetOutputPort());
-  vtkNew<vtkActor> floor;
-  floor->SetMapper(mapper);
-  floor->GetProperty()->SetAmbient(0.4);
-  floor->GetProperty()->SetDiffuse(0.6);
+  auto floor = LitSurface(plane->GetOutputPort());
   int width = 0, height = 0;
   for (double elevation : { 2.0, 5.0, 15.0 })
   {
