@@ -784,6 +784,7 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
       this->ReportedPositionalWithoutDepth = true;
     }
     this->UsedDepthPrepass = false; // (nothing drawn)
+    this->DeactivateLightTextures();
     return;
   }
   this->Quad.AtFarPlane = this->UsedDepthPrepass;
@@ -792,6 +793,7 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
   if (!program)
   {
     this->UsedDepthPrepass = false;
+    this->DeactivateLightTextures();
     return;
   }
   this->SetUniforms(program, ren);
@@ -805,18 +807,24 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
     }
   }
   this->GBuffer->GetDepthTexture()->Deactivate();
+  this->DeactivateLightTextures();
+  for (const auto& contributor : this->Contributors)
+  {
+    contributor->UnbindCompositeResources();
+  }
+}
+
+void vtkFXCompositePass::DeactivateLightTextures()
+{
+  // (the upload activated them before the shader was built)
   if (this->LightTexture)
   {
     this->LightTexture->Deactivate();
   }
-  if (this->LightTilesUsed)
+  if (this->LightTilesUsed && this->LightTiles && this->LightTiles->GetHeaderTexture())
   {
     this->LightTiles->GetHeaderTexture()->Deactivate();
     this->LightTiles->GetEntryTexture()->Deactivate();
-  }
-  for (const auto& contributor : this->Contributors)
-  {
-    contributor->UnbindCompositeResources();
   }
 }
 

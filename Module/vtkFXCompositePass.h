@@ -271,6 +271,7 @@ protected:
   int LightingComplexity(vtkOpenGLRenderer* ren) const; // 0 without lights or normals
   int UploadLightTexture(vtkOpenGLRenderer* ren); // returns the lights uploaded
   int UploadedLights = 0; // by this frame's UploadLightTexture
+  void DeactivateLightTextures();
   void BuildLightTiles(vtkOpenGLRenderer* ren, const std::vector<vtkFXLightTiles::Light>& lights);
   void SetUniforms(vtkShaderProgram* program, vtkOpenGLRenderer* ren);
   void Draw(vtkOpenGLRenderer* ren);
