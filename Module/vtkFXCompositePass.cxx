@@ -367,8 +367,7 @@ int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
   struct Row
   {
     int Kind; // 0 directional, 1 point, 2 spot
-    float Texels[LightTexels * 4];
-    vtkFXLightTiles::Light Sphere;
+    vtkFXLightTiles::Light Light; // its sphere, and its row's texels (Light.Row)
   };
   std::vector<Row> rows;
   // A diffuse response that raises small factors (toon bands) makes a
@@ -408,7 +407,7 @@ int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
       color[2] * intensity, attenuation[0], positionVC[0], positionVC[1], positionVC[2],
       attenuation[1], directionVC[0], directionVC[1], directionVC[2], attenuation[2],
       light->GetConeAngle(), light->GetExponent(), static_cast<double>(rows.size()), 0.0 };
-    std::copy(values, values + LightTexels * 4, r.Texels);
+    std::copy(values, values + LightTexels * 4, r.Light.Row);
     // (VTK takes a negative intensity or colour as light taken away, as
     // visible as light added)
     const double brightest = this->MaterialColorScale * std::fabs(intensity) *
@@ -423,32 +422,25 @@ int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
         range = std::max(range, vtkFXLightTiles::Range(1.0, attenuation, 2.0 * raised));
       }
     }
-    r.Sphere.Center[0] = positionVC[0];
-    r.Sphere.Center[1] = positionVC[1];
-    r.Sphere.Center[2] = positionVC[2];
-    r.Sphere.Radius = range;
-    std::copy(r.Texels, r.Texels + LightTexels * 4, r.Sphere.Row);
+    std::copy(positionVC, positionVC + 3, r.Light.Center);
+    r.Light.Radius = range;
     rows.push_back(r);
   }
   std::stable_sort(
     rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.Kind < b.Kind; });
+  for (int kind : { 1, 2 })
+  {
+    this->FirstLightOfKind[kind - 1] = static_cast<int>(std::partition_point(rows.begin(),
+      rows.end(), [kind](const Row& r) { return r.Kind < kind; }) - rows.begin());
+  }
   std::vector<float> texels;
   std::vector<vtkFXLightTiles::Light> spheres; // the positional lights, for the tiles
-  this->FirstLightOfKind[0] = this->FirstLightOfKind[1] = static_cast<int>(rows.size());
-  for (size_t i = 0; i < rows.size(); ++i)
+  for (const Row& r : rows)
   {
-    texels.insert(texels.end(), rows[i].Texels, rows[i].Texels + LightTexels * 4);
-    for (int kind : { 1, 2 })
+    texels.insert(texels.end(), r.Light.Row, r.Light.Row + LightTexels * 4);
+    if (r.Kind > 0)
     {
-      if (rows[i].Kind >= kind)
-      {
-        this->FirstLightOfKind[kind - 1] =
-          std::min(this->FirstLightOfKind[kind - 1], static_cast<int>(i));
-      }
-    }
-    if (rows[i].Kind > 0)
-    {
-      spheres.push_back(rows[i].Sphere);
+      spheres.push_back(r.Light);
     }
   }
   int count = static_cast<int>(texels.size() / (LightTexels * 4));
