@@ -206,9 +206,10 @@ std::vector<double> Coverage(
 // Line coverage per pixel: 1 - (image with lines) / (image without), in the
 // green channel (black lines over a grey background and a sphere whose
 // ambient term keeps it above 0.4).
-// `plain` receives the image without lines.
-std::vector<double> LineCoverage(
-  vtkRenderWindow* window, vtkFXToonPass* toon, std::vector<unsigned char>* plainImage = nullptr)
+// `plain` receives the image without lines, `linedImage` the one with.
+std::vector<double> LineCoverage(vtkRenderWindow* window, vtkFXToonPass* toon,
+  std::vector<unsigned char>* plainImage = nullptr,
+  std::vector<unsigned char>* linedImage = nullptr)
 {
   toon->FeatureLinesOn();
   window->Render();
@@ -221,6 +222,10 @@ std::vector<double> LineCoverage(
   if (plainImage)
   {
     *plainImage = plain;
+  }
+  if (linedImage)
+  {
+    *linedImage = lined;
   }
   return coverage;
 }
@@ -839,13 +844,8 @@ int CheckLineColor(vtkRenderWindow* window)
   vtkFXToonPass* toon = MakeScene(window, Sphere(0.4, 0.6), true);
   toon->BandsOff();
   toon->SetLineColor(1.0, 0.0, 0.0);
-  window->Render();
-  const auto lined = vtkFXScenes::Capture(window);
-  toon->FeatureLinesOff();
-  window->Render();
-  const auto plain = vtkFXScenes::Capture(window);
-  toon->FeatureLinesOn();
-  const auto coverage = Coverage(lined, plain);
+  std::vector<unsigned char> plain, lined;
+  const auto coverage = LineCoverage(window, toon, &plain, &lined);
   int checked = 0;
   double worst = 0.0;
   for (size_t i = 0; i < coverage.size(); ++i)
