@@ -125,6 +125,10 @@ vtkSmartPointer<vtkRenderWindow> MakeWindow(const Options& o)
 vtkSmartPointer<vtkRenderer> Stage(
   vtkRenderWindow* window, const std::string& input, std::string& error, double dataBounds[6])
 {
+  // The old scene's mappers and passes delete their GL names as they go,
+  // in whichever context is current: this window's, not the one the last
+  // frame of another window left current (whose buffers they would delete).
+  window->MakeCurrent();
   window->GetRenderers()->RemoveAllItems();
   auto renderer = vtkSmartPointer<vtkRenderer>::New();
   window->AddRenderer(renderer);

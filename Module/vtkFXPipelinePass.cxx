@@ -21,6 +21,7 @@
 #include "vtkLightCollection.h"
 #include "vtkLightsPass.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkOpaquePass.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOverlayPass.h"
@@ -960,6 +961,15 @@ unsigned int vtkFXPipelinePass::GetGBufferChannels() const
 
 void vtkFXPipelinePass::ReleaseGraphicsResources(vtkWindow* w)
 {
+  // GL deletes names in whichever context is current: called with another
+  // window's current (an application with several windows releasing one),
+  // the passes below would delete that window's textures and buffers of the
+  // same names, and it would crash drawing with them later.
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(w);
+  if (window)
+  {
+    window->PushContext();
+  }
   // The sequence only holds the passes of the last frame: release them all.
   this->CameraPass->ReleaseGraphicsResources(w);
   this->LightsPass->ReleaseGraphicsResources(w);
@@ -973,6 +983,10 @@ void vtkFXPipelinePass::ReleaseGraphicsResources(vtkWindow* w)
   {
     slot.Effect->ReleaseGraphicsResources(w);
     slot.Active = false;
+  }
+  if (window)
+  {
+    window->PopContext();
   }
 }
 

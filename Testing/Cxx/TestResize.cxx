@@ -2,11 +2,15 @@
 // viewport and the image still matches VTK's forward render. A 1x1 window
 // and a renderer that covers only part of the window work too.
 #include "vtkFXBloomPass.h"
+#include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
 
+#include "vtkFXOpenGL.h"
+#include "vtkRenderWindow.h"
+#include "vtkTextureObject.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
 
@@ -50,6 +54,54 @@ struct HDRTargetComparison
     return vtkFXScenes::MaxDifference(plain, vtkFXScenes::Capture(window));
   }
 };
+}
+
+// Two windows with a pipeline each: releasing one's pipeline while the
+// other's context is current (an application closing one view of
+// several) frees that pipeline's own textures, not the other's, whose next
+// frame is the same image. (Without the release pushing its window's
+// context, GL deleted the current window's names.)
+int CheckReleaseFromAnotherWindow()
+{
+  std::string error;
+  vtkSmartPointer<vtkRenderWindow> windows[2] = { vtkFXTest::MakeWindow(300, 200),
+    vtkFXTest::MakeWindow(300, 200) };
+  vtkNew<vtkFXPipelinePass> pipelines[2];
+  for (int i = 0; i < 2; ++i)
+  {
+    vtkNew<vtkRenderer> renderer;
+    windows[i]->AddRenderer(renderer);
+    FX_CHECK(vtkFXScenes::Populate(renderer, i == 0 ? "scene:spheres" : "scene:corner",
+               vtkFXScenes::Options(), error),
+      error);
+    pipelines[i]->AmbientOcclusionOn();
+    renderer->SetPass(pipelines[i]);
+    windows[i]->Render();
+  }
+  const auto before = vtkFXScenes::Capture(windows[0]);
+  windows[0]->MakeCurrent();
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+  pipelines[1]->ReleaseGraphicsResources(windows[1]);
+  // (both contexts number their textures from 1: the names overlap)
+  vtkTextureObject* albedo =
+    pipelines[0]->GetGBufferPass()->GetChannelTexture(vtkFXGBufferPass::Albedo);
+  windows[0]->MakeCurrent();
+  const bool kept = albedo && glIsTexture(albedo->GetHandle()) == GL_TRUE;
+  // (the composite warns of a GL error left pending by the steps before it)
+  vtkFXTest::EventCounter warnings(pipelines[0]->GetCompositePass(), vtkCommand::WarningEvent);
+  windows[0]->Render();
+  const GLenum glError = glGetError();
+  const int largest = vtkFXScenes::MaxDifference(before, vtkFXScenes::Capture(windows[0]));
+  windows[1]->Render(); // the released pipeline makes its resources again
+  std::cout << "a pipeline released from another window's context: the other window's "
+            << (kept ? "textures are kept" : "G-BUFFER TEXTURE WAS DELETED") << ", its next frame "
+            << largest << " levels off its last, GL error " << glError << ", " << warnings.Count
+            << " warnings" << std::endl;
+  FX_CHECK(kept && glError == GL_NO_ERROR && warnings.Count == 0 && largest == 0,
+    "releasing one window's pipeline touched another window's resources");
+  return EXIT_SUCCESS;
 }
 
 int TestResize(int, char*[])
@@ -148,5 +200,6 @@ int TestResize(int, char*[])
     FX_CHECK(passes.find("hdr-target") != std::string::npos, "no HDR target: " << passes);
     FX_CHECK(largest <= 2, "the HDR target in a special window");
   }
+  FX_CHECK(CheckReleaseFromAnotherWindow() == EXIT_SUCCESS, "");
   return EXIT_SUCCESS;
 }
