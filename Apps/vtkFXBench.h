@@ -6,6 +6,7 @@
 #include "vtkSmartPointer.h"
 
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -58,16 +59,22 @@ double TimedRender(vtkRenderWindow* window, vtkTimerLog* timer);
 // Times `frames` frames of every method's window, the methods in turn
 // within each frame (so that a slow stretch of the machine falls on all of
 // them alike), appending to each method's FrameMs; progress goes to stderr
-// as "<label>: frame f/frames".
+// as "<label>: frame f/frames". `beforeFrame`, when given, runs before
+// each method's frame, outside the timing (e.g. to move the camera).
 template <typename Method>
-void TimeFramesInTurn(
-  std::vector<Method>& methods, int frames, const std::string& label, vtkTimerLog* timer)
+void TimeFramesInTurn(std::vector<Method>& methods, int frames, const std::string& label,
+  vtkTimerLog* timer,
+  const std::function<void(typename std::vector<Method>::value_type&)>& beforeFrame = nullptr)
 {
   for (int f = 0; f < frames; ++f)
   {
     std::cerr << "\r" << label << ": frame " << f + 1 << "/" << frames << std::flush;
     for (auto& m : methods)
     {
+      if (beforeFrame)
+      {
+        beforeFrame(m);
+      }
       m.FrameMs.push_back(TimedRender(m.Window, timer));
     }
   }

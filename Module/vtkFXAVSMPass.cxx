@@ -11,8 +11,11 @@
 #include "vtkFXViewPosition.h"
 
 #include "vtkActor.h"
+#include "vtkAssemblyNode.h"
+#include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkImageData.h"
 #include "vtkMapper.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
@@ -29,6 +32,7 @@
 #include "vtkRenderState.h"
 #include "vtkShaderProgram.h"
 #include "vtkShaderProperty.h"
+#include "vtkTexture.h"
 #include "vtkTextureObject.h"
 #include "vtkTimerLog.h"
 #include "vtkTranslucentPass.h"
@@ -36,6 +40,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <iterator>
 #include <sstream>
 
@@ -1353,7 +1358,13 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
     this->AbandonFrame(window);
     return;
   }
-  this->StoredFragments = this->Capacity;
+  // The shadow maps of the last frame stand when they were made from the
+  // same casters, lights and settings; kept again below once this frame's
+  // are whole.
+  const std::vector<double> key = this->CaptureKey();
+  this->ReusedShadowMaps =
+    this->ReuseShadowMaps && !this->KeptKey.empty() && key == this->KeptKey;
+  this->KeptKey.clear();
   // With Profile on, each phase is finished before the clock reads it.
   vtkNew<vtkTimerLog> clock;
   const auto phase = [this, &clock](int which) {
@@ -1371,25 +1382,29 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
     glFinish();
     clock->StartTimer();
   }
-  this->Capture(s, window);
-  this->StoredFragments = std::min<vtkIdType>(this->StoredFragments, this->CapturedFragments);
-  phase(0);
   bool drawn = true; // the curves and the visibility had their storage
-  if (!this->Exact)
+  if (!this->ReusedShadowMaps)
   {
-    drawn = this->Resolve(window);
-  }
-  else
-  {
-    // The lists are the map: no curves are kept.
-    for (auto& t : this->Curves)
+    this->StoredFragments = this->Capacity;
+    this->Capture(s, window);
+    this->StoredFragments = std::min<vtkIdType>(this->StoredFragments, this->CapturedFragments);
+    phase(0);
+    if (!this->Exact)
     {
-      vtkFXRenderUtilities::Release(t, window);
+      drawn = this->Resolve(window);
     }
-    this->Curves.clear();
-    vtkFXRenderUtilities::Release(this->ResolveFrameBuffer, window);
+    else
+    {
+      // The lists are the map: no curves are kept.
+      for (auto& t : this->Curves)
+      {
+        vtkFXRenderUtilities::Release(t, window);
+      }
+      this->Curves.clear();
+      vtkFXRenderUtilities::Release(this->ResolveFrameBuffer, window);
+    }
+    phase(1);
   }
-  phase(1);
   if (opaqueReceivers)
   {
     drawn = drawn && this->LookUp(ren, window);
@@ -1426,6 +1441,12 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
     return;
   }
   this->FrameReady = true;
+  // Lists that dropped fragments (the buffer grows for the next frame) are
+  // made again.
+  if (this->CapturedFragments <= this->StoredFragments)
+  {
+    this->KeptKey = key;
+  }
   if (!this->ErrorThisFrame)
   {
     this->LastError.clear(); // (a frame without trouble: a later failure is news)
@@ -1442,6 +1463,82 @@ void vtkFXAVSMPass::ReportError(const std::string& message)
   }
 }
 
+namespace
+{
+// When a texture's image last changed: the texture's settings or its input.
+double TextureTime(vtkTexture* texture)
+{
+  vtkImageData* image = texture ? texture->GetInput() : nullptr;
+  return texture ? static_cast<double>(std::max(texture->GetMTime(), image ? image->GetMTime() : 0))
+                 : 0.0;
+}
+}
+
+std::vector<double> vtkFXAVSMPass::CaptureKey()
+{
+  std::vector<double> key;
+  const auto add = [&key](double value) { key.push_back(value); };
+  // The settings, and the storage the maps live in (new buffers hold none).
+  add(static_cast<double>(this->GetMTime()));
+  add(static_cast<double>(this->Capacity));
+  add(static_cast<double>(this->BufferTexels));
+  for (unsigned int buffer : this->Buffers)
+  {
+    add(buffer);
+  }
+  add(this->AtlasSize[0]);
+  add(this->AtlasSize[1]);
+  // The lights' views: where each light sees the props from.
+  for (const CastingLight& casting : this->CastingLights)
+  {
+    add(casting.Index);
+    add(casting.NumberOfViews);
+  }
+  for (const LightView& view : this->Views)
+  {
+    const double* toView = view.Camera->GetViewTransformMatrix()->GetData();
+    const double* toClip = view.Projection->GetData();
+    key.insert(key.end(), toView, toView + 16);
+    key.insert(key.end(), toClip, toClip + 16);
+    add(view.SliceRange[0]);
+    add(view.SliceRange[1]);
+    add(view.Origin[0]);
+    add(view.Origin[1]);
+  }
+  // The casters, down to the parts of assemblies: each one's redraw time
+  // covers its property, transform, texture, mapper and input; the shader
+  // property and the property's textures are not in it.
+  for (vtkProp* prop : this->Casters)
+  {
+    add(static_cast<double>(reinterpret_cast<std::uintptr_t>(prop)));
+    prop->InitPathTraversal();
+    while (vtkAssemblyPath* path = prop->GetNextPath())
+    {
+      vtkProp* part = path->GetLastNode()->GetViewProp();
+      add(static_cast<double>(reinterpret_cast<std::uintptr_t>(part)));
+      add(static_cast<double>(part->GetRedrawMTime()));
+      vtkActor* actor = vtkActor::SafeDownCast(part);
+      if (!actor)
+      {
+        continue;
+      }
+      add(TextureTime(actor->GetTexture()));
+      if (vtkShaderProperty* shaders = actor->GetShaderProperty())
+      {
+        add(static_cast<double>(shaders->GetMTime()));
+      }
+      if (vtkProperty* property = actor->GetProperty())
+      {
+        for (const auto& named : property->GetAllTextures())
+        {
+          add(TextureTime(named.second));
+        }
+      }
+    }
+  }
+  return key;
+}
+
 void vtkFXAVSMPass::ReleaseBuffers()
 {
   if (this->Buffers[HeadsBuffer] && this->BuffersWindow)
@@ -1452,6 +1549,7 @@ void vtkFXAVSMPass::ReleaseBuffers()
     this->BuffersWindow->PopContext();
   }
   std::fill(this->Buffers, this->Buffers + NumberOfBuffers, 0u);
+  this->KeptKey.clear();
   this->BufferTexels = 0;
   this->Capacity = 0;
   this->BuffersWindow = nullptr;
@@ -1463,6 +1561,7 @@ void vtkFXAVSMPass::AbandonFrame(vtkOpenGLRenderWindow* window)
   // pointers into the scene kept.
   vtkFXRenderUtilities::Release(this->Visibility, window);
   this->FrameReady = false;
+  this->KeptKey.clear();
   this->Views.clear();
   this->Casters.clear();
   this->CastingLights.clear();
@@ -1501,6 +1600,8 @@ void vtkFXAVSMPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SplatRadius: " << this->SplatRadius << "\n";
   os << indent << "MaximumNumberOfLights: " << this->MaximumNumberOfLights << "\n";
   os << indent << "InitialNodesPerTexel: " << this->InitialNodesPerTexel << "\n";
+  os << indent << "ReuseShadowMaps: " << this->ReuseShadowMaps
+     << " (last frame reused them: " << this->ReusedShadowMaps << ")\n";
   os << indent << "CapturedFragments: " << this->CapturedFragments << " (capacity "
      << this->Capacity << ")\n";
 }

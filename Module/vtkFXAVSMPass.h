@@ -78,6 +78,9 @@
  * and inserts each segment into the curve; the look-up, one full-resolution pass of 1 (4
  * bilinear) curve reads per casting light, or a walk of the lists (Exact).
  * A positional light without a cone inside the props costs six views.
+ * A frame whose casters, casting lights and settings are those of the
+ * frame before (the camera alone moved) keeps that frame's curves or lists
+ * and costs the look-up only (ReuseShadowMaps, default on).
  */
 #ifndef vtkFXAVSMPass_h
 #define vtkFXAVSMPass_h
@@ -243,6 +246,30 @@ public:
   vtkBooleanMacro(SkipBackground, bool);
 
   /**
+   * Keep the shadow maps while nothing they are made from changes (default
+   * on): the casters (each one's redraw time, vtkProp::GetRedrawMTime: its
+   * property, transform, texture, mapper and input data; its shader
+   * property and its property's textures), the casting lights' views
+   * (position, direction, cone, and the visible props' bounds they are
+   * fitted to) and this pass's settings (its MTime). A frame that only
+   * moves the camera then skips the capture and the resolve and costs the
+   * look-up alone. A camera light (the light kit's) moves with the camera,
+   * so its shadow maps are made again every frame, as are those of data
+   * that changes. Casters changed without a Modified() (data edited in
+   * place) are not seen, as VTK's own mappers do not redraw them: call
+   * Modified() on this pass to make the maps again.
+   */
+  vtkSetMacro(ReuseShadowMaps, bool);
+  vtkGetMacro(ReuseShadowMaps, bool);
+  vtkBooleanMacro(ReuseShadowMaps, bool);
+
+  /**
+   * Whether the last frame reused the shadow maps of the frame before it
+   * (no capture, no resolve; see ReuseShadowMaps).
+   */
+  vtkGetMacro(ReusedShadowMaps, bool);
+
+  /**
    * Measure the capture, resolve and look-up of each frame with a
    * glFinish between them (default off: it stalls the pipeline; for
    * benchmarks).
@@ -253,7 +280,8 @@ public:
 
   /**
    * Milliseconds of the last frame's capture (0), resolve (1) and look-up
-   * (2), with Profile on; 0 otherwise.
+   * (2), with Profile on; 0 otherwise (and for the capture and resolve of a
+   * frame that reused the shadow maps).
    */
   double GetPhaseMilliseconds(int phase) const
   {
@@ -388,6 +416,9 @@ protected:
   static double LightDepthFromNDC(const LightView& view, double ndcZ); // vtkFXAVSMLightDepth.glsl
   void ReleaseCurveUnits();
   void AbandonFrame(vtkOpenGLRenderWindow* window); // no shadows this frame
+  // Everything the capture and the resolve read, as numbers: equal keys,
+  // equal shadow maps (ReuseShadowMaps).
+  std::vector<double> CaptureKey();
 
   int ShadowMapSize = 512;
   int NumberOfNodes = 8;
@@ -427,6 +458,11 @@ protected:
   vtkTimeStamp ShaderStageTime;
   double PhaseMilliseconds[3] = { 0.0, 0.0, 0.0 };
   bool WarnedUnsupported = false;
+  bool ReuseShadowMaps = true;
+  bool ReusedShadowMaps = false;
+  // The key of the shadow maps in the buffers and curves, while they are
+  // whole (every fragment stored); empty when there are none to reuse.
+  std::vector<double> KeptKey;
 
   // This frame's casters and casting lights (from HasWork), the lights'
   // views (from Render, kept for the translucent step) and the atlas

@@ -716,6 +716,100 @@ int CheckTiltedTranslucentReceiver(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
+// Shadow maps kept between frames (ReuseShadowMaps): after each change
+// below, a frame either reuses the last maps or makes new ones, as
+// expected, and its visibility equals that of the same frame made afresh
+// (the pass Modified()) byte for byte; a change that must remake them
+// also changes the visibility, so stale maps would fail.
+int CheckShadowMapReuse(vtkRenderWindow* window)
+{
+  vtkNew<vtkFXPipelinePass> pipeline;
+  vtkNew<vtkFXAVSMPass> avsm;
+  vtkRenderer* renderer = GroundScene(window, false);
+  vtkLight* light = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
+  auto slab = Quad(-10, 0, 1, 0.3);
+  renderer->AddActor(slab);
+  pipeline->AddEffect("avsm", avsm);
+  renderer->SetPass(pipeline);
+  window->Render();
+  FX_CHECK(!avsm->GetReusedShadowMaps(), "the first frame reused shadow maps");
+  std::vector<float> last = vtkFXTest::Download(avsm->GetOutputTexture("visibility"), 1);
+  FX_CHECK(CheckHalves("kept shadow maps, first frame", last, 0.7, 1e-3) == EXIT_SUCCESS, "");
+
+  // A slab of composite data whose block opacity changes.
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-10.0, -10.0, 2.0);
+  plane->SetPoint1(0.0, -10.0, 2.0);
+  plane->SetPoint2(-10.0, 10.0, 2.0);
+  plane->Update();
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, plane->GetOutput());
+  vtkNew<vtkCompositePolyDataMapper2> blockMapper;
+  blockMapper->SetInputDataObject(blocks);
+  vtkNew<vtkCompositeDataDisplayAttributes> attributes;
+  blockMapper->SetCompositeDataDisplayAttributes(attributes);
+  blockMapper->SetBlockOpacity(1, 0.5);
+  vtkNew<vtkActor> blockSlab;
+  blockSlab->SetMapper(blockMapper);
+  blockSlab->GetProperty()->SetOpacity(0.999);
+
+  vtkPlaneSource* source = vtkPlaneSource::SafeDownCast(slab->GetMapper()->GetInputAlgorithm());
+  const struct
+  {
+    const char* What;
+    std::function<void()> Change;
+    bool Reused;
+    bool Changes; // the shadows: a stale map would show
+  } steps[] = {
+    { "nothing changed", [] {}, true, false },
+    { "the camera dollied", [&] { renderer->GetActiveCamera()->Dolly(1.2); }, true, true },
+    { "the camera turned", [&] { renderer->GetActiveCamera()->Roll(30.0); }, true, true },
+    { "the slab's opacity", [&] { slab->GetProperty()->SetOpacity(0.6); }, false, true },
+    { "the slab moved", [&] { slab->SetPosition(3.0, 0.0, 0.0); }, false, true },
+    { "the slab's data", [&] { source->SetPoint1(-5.0, -10.0, 1.0); }, false, true },
+    { "the light turned", [&] { light->SetPosition(0.3, 0.0, 1.0); }, false, true },
+    { "a caster added", [&] { renderer->AddActor(blockSlab); }, false, true },
+    { "unchanged again", [] {}, true, false },
+    { "a block's opacity", [&] { blockMapper->SetBlockOpacity(1, 0.8); }, false, true },
+    // (two surfaces per texel, which 4 nodes keep exactly as 8 do)
+    { "the nodes", [&] { avsm->SetNumberOfNodes(4); }, false, false },
+    { "a camera light, the camera still",
+      [&] {
+        light->SetLightTypeToCameraLight();
+        light->SetPosition(0.2, 0.0, 1.0);
+        light->SetFocalPoint(0.0, 0.0, 0.0);
+      },
+      false, true },
+    { "a camera light, the camera turned", [&] { renderer->GetActiveCamera()->Elevation(10.0); },
+      false, true },
+    { "reuse off", [&] { avsm->ReuseShadowMapsOff(); }, false, false },
+    { "reuse off, nothing changed", [] {}, false, false },
+  };
+  for (const auto& step : steps)
+  {
+    step.Change();
+    renderer->ResetCameraClippingRange();
+    window->Render();
+    const bool reused = avsm->GetReusedShadowMaps();
+    const auto visibility = vtkFXTest::Download(avsm->GetOutputTexture("visibility"), 1);
+    avsm->Modified();
+    window->Render();
+    const auto remade = vtkFXTest::Download(avsm->GetOutputTexture("visibility"), 1);
+    const bool changed = visibility != last;
+    std::cout << "kept shadow maps, " << step.What << ": " << (reused ? "reused" : "made again")
+              << ", " << (visibility == remade ? "same as made afresh" : "DIFFERS from made afresh")
+              << (changed ? ", visibility changed" : "") << std::endl;
+    FX_CHECK(!avsm->GetReusedShadowMaps(), step.What << ": a Modified() pass reused its maps");
+    FX_CHECK(reused == step.Reused,
+      step.What << ": expected the maps " << (step.Reused ? "reused" : "made again"));
+    FX_CHECK(!visibility.empty() && visibility == remade,
+      step.What << ": the visibility differs from the maps made afresh");
+    FX_CHECK(!step.Changes || changed, step.What << ": the change did not change the shadows (the test has no teeth)");
+    last = visibility;
+  }
+  return EXIT_SUCCESS;
+}
+
 int TestAVSM(int, char*[])
 {
   auto window = vtkFXTest::MakeWindow(Width, Height);
@@ -1198,6 +1292,7 @@ int TestAVSM(int, char*[])
     FX_CHECK(omni->GetNumberOfViews() == 1, "a far point light has " << omni->GetNumberOfViews() << " views");
   }
   FX_CHECK(CheckTwoLights(window) == EXIT_SUCCESS, "two casting lights");
+  FX_CHECK(CheckShadowMapReuse(window) == EXIT_SUCCESS, "shadow maps kept between frames");
 
   // Nothing translucent, or translucent props of opacity 0 only (they
   // cast nothing): the pass is left out and allocates nothing.
