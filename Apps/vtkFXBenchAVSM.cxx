@@ -246,7 +246,7 @@ void UseVTKShadowMaps(vtkRenderer* renderer)
 // lights fixed where they are), with the shadow maps kept between frames
 // (vtkFXAVSMPass::ReuseShadowMaps): no shadows, AVSM-8 and exact, in the
 // windows the main measurement used, 2 degrees a frame. Each frame then
-// costs the look-up only; the rows say how many frames reused the maps.
+// costs the look-up only; the output says how many frames reused the maps.
 void BenchOrbit(const Options& o, const std::string& input, std::vector<Method> orbit,
   std::ofstream& csv, vtkTimerLog* timer)
 {
@@ -261,8 +261,17 @@ void BenchOrbit(const Options& o, const std::string& input, std::vector<Method> 
     m.FrameMs.clear();
     m.Window->Render(); // makes the maps the orbit keeps
   }
+  // Frames that reused the maps, per method: each frame's flag, read
+  // before the next frame and after the last.
   std::vector<int> reused(orbit.size(), 0);
+  const auto countReused = [&orbit, &reused](const Method& m) {
+    if (m.AVSM && !m.FrameMs.empty() && m.AVSM->GetReusedShadowMaps())
+    {
+      ++reused[&m - orbit.data()]; // (m is one of orbit's)
+    }
+  };
   TimeFramesInTurn(orbit, o.Frames, input + " orbiting", timer, [&](Method& m) {
+    countReused(m);
     vtkRenderer* renderer = m.Window->GetRenderers()->GetFirstRenderer();
     renderer->GetActiveCamera()->Azimuth(2.0);
     renderer->ResetCameraClippingRange();
@@ -270,11 +279,10 @@ void BenchOrbit(const Options& o, const std::string& input, std::vector<Method> 
   for (size_t i = 0; i < orbit.size(); ++i)
   {
     Method& m = orbit[i];
+    countReused(m);
     m.Image = vtkFXScenes::Capture(m.Window);
     if (m.AVSM)
     {
-      // (the last timed frame's: one flag per pass)
-      reused[i] = m.AVSM->GetReusedShadowMaps() ? 1 : 0;
       m.Visibility = Download(m.Window, m.AVSM->GetOutputTexture("visibility"), 1);
       // Profile's switch remakes the maps; the frame after it reuses them.
       m.AVSM->ProfileOn();
@@ -305,8 +313,8 @@ void BenchOrbit(const Options& o, const std::string& input, std::vector<Method> 
     std::cout << std::fixed << std::setprecision(2) << input << ": " << m.Name << " (" << setting
               << ") frame " << frame << " ms, " << frame / none
               << "x the orbiting frame without shadows (frame by frame "
-              << PairedRatio(m.FrameMs, orbit.front().FrameMs) << "x); last timed frame "
-              << (reused[i] ? "reused" : "did not reuse") << " the maps; look-up " << lookup
+              << PairedRatio(m.FrameMs, orbit.front().FrameMs) << "x); " << reused[i] << " of "
+              << m.FrameMs.size() << " frames reused the maps; look-up " << lookup
               << " ms; transmittance RMSE against exact " << std::setprecision(4) << rmse
               << std::endl;
   }

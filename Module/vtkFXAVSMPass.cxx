@@ -22,6 +22,14 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkProp.h"
+#include "vtkDataObject.h"
+#include "vtkAlgorithm.h"
+#include "vtkProp3D.h"
+#include "vtkUniforms.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointGaussianMapper.h"
+#include "vtkPlaneCollection.h"
+#include "vtkPlane.h"
 #include "vtkProperty.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkPixelBufferObject.h"
@@ -209,6 +217,7 @@ bool vtkFXAVSMPass::HasWork(const vtkFXSceneInfo& scene)
   // Every visible translucent prop casts, also one outside the viewer's
   // frustum whose shadow falls on what the viewer sees; one of opacity 0
   // would cast nothing at the cost of the whole pass.
+  this->ReusedShadowMaps = false; // (of this frame, if it runs)
   this->Casters.clear();
   std::copy_if(scene.TranslucentViewProps.begin(), scene.TranslucentViewProps.end(),
     std::back_inserter(this->Casters), CanCast);
@@ -1308,6 +1317,7 @@ bool vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
 
 void vtkFXAVSMPass::Render(const vtkRenderState* s)
 {
+  this->ReusedShadowMaps = false; // (also when the frame is abandoned)
   this->NumberOfRenderedProps = 0;
   this->ErrorThisFrame = false;
   vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
@@ -1465,12 +1475,83 @@ void vtkFXAVSMPass::ReportError(const std::string& message)
 
 namespace
 {
-// When a texture's image last changed: the texture's settings or its input.
-double TextureTime(vtkTexture* texture)
+// When an algorithm's output last changed, after updating it (as the
+// render would: a key read before the update would keep the old maps).
+double OutputTime(vtkAlgorithm* algorithm, vtkDataObject* output)
 {
-  vtkImageData* image = texture ? texture->GetInput() : nullptr;
-  return texture ? static_cast<double>(std::max(texture->GetMTime(), image ? image->GetMTime() : 0))
-                 : 0.0;
+  if (algorithm)
+  {
+    algorithm->Update();
+  }
+  return output ? static_cast<double>(output->GetMTime()) : 0.0;
+}
+
+// A texture's settings and image.
+void AddTextureKey(vtkTexture* texture, std::vector<double>& key)
+{
+  key.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(texture)));
+  if (texture)
+  {
+    key.push_back(static_cast<double>(texture->GetMTime()));
+    vtkAlgorithm* producer =
+      texture->GetNumberOfInputConnections(0) > 0 ? texture->GetInputAlgorithm() : nullptr;
+    key.push_back(OutputTime(producer, texture->GetInput()));
+  }
+}
+
+// What an actor draws from its property, textures, shaders, mapper and
+// data; its transform is keyed apart (CaptureKey). Not its redraw time:
+// an assembly modifies its parts every frame (vtkAssembly pokes their
+// matrices), and vtkActor::GetRedrawMTime sees no composite input.
+void AddActorKey(vtkActor* actor, std::vector<double>& key)
+{
+  const auto add = [&key](vtkObject* object) {
+    key.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(object)));
+    key.push_back(object ? static_cast<double>(object->GetMTime()) : 0.0);
+  };
+  add(actor->GetProperty());
+  add(actor->GetBackfaceProperty());
+  AddTextureKey(actor->GetTexture(), key);
+  if (vtkProperty* property = actor->GetProperty())
+  {
+    for (const auto& named : property->GetAllTextures())
+    {
+      AddTextureKey(named.second, key);
+    }
+  }
+  if (vtkShaderProperty* shaders = actor->GetShaderProperty())
+  {
+    add(shaders);
+    key.push_back(static_cast<double>(shaders->GetShaderMTime()));
+    add(shaders->GetVertexCustomUniforms());
+    add(shaders->GetGeometryCustomUniforms());
+    add(shaders->GetFragmentCustomUniforms());
+  }
+  vtkMapper* mapper = actor->GetMapper();
+  add(mapper);
+  if (!mapper)
+  {
+    return;
+  }
+  if (mapper->GetNumberOfInputPorts() > 0 && mapper->GetNumberOfInputConnections(0) > 0)
+  {
+    key.push_back(OutputTime(mapper->GetInputAlgorithm(), mapper->GetInputDataObject(0, 0)));
+  }
+  if (vtkPlaneCollection* planes = mapper->GetClippingPlanes())
+  {
+    vtkCollectionSimpleIterator it;
+    planes->InitTraversal(it);
+    while (vtkPlane* plane = planes->GetNextPlane(it))
+    {
+      add(plane);
+    }
+  }
+  // (the splat helper rebuilds from these, which the mapper's MTime leaves out)
+  if (vtkPointGaussianMapper* splats = vtkPointGaussianMapper::SafeDownCast(mapper))
+  {
+    add(splats->GetScaleFunction());
+    add(splats->GetScalarOpacityFunction());
+  }
 }
 }
 
@@ -1505,34 +1586,33 @@ std::vector<double> vtkFXAVSMPass::CaptureKey()
     add(view.Origin[0]);
     add(view.Origin[1]);
   }
-  // The casters, down to the parts of assemblies: each one's redraw time
-  // covers its property, transform, texture, mapper and input; the shader
-  // property and the property's textures are not in it.
+  // The casters, down to the parts of assemblies: each part's transform
+  // (its matrix's values, which a follower takes from the camera) and what
+  // it draws.
   for (vtkProp* prop : this->Casters)
   {
     add(static_cast<double>(reinterpret_cast<std::uintptr_t>(prop)));
+    vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop);
+    vtkMatrix4x4* own = prop3D ? prop3D->GetMatrix() : nullptr; // (computed now)
     prop->InitPathTraversal();
     while (vtkAssemblyPath* path = prop->GetNextPath())
     {
       vtkProp* part = path->GetLastNode()->GetViewProp();
       add(static_cast<double>(reinterpret_cast<std::uintptr_t>(part)));
-      add(static_cast<double>(part->GetRedrawMTime()));
-      vtkActor* actor = vtkActor::SafeDownCast(part);
-      if (!actor)
+      // A prop alone: its own matrix (its path's copy is made once); an
+      // assembly's part: the path's, which the assembly rebuilds.
+      vtkMatrix4x4* matrix = part == prop ? own : path->GetLastNode()->GetMatrix();
+      if (matrix)
       {
-        continue;
+        key.insert(key.end(), matrix->GetData(), matrix->GetData() + 16);
       }
-      add(TextureTime(actor->GetTexture()));
-      if (vtkShaderProperty* shaders = actor->GetShaderProperty())
+      if (vtkActor* actor = vtkActor::SafeDownCast(part))
       {
-        add(static_cast<double>(shaders->GetMTime()));
+        AddActorKey(actor, key);
       }
-      if (vtkProperty* property = actor->GetProperty())
+      else
       {
-        for (const auto& named : property->GetAllTextures())
-        {
-          add(TextureTime(named.second));
-        }
+        add(static_cast<double>(part->GetRedrawMTime()));
       }
     }
   }

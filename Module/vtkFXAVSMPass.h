@@ -247,17 +247,18 @@ public:
 
   /**
    * Keep the shadow maps while nothing they are made from changes (default
-   * on): the casters (each one's redraw time, vtkProp::GetRedrawMTime: its
-   * property, transform, texture, mapper and input data; its shader
-   * property and its property's textures), the casting lights' views
-   * (position, direction, cone, and the visible props' bounds they are
-   * fitted to) and this pass's settings (its MTime). A frame that only
-   * moves the camera then skips the capture and the resolve and costs the
-   * look-up alone. A camera light (the light kit's) moves with the camera,
-   * so its shadow maps are made again every frame, as are those of data
-   * that changes. Casters changed without a Modified() (data edited in
-   * place) are not seen, as VTK's own mappers do not redraw them: call
-   * Modified() on this pass to make the maps again.
+   * on): the casters (each part's transform, property, textures and their
+   * images, shader property and uniforms, mapper, clipping planes, splat
+   * transfer functions and input data, brought up to date first), the
+   * casting lights' views (position, direction, cone, and the visible
+   * props' bounds they are fitted to) and this pass's settings (its MTime).
+   * A frame that only moves the camera then skips the capture and the
+   * resolve and costs the look-up alone. A camera light (the light kit's)
+   * moves with the camera, so its shadow maps are made again every frame,
+   * as are those of data that changes, and of scenes whose bounds follow
+   * the camera (followers, cube axes). Data edited in place without
+   * Modified() is not seen (VTK's own mappers keep their buffers then
+   * too): call Modified() on this pass to make the maps again.
    */
   vtkSetMacro(ReuseShadowMaps, bool);
   vtkGetMacro(ReuseShadowMaps, bool);

@@ -964,7 +964,9 @@ void vtkFXPipelinePass::ReleaseGraphicsResources(vtkWindow* w)
   // GL deletes names in whichever context is current: called with another
   // window's current (an application with several windows releasing one),
   // the passes below would delete that window's textures and buffers of the
-  // same names, and it would crash drawing with them later.
+  // same names, and it would crash drawing with them later. (X windows get
+  // the other context back; VTK's generic, EGL and OSMesa windows have no
+  // context stack and leave this one current.)
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(w);
   if (window)
   {

@@ -53,6 +53,12 @@
 #include "vtkLightCollection.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPlaneSource.h"
+#include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkTexture.h"
+#include "vtkImageShiftScale.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkFloatArray.h"
 #include "vtkPointGaussianMapper.h"
 #include "vtkPoints.h"
 #include "vtkPolyDataMapper.h"
@@ -716,32 +722,59 @@ int CheckTiltedTranslucentReceiver(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
+// What a frame shows of the shadows: the opaque receivers' visibility
+// (when there are opaque props) and the image (the translucent receivers).
+struct ShadowFrame
+{
+  std::vector<float> Visibility;
+  std::vector<unsigned char> Image;
+  bool operator==(const ShadowFrame& other) const
+  {
+    return this->Visibility == other.Visibility && this->Image == other.Image;
+  }
+  bool operator!=(const ShadowFrame& other) const { return !(*this == other); }
+};
+
+ShadowFrame RenderShadowFrame(vtkRenderWindow* window, vtkFXAVSMPass* avsm)
+{
+  window->Render();
+  vtkTextureObject* visibility = avsm->GetOutputTexture("visibility");
+  return { visibility ? vtkFXTest::Download(visibility, 1) : std::vector<float>(),
+    vtkFXScenes::Capture(window) };
+}
+
 // Shadow maps kept between frames (ReuseShadowMaps): after each change
 // below, a frame either reuses the last maps or makes new ones, as
-// expected, and its visibility equals that of the same frame made afresh
-// (the pass Modified()) byte for byte; a change that must remake them
-// also changes the visibility, so stale maps would fail.
+// expected, and what it shows (visibility and image) equals the same frame
+// made afresh (the pass Modified()) byte for byte; a change that must
+// remake them also changes the shadows, so stale maps would fail.
 int CheckShadowMapReuse(vtkRenderWindow* window)
 {
   vtkNew<vtkFXPipelinePass> pipeline;
   vtkNew<vtkFXAVSMPass> avsm;
-  vtkRenderer* renderer = GroundScene(window, false);
+  vtkActor* ground = nullptr;
+  vtkRenderer* renderer = GroundScene(window, false, &ground);
+  vtkSmartPointer<vtkActor> keptGround = ground;
   vtkLight* light = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
   auto slab = Quad(-10, 0, 1, 0.3);
   renderer->AddActor(slab);
   pipeline->AddEffect("avsm", avsm);
   renderer->SetPass(pipeline);
-  window->Render();
+  ShadowFrame last = RenderShadowFrame(window, avsm);
   FX_CHECK(!avsm->GetReusedShadowMaps(), "the first frame reused shadow maps");
-  std::vector<float> last = vtkFXTest::Download(avsm->GetOutputTexture("visibility"), 1);
-  FX_CHECK(CheckHalves("kept shadow maps, first frame", last, 0.7, 1e-3) == EXIT_SUCCESS, "");
+  FX_CHECK(CheckHalves("kept shadow maps, first frame", last.Visibility, 0.7, 1e-3) == EXIT_SUCCESS, "");
 
-  // A slab of composite data whose block opacity changes.
+  // A slab of composite data (a block's opacity, then the block itself).
   vtkNew<vtkPlaneSource> plane;
   plane->SetOrigin(-10.0, -10.0, 2.0);
   plane->SetPoint1(0.0, -10.0, 2.0);
   plane->SetPoint2(-10.0, 10.0, 2.0);
   plane->Update();
+  vtkNew<vtkPlaneSource> smallerPlane;
+  smallerPlane->SetOrigin(-10.0, -10.0, 2.0);
+  smallerPlane->SetPoint1(-5.0, -10.0, 2.0);
+  smallerPlane->SetPoint2(-10.0, 10.0, 2.0);
+  smallerPlane->Update();
   vtkNew<vtkMultiBlockDataSet> blocks;
   blocks->SetBlock(0, plane->GetOutput());
   vtkNew<vtkCompositePolyDataMapper2> blockMapper;
@@ -753,26 +786,72 @@ int CheckShadowMapReuse(vtkRenderWindow* window)
   blockSlab->SetMapper(blockMapper);
   blockSlab->GetProperty()->SetOpacity(0.999);
 
+  // Splats whose opacity goes through a transfer function.
+  auto splats = Splats({ { 3.0, 0.0, 2.0 }, { 5.0, 2.0, 2.5 } }, 1.5, 0.5);
+  auto* splatMapper = vtkPointGaussianMapper::SafeDownCast(splats->GetMapper());
+  vtkPolyData* cloud = vtkPolyData::SafeDownCast(splatMapper->GetInputDataObject(0, 0));
+  vtkNew<vtkFloatArray> splatOpacity;
+  splatOpacity->SetName("opacity");
+  splatOpacity->InsertNextValue(1.0f);
+  splatOpacity->InsertNextValue(1.0f);
+  cloud->GetPointData()->AddArray(splatOpacity);
+  vtkNew<vtkPiecewiseFunction> opacityFunction;
+  opacityFunction->AddPoint(0.0, 0.0);
+  opacityFunction->AddPoint(1.0, 0.5);
+  splatMapper->SetOpacityArray("opacity");
+  splatMapper->SetScalarOpacityFunction(opacityFunction);
+
+  // A texture whose alpha comes from a pipeline (scaled by 0.5, then 1).
+  vtkNew<vtkImageData> white;
+  white->SetDimensions(2, 2, 1);
+  white->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
+  std::fill_n(static_cast<unsigned char*>(white->GetScalarPointer()), 16, 255);
+  vtkNew<vtkImageShiftScale> alpha;
+  alpha->SetInputData(white);
+  alpha->SetScale(0.5);
+  alpha->SetOutputScalarTypeToUnsignedChar();
+  vtkNew<vtkTexture> texture;
+  texture->SetInputConnection(alpha->GetOutputPort());
+
   vtkPlaneSource* source = vtkPlaneSource::SafeDownCast(slab->GetMapper()->GetInputAlgorithm());
+  vtkCamera* camera = renderer->GetActiveCamera();
   const struct
   {
     const char* What;
     std::function<void()> Change;
     bool Reused;
-    bool Changes; // the shadows: a stale map would show
+    bool Changes; // the shadows (a stale map would show), not only the view
   } steps[] = {
     { "nothing changed", [] {}, true, false },
-    { "the camera dollied", [&] { renderer->GetActiveCamera()->Dolly(1.2); }, true, true },
-    { "the camera turned", [&] { renderer->GetActiveCamera()->Roll(30.0); }, true, true },
+    { "the camera dollied", [&] { camera->Dolly(1.2); }, true, false },
+    { "the camera turned", [&] { camera->Roll(30.0); }, true, false },
     { "the slab's opacity", [&] { slab->GetProperty()->SetOpacity(0.6); }, false, true },
     { "the slab moved", [&] { slab->SetPosition(3.0, 0.0, 0.0); }, false, true },
     { "the slab's data", [&] { source->SetPoint1(-5.0, -10.0, 1.0); }, false, true },
+    { "a texture on the slab", [&] { slab->SetTexture(texture); }, false, true },
+    { "the texture's image upstream", [&] { alpha->SetScale(1.0); }, false, true },
     { "the light turned", [&] { light->SetPosition(0.3, 0.0, 1.0); }, false, true },
     { "a caster added", [&] { renderer->AddActor(blockSlab); }, false, true },
     { "unchanged again", [] {}, true, false },
     { "a block's opacity", [&] { blockMapper->SetBlockOpacity(1, 0.8); }, false, true },
+    { "a block replaced",
+      [&] {
+        blocks->SetBlock(0, smallerPlane->GetOutput());
+        blocks->Modified();
+      },
+      false, true },
+    { "splats added", [&] { renderer->AddActor(splats); }, false, true },
+    // (the splats drawn here look the same either way, in VTK's image too:
+    // this checks only that the function's change remakes the maps)
+    { "the splats' opacity function", [&] { opacityFunction->AddPoint(1.0, 0.9); }, false, false },
     // (two surfaces per texel, which 4 nodes keep exactly as 8 do)
     { "the nodes", [&] { avsm->SetNumberOfNodes(4); }, false, false },
+    { "exact lists", [&] { avsm->SetExact(true); }, false, false },
+    { "exact lists, unchanged", [] {}, true, false },
+    { "the ground removed (light-space stage)", [&] { renderer->RemoveActor(keptGround); },
+      false, true },
+    { "no ground, the camera turned", [&] { camera->Roll(20.0); }, true, false },
+    { "the ground back", [&] { renderer->AddActor(keptGround); }, false, true },
     { "a camera light, the camera still",
       [&] {
         light->SetLightTypeToCameraLight();
@@ -780,8 +859,7 @@ int CheckShadowMapReuse(vtkRenderWindow* window)
         light->SetFocalPoint(0.0, 0.0, 0.0);
       },
       false, true },
-    { "a camera light, the camera turned", [&] { renderer->GetActiveCamera()->Elevation(10.0); },
-      false, true },
+    { "a camera light, the camera turned", [&] { camera->Elevation(10.0); }, false, true },
     { "reuse off", [&] { avsm->ReuseShadowMapsOff(); }, false, false },
     { "reuse off, nothing changed", [] {}, false, false },
   };
@@ -789,24 +867,52 @@ int CheckShadowMapReuse(vtkRenderWindow* window)
   {
     step.Change();
     renderer->ResetCameraClippingRange();
-    window->Render();
+    const ShadowFrame frame = RenderShadowFrame(window, avsm);
     const bool reused = avsm->GetReusedShadowMaps();
-    const auto visibility = vtkFXTest::Download(avsm->GetOutputTexture("visibility"), 1);
+    // The same frame again with the maps made afresh, and (the view
+    // unchanged) shadows unchanged against the frame before the change.
     avsm->Modified();
-    window->Render();
-    const auto remade = vtkFXTest::Download(avsm->GetOutputTexture("visibility"), 1);
-    const bool changed = visibility != last;
+    const ShadowFrame remade = RenderShadowFrame(window, avsm);
+    const bool changed = frame != last;
     std::cout << "kept shadow maps, " << step.What << ": " << (reused ? "reused" : "made again")
-              << ", " << (visibility == remade ? "same as made afresh" : "DIFFERS from made afresh")
-              << (changed ? ", visibility changed" : "") << std::endl;
+              << ", " << (frame == remade ? "same as made afresh" : "DIFFERS from made afresh")
+              << (changed ? ", shadows or view changed" : "") << std::endl;
     FX_CHECK(!avsm->GetReusedShadowMaps(), step.What << ": a Modified() pass reused its maps");
     FX_CHECK(reused == step.Reused,
       step.What << ": expected the maps " << (step.Reused ? "reused" : "made again"));
-    FX_CHECK(!visibility.empty() && visibility == remade,
-      step.What << ": the visibility differs from the maps made afresh");
+    FX_CHECK(!frame.Image.empty() && frame == remade,
+      step.What << ": the frame differs from the maps made afresh");
     FX_CHECK(!step.Changes || changed, step.What << ": the change did not change the shadows (the test has no teeth)");
-    last = visibility;
+    last = frame;
   }
+
+  // Lists that dropped fragments (a buffer of one fragment per texel under
+  // six slabs over half the map) are not kept: the next frame, with the
+  // grown buffer, makes them again, and the one after reuses them.
+  vtkNew<vtkFXPipelinePass> small;
+  vtkNew<vtkFXAVSMPass> overflowing;
+  overflowing->SetInitialNodesPerTexel(1);
+  renderer = GroundScene(window, false);
+  for (double z : { 1.0, 1.5, 2.0, 2.5, 3.0, 3.5 })
+  {
+    renderer->AddActor(Quad(-10, 0, z, 0.3));
+  }
+  small->AddEffect("avsm", overflowing);
+  renderer->SetPass(small);
+  bool reusedFrames[3];
+  const vtkIdType capacity = vtkIdType(overflowing->GetShadowMapSize()) * overflowing->GetShadowMapSize();
+  vtkIdType captured = 0;
+  for (bool& frameReused : reusedFrames)
+  {
+    window->Render();
+    frameReused = overflowing->GetReusedShadowMaps();
+    captured = captured ? captured : overflowing->GetCapturedFragments();
+  }
+  std::cout << "kept shadow maps after an overflow (" << captured << " fragments, capacity "
+            << capacity << "): frames " << reusedFrames[0] << reusedFrames[1] << reusedFrames[2]
+            << " reused" << std::endl;
+  FX_CHECK(captured > capacity && !reusedFrames[0] && !reusedFrames[1] && reusedFrames[2],
+    "lists that dropped fragments were kept, or whole ones were not");
   return EXIT_SUCCESS;
 }
 

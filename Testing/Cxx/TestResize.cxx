@@ -87,7 +87,7 @@ int CheckReleaseFromAnotherWindow()
   // (both contexts number their textures from 1: the names overlap)
   vtkTextureObject* albedo =
     pipelines[0]->GetGBufferPass()->GetChannelTexture(vtkFXGBufferPass::Albedo);
-  windows[0]->MakeCurrent();
+  FX_CHECK(windows[0]->IsCurrent(), "the release left another window's context current");
   const bool kept = albedo && glIsTexture(albedo->GetHandle()) == GL_TRUE;
   // (the composite warns of a GL error left pending by the steps before it)
   vtkFXTest::EventCounter warnings(pipelines[0]->GetCompositePass(), vtkCommand::WarningEvent);
