@@ -53,6 +53,7 @@
 #include "vtkLightCollection.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPlaneSource.h"
+#include "vtkAssembly.h"
 #include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkTexture.h"
@@ -813,6 +814,12 @@ int CheckShadowMapReuse(vtkRenderWindow* window)
   vtkNew<vtkTexture> texture;
   texture->SetInputConnection(alpha->GetOutputPort());
 
+  // An assembly of two slabs.
+  vtkNew<vtkAssembly> assembly;
+  auto assemblyPart = Quad(-10, -4, 4, 0.4);
+  assembly->AddPart(assemblyPart);
+  assembly->AddPart(Quad(-3, 0, 4.5, 0.4));
+
   vtkPlaneSource* source = vtkPlaneSource::SafeDownCast(slab->GetMapper()->GetInputAlgorithm());
   vtkCamera* camera = renderer->GetActiveCamera();
   const struct
@@ -844,6 +851,10 @@ int CheckShadowMapReuse(vtkRenderWindow* window)
     // (the splats drawn here look the same either way, in VTK's image too:
     // this checks only that the function's change remakes the maps)
     { "the splats' opacity function", [&] { opacityFunction->AddPoint(1.0, 0.9); }, false, false },
+    { "an assembly added", [&] { renderer->AddActor(assembly); }, false, true },
+    // (its parts' matrices are poked every frame: their values are keyed)
+    { "an assembly, the camera turned", [&] { camera->Roll(10.0); }, true, false },
+    { "an assembly's part moved", [&] { assemblyPart->SetPosition(-1.0, 1.0, 0.0); }, false, true },
     // (two surfaces per texel, which 4 nodes keep exactly as 8 do)
     { "the nodes", [&] { avsm->SetNumberOfNodes(4); }, false, false },
     { "exact lists", [&] { avsm->SetExact(true); }, false, false },
