@@ -84,12 +84,22 @@ namespace
 {
 const int Width = 200, Height = 150;
 
-vtkSmartPointer<vtkActor> Quad(double x0, double x1, double z, double opacity)
+// The rectangle x0..x1 by -10..10 at height z (up to date).
+vtkSmartPointer<vtkPlaneSource> QuadSource(double x0, double x1, double z)
 {
-  vtkNew<vtkPlaneSource> plane;
+  auto plane = vtkSmartPointer<vtkPlaneSource>::New();
   plane->SetOrigin(x0, -10.0, z);
   plane->SetPoint1(x1, -10.0, z);
   plane->SetPoint2(x0, 10.0, z);
+  plane->Update();
+  return plane;
+}
+
+// Its actor of opacity `opacity`, drawn from the source (which tests may
+// change).
+vtkSmartPointer<vtkActor> Quad(double x0, double x1, double z, double opacity)
+{
+  auto plane = QuadSource(x0, x1, z);
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputConnection(plane->GetOutputPort());
   auto actor = vtkSmartPointer<vtkActor>::New();
@@ -104,18 +114,34 @@ vtkSmartPointer<vtkActor> Layers(const std::vector<double>& heights, double opac
   vtkNew<vtkAppendPolyData> append;
   for (double z : heights)
   {
-    vtkNew<vtkPlaneSource> plane;
-    plane->SetOrigin(-10.0, -10.0, z);
-    plane->SetPoint1(0.0, -10.0, z);
-    plane->SetPoint2(-10.0, 10.0, z);
-    plane->Update();
-    append->AddInputData(plane->GetOutput());
+    append->AddInputData(QuadSource(-10.0, 0.0, z)->GetOutput());
   }
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputConnection(append->GetOutputPort());
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
   actor->GetProperty()->SetOpacity(opacity);
+  return actor;
+}
+
+// An actor of opacity `opacity` drawing `blocks` through a composite
+// mapper, the first block at opacity `blockOpacity` (returned through
+// `mapper`).
+vtkSmartPointer<vtkActor> BlockSlab(vtkMultiBlockDataSet* blocks, double opacity,
+  double blockOpacity, vtkCompositePolyDataMapper2** mapper = nullptr)
+{
+  vtkNew<vtkCompositePolyDataMapper2> blockMapper;
+  blockMapper->SetInputDataObject(blocks);
+  vtkNew<vtkCompositeDataDisplayAttributes> attributes;
+  blockMapper->SetCompositeDataDisplayAttributes(attributes);
+  blockMapper->SetBlockOpacity(1, blockOpacity); // (flat index 1: block 0)
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(blockMapper);
+  actor->GetProperty()->SetOpacity(opacity);
+  if (mapper)
+  {
+    *mapper = blockMapper;
+  }
   return actor;
 }
 
@@ -766,26 +792,11 @@ int CheckShadowMapReuse(vtkRenderWindow* window)
   FX_CHECK(CheckHalves("kept shadow maps, first frame", last.Visibility, 0.7, 1e-3) == EXIT_SUCCESS, "");
 
   // A slab of composite data (a block's opacity, then the block itself).
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-10.0, -10.0, 2.0);
-  plane->SetPoint1(0.0, -10.0, 2.0);
-  plane->SetPoint2(-10.0, 10.0, 2.0);
-  plane->Update();
-  vtkNew<vtkPlaneSource> smallerPlane;
-  smallerPlane->SetOrigin(-10.0, -10.0, 2.0);
-  smallerPlane->SetPoint1(-5.0, -10.0, 2.0);
-  smallerPlane->SetPoint2(-10.0, 10.0, 2.0);
-  smallerPlane->Update();
+  auto smallerPlane = QuadSource(-10.0, -5.0, 2.0);
   vtkNew<vtkMultiBlockDataSet> blocks;
-  blocks->SetBlock(0, plane->GetOutput());
-  vtkNew<vtkCompositePolyDataMapper2> blockMapper;
-  blockMapper->SetInputDataObject(blocks);
-  vtkNew<vtkCompositeDataDisplayAttributes> attributes;
-  blockMapper->SetCompositeDataDisplayAttributes(attributes);
-  blockMapper->SetBlockOpacity(1, 0.5);
-  vtkNew<vtkActor> blockSlab;
-  blockSlab->SetMapper(blockMapper);
-  blockSlab->GetProperty()->SetOpacity(0.999);
+  blocks->SetBlock(0, QuadSource(-10.0, 0.0, 2.0)->GetOutput());
+  vtkCompositePolyDataMapper2* blockMapper = nullptr;
+  auto blockSlab = BlockSlab(blocks, 0.999, 0.5, &blockMapper);
 
   // Splats whose opacity goes through a transfer function.
   auto splats = Splats({ { 3.0, 0.0, 2.0 }, { 5.0, 2.0, 2.5 } }, 1.5, 0.5);
@@ -1467,21 +1478,9 @@ int TestAVSM(int, char*[])
   // So does one of opacity 0 that draws composite data, whose blocks may
   // have opacities of their own (here 0.5: its shadow is 0.5).
   {
-    vtkNew<vtkPlaneSource> plane;
-    plane->SetOrigin(-10.0, -10.0, 1.0);
-    plane->SetPoint1(0.0, -10.0, 1.0);
-    plane->SetPoint2(-10.0, 10.0, 1.0);
-    plane->Update();
     vtkNew<vtkMultiBlockDataSet> blocks;
-    blocks->SetBlock(0, plane->GetOutput());
-    vtkNew<vtkCompositePolyDataMapper2> mapper;
-    mapper->SetInputDataObject(blocks);
-    vtkNew<vtkCompositeDataDisplayAttributes> attributes;
-    mapper->SetCompositeDataDisplayAttributes(attributes);
-    mapper->SetBlockOpacity(1, 0.5); // (flat index 1: block 0)
-    auto slab = vtkSmartPointer<vtkActor>::New();
-    slab->SetMapper(mapper);
-    slab->GetProperty()->SetOpacity(0.0);
+    blocks->SetBlock(0, QuadSource(-10.0, 0.0, 1.0)->GetOutput());
+    auto slab = BlockSlab(blocks, 0.0, 0.5);
     auto avsm = MakeAVSM(8, false, true);
     FX_CHECK(CheckHalves("opacity 0, composite data with a block of opacity 0.5",
                Visibility(window, avsm, { slab }, true), 0.5, 1e-3) == EXIT_SUCCESS,
