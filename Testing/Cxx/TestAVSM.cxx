@@ -874,6 +874,8 @@ int CheckShadowMapReuse(vtkRenderWindow* window)
       false, true },
     { "no ground, the camera turned", [&] { camera->Roll(20.0); }, true, false },
     { "the ground back", [&] { renderer->AddActor(keptGround); }, false, true },
+    { "the window resized", [&] { window->SetSize(Width + 37, Height + 21); }, true, false },
+    { "the window's size back", [&] { window->SetSize(Width, Height); }, true, false },
     { "a camera light, the camera still",
       [&] {
         light->SetLightTypeToCameraLight();
