@@ -709,9 +709,12 @@ bool vtkFXCompositePass::BlitDepth(vtkOpenGLRenderer* ren)
   GLenum earlier = glGetError();
   if (earlier != GL_NO_ERROR && !this->WarnedEarlierError)
   {
-    vtkWarningMacro("An OpenGL error (0x" << std::hex << earlier << std::dec
-                                          << ") was pending before vtkFX's depth copy: a step "
-                                             "before it (VTK's or an effect's) failed.");
+    // (formatted apart: VTK's message stream prints std::hex as a number)
+    std::ostringstream code;
+    code << "0x" << std::hex << earlier;
+    vtkWarningMacro("An OpenGL error (" << code.str()
+                                        << ") was pending before vtkFX's depth copy: a step "
+                                           "before it (VTK's or an effect's) failed.");
     this->WarnedEarlierError = true;
   }
   for (int i = 0; i < 16 && earlier != GL_NO_ERROR; ++i)
