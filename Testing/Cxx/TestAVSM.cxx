@@ -53,6 +53,7 @@
 #include "vtkLightCollection.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPlaneSource.h"
+#include "vtkCellArray.h"
 #include "vtkAssembly.h"
 #include "vtkCamera.h"
 #include "vtkImageData.h"
@@ -79,6 +80,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <limits>
 
 namespace
 {
@@ -1224,6 +1226,58 @@ int TestAVSM(int, char*[])
     actor->SetMapper(mapper);
     const auto v = Visibility(window, MakeAVSM(8, false, false), { actor }, true);
     FX_CHECK(CheckHalves("opacity 1 and 0", v, 0.0, 1e-3) == EXIT_SUCCESS, "");
+  }
+
+  // Casters with NaN and infinite points and degenerate triangles, and a
+  // splat at NaN of NaN scale, beside the slab: every pixel finite, in
+  // [0, 1], and the slab's shadow as without them.
+  for (bool exactMode : { false, true })
+  {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    const double coordinates[][3] = { { 2, 1, 2 }, { 4, 1, 2 }, { nan, 2, 2 }, { 3, 3, 2 },
+      { 3, 3, 2 }, { 3, 3, 2 }, { inf, 1, 2 }, { 5, -inf, 2 }, { 6, 1, nan } };
+    for (const auto& c : coordinates)
+    {
+      points->InsertNextPoint(c);
+    }
+    vtkNew<vtkCellArray> triangles;
+    const vtkIdType cells[][3] = { { 0, 1, 2 }, { 3, 4, 5 }, { 0, 6, 7 }, { 1, 8, 3 }, { 0, 0, 1 } };
+    for (const auto& cell : cells)
+    {
+      triangles->InsertNextCell(3, cell);
+    }
+    vtkNew<vtkPolyData> bad;
+    bad->SetPoints(points);
+    bad->SetPolys(triangles);
+    vtkNew<vtkPolyDataMapper> badMapper;
+    badMapper->SetInputData(bad);
+    auto badActor = vtkSmartPointer<vtkActor>::New();
+    badActor->SetMapper(badMapper);
+    badActor->GetProperty()->SetOpacity(0.5);
+    auto badSplats = Splats({ { nan, 0.0, 2.0 }, { 2.0, inf, 2.0 } }, 0.5, 0.5);
+    const auto v = Visibility(window, MakeAVSM(8, exactMode, true),
+      { Quad(-10, 0, 1, 0.3), badActor, badSplats }, true);
+    FX_CHECK(v.size() == static_cast<size_t>(Width) * Height, "no visibility");
+    size_t bad01 = 0;
+    double under = 0.0;
+    for (int y = 10; y < Height - 10; ++y)
+    {
+      for (int x = 0; x < Width / 3; ++x)
+      {
+        under = std::max(under, std::fabs(v[static_cast<size_t>(y) * Width + x] - 0.7));
+      }
+    }
+    for (float t : v)
+    {
+      bad01 += (std::isfinite(t) && t >= 0.0f && t <= 1.0f) ? 0 : 1;
+    }
+    std::cout << (exactMode ? "exact" : "AVSM-8") << ", NaN and infinite casters beside a slab: "
+              << bad01 << " pixels not finite in [0, 1], the slab's shadow off by " << under
+              << std::endl;
+    FX_CHECK(bad01 == 0 && under <= 1e-3, "NaN or infinite casters broke the shadows");
   }
 
   // Coincident surfaces: two identical slabs at one height are two
