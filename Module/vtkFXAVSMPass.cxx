@@ -106,7 +106,8 @@ bool AllocateBuffer(GLenum target, vtkIdType bytes, GLenum usage)
 // strength) is 0.
 bool IsCasting(vtkLight* light)
 {
-  return !light->LightTypeIsHeadlight() && light->GetShadowAttenuation() > 0.0f;
+  return !light->LightTypeIsHeadlight() && light->GetShadowAttenuation() > 0.0f &&
+    vtkFXRenderUtilities::IsLightFinite(light);
 }
 
 // Props that can dim light: all but actors of opacity 0 (not a positive

@@ -8,6 +8,7 @@
 #include "vtkFXForwardOpaquePass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXHDRTargetPass.h"
+#include "vtkFXRenderUtilities.h"
 #include "vtkFXSelectionPass.h"
 #include "vtkFXTimedSequencePass.h"
 #include "vtkFXTranslucentPass.h"
@@ -254,6 +255,32 @@ vtkFXSceneInfo vtkFXPipelinePass::AnalyzeScene(const vtkRenderState* s) const
     }
   }
   return scene;
+}
+
+void vtkFXPipelinePass::WarnAboutNonFiniteLights(const vtkFXSceneInfo& scene)
+{
+  std::vector<int> places;
+  for (size_t i = 0; i < scene.Lights.size(); ++i)
+  {
+    if (!vtkFXRenderUtilities::IsLightFinite(scene.Lights[i]))
+    {
+      places.push_back(static_cast<int>(i));
+    }
+  }
+  // (once for each set of such lights: not every frame)
+  if (!places.empty() && places != this->NonFiniteLights)
+  {
+    std::ostringstream list;
+    for (int place : places)
+    {
+      list << (place == places.front() ? "" : ", ") << place;
+    }
+    vtkWarningMacro("Light(s) " << list.str() << " (counting the lights that are on) have a "
+                                   "position, focal point, intensity, colour, attenuation, cone "
+                                   "angle or exponent that is NaN or infinite: they are left "
+                                   "out (no light, no shadows).");
+  }
+  this->NonFiniteLights = places;
 }
 
 bool vtkFXPipelinePass::ResolveInputs(size_t consumer, std::vector<Connection>& connections)
@@ -896,6 +923,7 @@ void vtkFXPipelinePass::Render(const vtkRenderState* s)
     // channels the composite reads depend on it, so this comes first.
     this->LightsPass->Render(s);
     this->LastScene = this->AnalyzeScene(s);
+    this->WarnAboutNonFiniteLights(this->LastScene);
     this->ScheduleDeferredFrame(this->LastScene, s->GetRenderer()->GetRenderWindow());
   }
   this->CameraPass->Render(s);

@@ -243,6 +243,9 @@ protected:
   ~vtkFXPipelinePass() override;
 
   vtkFXSceneInfo AnalyzeScene(const vtkRenderState* s) const;
+  // Says which lights have a number that is not finite (the composite and
+  // the shadows leave them out), when that set changes.
+  void WarnAboutNonFiniteLights(const vtkFXSceneInfo& scene);
   void ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWindow* window);
   void ScheduleSelectionFrame();
 
@@ -277,6 +280,7 @@ protected:
   vtkWeakPointer<vtkWindow> LastWindow; // to release effects removed between frames
   vtkWeakPointer<vtkRenderer> LastRenderer; // one renderer per pipeline (warned otherwise)
   bool WarnedSharedPipeline = false;
+  std::vector<int> NonFiniteLights; // the last frame's (warned about)
   int WindowChanges = 0; // windows it moved to
   vtkFXSceneInfo LastScene;
   std::vector<std::string> LastPasses;

@@ -1,6 +1,7 @@
 #include "vtkFXRenderUtilities.h"
 
 #include "vtkCamera.h"
+#include "vtkLight.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -14,6 +15,7 @@
 #include "vtkFXOpenGL.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -74,6 +76,23 @@ const char* vtkFXRenderUtilities::GatherDefines(bool useTextureGather)
                             "#define FX_GATHER 0\n"
                             "#endif\n"
                           : "//VTK::System::Dec\n#define FX_GATHER 0\n";
+}
+
+bool vtkFXRenderUtilities::IsLightFinite(vtkLight* light)
+{
+  double position[3], focalPoint[3];
+  light->GetTransformedPosition(position);
+  light->GetTransformedFocalPoint(focalPoint);
+  const double* values[] = { position, focalPoint, light->GetDiffuseColor(),
+    light->GetSpecularColor(), light->GetAmbientColor(), light->GetAttenuationValues() };
+  bool finite = std::isfinite(light->GetIntensity()) && std::isfinite(light->GetConeAngle()) &&
+    std::isfinite(light->GetExponent());
+  for (const double* triple : values)
+  {
+    finite = finite && std::isfinite(triple[0]) && std::isfinite(triple[1]) &&
+      std::isfinite(triple[2]);
+  }
+  return finite;
 }
 
 bool vtkFXRenderUtilities::EnsureTexture(vtkSmartPointer<vtkTextureObject>& texture,

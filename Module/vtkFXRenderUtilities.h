@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+class vtkLight;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
@@ -79,6 +80,15 @@ public:
    * without one that answers.
    */
   static bool IsOpenGLSupported(const char* name);
+
+  /**
+   * Whether every number of a light that lighting reads is finite: its
+   * position and focal point (as transformed), intensity, colours,
+   * attenuation, cone angle and exponent. VTK's own shaders turn a light
+   * with a NaN or infinite one into NaN (black) or white pixels; vtkFX
+   * leaves such a light out (vtkFXPipelinePass warns).
+   */
+  static bool IsLightFinite(vtkLight* light);
 
   /**
    * Make `texture` a width x height 2D texture of the given format.

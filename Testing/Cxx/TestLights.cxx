@@ -206,6 +206,92 @@ int CheckTileDepths(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
+// Lights with a NaN or infinite number (position, focal point, intensity,
+// colours, attenuation, cone) among good ones, first and between
+// them: vtkFX leaves them out (VTK's own render turns them into NaN:
+// black), so the image is the one without them, on VTK's uniforms (3 + 5
+// lights) and on the light texture (3 + 7, forced, and 64 + 7), with one
+// warning for two frames.
+int CheckNonFiniteLights(vtkRenderWindow* window)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  // (3 + 5 lights: VTK's uniforms; 3 + 7 on the light texture, forced; 64 + 7)
+  const struct
+  {
+    int Good, Bad;
+    bool Texture;
+  } cases[] = { { 3, 5, false }, { 3, 7, true }, { 64, 7, false } };
+  for (const auto& c : cases)
+  {
+    const int count = c.Good;
+    window->GetRenderers()->RemoveAllItems();
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    std::string error;
+    double bounds[6];
+    FX_CHECK(vtkFXScenes::Populate(renderer, "scene:spheres", vtkFXScenes::Options(), error, bounds),
+      error);
+    vtkFXScenes::AddPointLights(renderer, count, bounds);
+    vtkNew<vtkFXPipelinePass> pipeline;
+    if (c.Texture)
+    {
+      pipeline->GetCompositePass()->SetMaximumUniformLights(0);
+    }
+    renderer->SetPass(pipeline);
+    window->Render();
+    const auto good = vtkFXScenes::Capture(window);
+
+    std::vector<vtkSmartPointer<vtkLight>> lights;
+    vtkCollectionSimpleIterator it;
+    renderer->GetLights()->InitTraversal(it);
+    while (vtkLight* light = renderer->GetLights()->GetNextLight(it))
+    {
+      lights.push_back(light);
+    }
+    std::vector<vtkSmartPointer<vtkLight>> bad;
+    for (int k = 0; k < c.Bad; ++k)
+    {
+      auto light = vtkSmartPointer<vtkLight>::New();
+      light->DeepCopy(lights.front());
+      switch (k)
+      {
+        case 0: light->SetPosition(nan, 1.0, 0.0); break;
+        case 1: light->SetIntensity(inf); break;
+        case 2: light->SetColor(nan, 1.0, 1.0); break;
+        case 3: light->SetAttenuationValues(1.0, nan, 0.0); break;
+        case 4: light->SetConeAngle(nan); break;
+        case 5: light->SetSpecularColor(inf, 0.0, 0.0); break; // (an exponent is clamped)
+        default: light->SetFocalPoint(0.0, -inf, 0.0); break;
+      }
+      bad.push_back(light);
+    }
+    renderer->RemoveAllLights();
+    renderer->AddLight(bad[0]); // before every good one: the places shift
+    for (size_t i = 0; i < lights.size(); ++i)
+    {
+      renderer->AddLight(lights[i]);
+      if (i + 1 < bad.size())
+      {
+        renderer->AddLight(bad[i + 1]);
+      }
+    }
+    for (size_t i = lights.size() + 1; i < bad.size(); ++i)
+    {
+      renderer->AddLight(bad[i]);
+    }
+    vtkFXTest::EventCounter warnings(pipeline, vtkCommand::WarningEvent);
+    window->Render();
+    window->Render();
+    const std::string name = std::to_string(count) + " lights and " + std::to_string(c.Bad) +
+      " with NaN or infinite numbers" + (c.Texture ? ", light texture" : "");
+    FX_CHECK(Check(name.c_str(), good, vtkFXScenes::Capture(window), 60.0, 1) == EXIT_SUCCESS, "");
+    std::cout << name << ": " << warnings.Count << " warning(s): " << warnings.Last << std::endl;
+    FX_CHECK(warnings.Count == 1, warnings.Count << " warnings about the lights");
+  }
+  return EXIT_SUCCESS;
+}
+
 int TestLights(int, char*[])
 {
   // The range: 2 x intensity / (a0 + a1 d + a2 d^2) is the cutoff there.
@@ -333,6 +419,7 @@ int TestLights(int, char*[])
 
   auto window = vtkFXTest::MakeWindow(200, 150);
   FX_CHECK(CheckTileDepths(window) == EXIT_SUCCESS, "tile depths");
+  FX_CHECK(CheckNonFiniteLights(window) == EXIT_SUCCESS, "lights with NaN or infinite numbers");
   const Lit many = Render(window, 256, false, false, Defaults);
   std::cout << "256 lights: " << many.LightsPerTile << " lights per tile" << std::endl;
   FX_CHECK(Check("256 point lights", many.FX, many.VTK, 55.0, 2) == EXIT_SUCCESS, "");
