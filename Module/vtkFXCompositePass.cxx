@@ -60,53 +60,6 @@ std::string LightTerm(const std::string& call, const std::string& index,
     "      specularLight += lightVisibility * lightSpecular;\n    }\n";
 }
 
-// Lights with a number that is not finite give no light: VTK's uniforms
-// of such a light (n counting the lights that are on) made those of a
-// black directional light, whose terms are all 0 (a colour of 0 alone
-// would leave 0 x NaN).
-void DarkenNonFiniteLights(vtkRenderer* ren, vtkShaderProgram* program)
-{
-  vtkCollectionSimpleIterator it;
-  ren->GetLights()->InitTraversal(it);
-  int place = -1;
-  while (vtkLight* light = ren->GetLights()->GetNextLight(it))
-  {
-    if (light->GetSwitch() <= 0)
-    {
-      continue;
-    }
-    ++place;
-    if (vtkFXRenderUtilities::IsLightFinite(light))
-    {
-      continue;
-    }
-    const std::string n = std::to_string(place);
-    const auto set3 = [program](const std::string& name, float x, float y, float z) {
-      if (program->IsUniformUsed(name.c_str()))
-      {
-        const float value[3] = { x, y, z };
-        program->SetUniform3f(name.c_str(), value);
-      }
-    };
-    const auto set1 = [program](const std::string& name, float value) {
-      if (program->IsUniformUsed(name.c_str()))
-      {
-        program->SetUniformf(name.c_str(), value);
-      }
-    };
-    set3("lightColor" + n, 0.0f, 0.0f, 0.0f);
-    set3("lightDirectionVC" + n, 0.0f, 0.0f, -1.0f);
-    set3("lightPositionVC" + n, 0.0f, 0.0f, 0.0f);
-    set3("lightAttenuation" + n, 1.0f, 0.0f, 0.0f);
-    set1("lightConeAngle" + n, 180.0f);
-    set1("lightExponent" + n, 1.0f);
-    if (program->IsUniformUsed(("lightPositional" + n).c_str()))
-    {
-      program->SetUniformi(("lightPositional" + n).c_str(), 0);
-    }
-  }
-}
-
 // Calls of vtkFXLightingFS.glsl's functions, one per light that is on, with
 // VTK's per-light uniform names (vtkOpenGLRenderer::GetLightingUniforms).
 std::string UniformLightCalls(int complexity, int lightCount, const std::string& visibilityCode)
@@ -622,7 +575,7 @@ void vtkFXCompositePass::SetUniforms(vtkShaderProgram* program, vtkOpenGLRendere
     // the lights with a number that is not finite (left out as on the
     // light-texture path: no light rather than NaN or white).
     ren->UpdateLightingUniforms(program);
-    DarkenNonFiniteLights(ren, program);
+    vtkFXRenderUtilities::DarkenNonFiniteLights(ren, program);
   }
   BindSampler(program, "fxHardwareDepth", gb->GetDepthTexture());
   BindSampler(program, "fxAlbedo", gb->GetChannelTexture(GB::Albedo));

@@ -161,6 +161,8 @@ void vtkFXDirectionalOcclusionPass::BindExtensionInputs(vtkShaderProgram* progra
   program->SetUniformi("fxAlbedo", albedo->GetTextureUnit());
   program->SetUniformi("fxShadingNormal", shading->GetTextureUnit());
   vtkOpenGLRenderer::SafeDownCast(ren)->UpdateLightingUniforms(program);
+  // (lights with NaN or infinite numbers bleed no light, as they light nothing)
+  vtkFXRenderUtilities::DarkenNonFiniteLights(ren, program);
 }
 
 void vtkFXDirectionalOcclusionPass::UnbindExtensionInputs()

@@ -2,6 +2,7 @@
 
 #include "vtkCamera.h"
 #include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -78,21 +79,86 @@ const char* vtkFXRenderUtilities::GatherDefines(bool useTextureGather)
                           : "//VTK::System::Dec\n#define FX_GATHER 0\n";
 }
 
+namespace
+{
+// Finite also as the float OpenGL receives (1e39 is not).
+bool FiniteAsFloat(double value)
+{
+  return std::isfinite(static_cast<float>(value));
+}
+}
+
 bool vtkFXRenderUtilities::IsLightFinite(vtkLight* light)
 {
+  // What VTK's light uniforms carry (vtkOpenGLRenderer::UpdateLightingUniforms):
+  // diffuse colour x intensity, the direction from position to focal point;
+  // for a positional light its position and attenuation, and for a spot
+  // (cone under 90 degrees; NaN is not) its cone and exponent.
   double position[3], focalPoint[3];
   light->GetTransformedPosition(position);
   light->GetTransformedFocalPoint(focalPoint);
-  const double* values[] = { position, focalPoint, light->GetDiffuseColor(),
-    light->GetSpecularColor(), light->GetAmbientColor(), light->GetAttenuationValues() };
-  bool finite = std::isfinite(light->GetIntensity()) && std::isfinite(light->GetConeAngle()) &&
-    std::isfinite(light->GetExponent());
-  for (const double* triple : values)
+  const double* color = light->GetDiffuseColor();
+  const double intensity = light->GetIntensity();
+  bool finite = true;
+  for (int i = 0; i < 3; ++i)
   {
-    finite = finite && std::isfinite(triple[0]) && std::isfinite(triple[1]) &&
-      std::isfinite(triple[2]);
+    finite = finite && FiniteAsFloat(color[i] * intensity) && FiniteAsFloat(position[i]) &&
+      FiniteAsFloat(focalPoint[i]) && FiniteAsFloat(focalPoint[i] - position[i]);
+  }
+  if (light->GetPositional())
+  {
+    const double* attenuation = light->GetAttenuationValues();
+    finite = finite && FiniteAsFloat(attenuation[0]) && FiniteAsFloat(attenuation[1]) &&
+      FiniteAsFloat(attenuation[2]);
+    if (light->GetConeAngle() < 90.0)
+    {
+      finite = finite && FiniteAsFloat(light->GetExponent());
+    }
   }
   return finite;
+}
+
+void vtkFXRenderUtilities::DarkenNonFiniteLights(vtkRenderer* renderer, vtkShaderProgram* program)
+{
+  vtkCollectionSimpleIterator it;
+  renderer->GetLights()->InitTraversal(it);
+  int place = -1;
+  while (vtkLight* light = renderer->GetLights()->GetNextLight(it))
+  {
+    if (light->GetSwitch() <= 0)
+    {
+      continue;
+    }
+    ++place;
+    if (IsLightFinite(light))
+    {
+      continue;
+    }
+    const std::string n = std::to_string(place);
+    const auto set3 = [program](const std::string& name, float x, float y, float z) {
+      if (program->IsUniformUsed(name.c_str()))
+      {
+        const float value[3] = { x, y, z };
+        program->SetUniform3f(name.c_str(), value);
+      }
+    };
+    const auto set1 = [program](const std::string& name, float value) {
+      if (program->IsUniformUsed(name.c_str()))
+      {
+        program->SetUniformf(name.c_str(), value);
+      }
+    };
+    set3("lightColor" + n, 0.0f, 0.0f, 0.0f);
+    set3("lightDirectionVC" + n, 0.0f, 0.0f, -1.0f);
+    set3("lightPositionVC" + n, 0.0f, 0.0f, 0.0f);
+    set3("lightAttenuation" + n, 1.0f, 0.0f, 0.0f);
+    set1("lightConeAngle" + n, 180.0f);
+    set1("lightExponent" + n, 1.0f);
+    if (program->IsUniformUsed(("lightPositional" + n).c_str()))
+    {
+      program->SetUniformi(("lightPositional" + n).c_str(), 0);
+    }
+  }
 }
 
 bool vtkFXRenderUtilities::EnsureTexture(vtkSmartPointer<vtkTextureObject>& texture,

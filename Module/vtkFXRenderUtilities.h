@@ -82,13 +82,23 @@ public:
   static bool IsOpenGLSupported(const char* name);
 
   /**
-   * Whether every number of a light that lighting reads is finite: its
-   * position and focal point (as transformed), intensity, colours,
-   * attenuation, cone angle and exponent. VTK's own shaders turn a light
-   * with a NaN or infinite one into NaN (black) or white pixels; vtkFX
-   * leaves such a light out (vtkFXPipelinePass warns).
+   * Whether every number of a light that VTK's light uniforms carry is
+   * finite, also as a float: diffuse colour x intensity, position and focal
+   * point (as transformed); for a positional light its attenuation, and for
+   * a spot light its exponent. VTK's own shaders turn a light with a NaN
+   * or infinite one into NaN (black) pixels; vtkFX's deferred lighting and
+   * shadows leave such a light out (vtkFXPipelinePass warns).
    */
   static bool IsLightFinite(vtkLight* light);
+
+  /**
+   * After vtkOpenGLRenderer::UpdateLightingUniforms(program): the uniforms
+   * of each light that is not IsLightFinite made those of a black
+   * directional light, whose terms are all 0 (a colour of 0 alone would
+   * leave 0 x NaN). Lights are numbered as VTK numbers them, counting the
+   * lights that are on.
+   */
+  static void DarkenNonFiniteLights(vtkRenderer* renderer, vtkShaderProgram* program);
 
   /**
    * Make `texture` a width x height 2D texture of the given format.

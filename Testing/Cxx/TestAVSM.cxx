@@ -43,6 +43,7 @@
 //   the resolve's selection, with identical segments);
 // - nothing translucent: the pass is left out, with its buffers.
 #include "vtkFXAVSMPass.h"
+#include "vtkFXCompositePass.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
@@ -942,6 +943,60 @@ int CheckShadowMapReuse(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
+// A light with a NaN intensity ahead of the sun in the renderer's list:
+// it casts nothing and lights nothing in vtkFX's deferred lighting, and the
+// sun's shadow still darkens the sun's own light, on VTK's uniforms and on the light texture (whose
+// rows keep each light's place among the lights that are on): the image
+// is the one without that light.
+int CheckShadowsBesideNonFiniteLight(vtkRenderWindow* window)
+{
+  for (bool texture : { false, true })
+  {
+    std::vector<unsigned char> images[2];
+    for (int withBad : { 0, 1 })
+    {
+      vtkNew<vtkFXPipelinePass> pipeline;
+      vtkNew<vtkFXAVSMPass> avsm;
+      vtkRenderer* renderer = GroundScene(window, true);
+      // (unlit: VTK draws the translucent slab with its own light uniforms,
+      // which a NaN light turns into NaN, as in VTK without vtkFX)
+      auto slab = Quad(-10, 0, 1, 0.3);
+      slab->GetProperty()->LightingOff();
+      renderer->AddActor(slab);
+      if (withBad)
+      {
+        vtkNew<vtkLight> bad;
+        bad->SetLightTypeToSceneLight();
+        bad->PositionalOff();
+        bad->SetIntensity(std::numeric_limits<double>::quiet_NaN());
+        vtkLight* sun = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
+        vtkSmartPointer<vtkLight> keep = sun;
+        renderer->RemoveAllLights();
+        renderer->AddLight(bad);
+        renderer->AddLight(keep);
+      }
+      if (texture)
+      {
+        pipeline->GetCompositePass()->SetMaximumUniformLights(0);
+      }
+      pipeline->AddEffect("avsm", avsm);
+      renderer->SetPass(pipeline);
+      window->Render();
+      images[withBad] = vtkFXScenes::Capture(window);
+      FX_CHECK(avsm->GetCastingLightIndex(0) == withBad,
+        "the sun casts as light " << avsm->GetCastingLightIndex(0));
+    }
+    const int largest = vtkFXScenes::MaxDifference(images[0], images[1]);
+    const auto green = [&](int x) { return int(images[1][3 * (size_t(Height / 2) * Width + x) + 1]); };
+    std::cout << "a NaN light ahead of the casting sun" << (texture ? " (light texture)" : "")
+              << ": " << largest << " levels off the image without it; under the slab "
+              << green(10) << ", in the open " << green(Width - 10) << std::endl;
+    FX_CHECK(largest <= 1 && green(10) < green(Width - 10) - 20,
+      "a NaN light moved the sun's shadow onto another light");
+  }
+  return EXIT_SUCCESS;
+}
+
 int TestAVSM(int, char*[])
 {
   auto window = vtkFXTest::MakeWindow(Width, Height);
@@ -1238,13 +1293,16 @@ int TestAVSM(int, char*[])
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
     const double coordinates[][3] = { { 2, 1, 2 }, { 4, 1, 2 }, { nan, 2, 2 }, { 3, 3, 2 },
-      { 3, 3, 2 }, { 3, 3, 2 }, { inf, 1, 2 }, { 5, -inf, 2 }, { 6, 1, nan } };
+      { 3, 3, 2 }, { 3, 3, 2 }, { inf, 1, 2 }, { 5, -inf, 2 }, { 6, 1, nan },
+      // one good triangle, around (3.75, -2)
+      { 2.0, -3.5, 2 }, { 5.5, -3.5, 2 }, { 3.75, -0.5, 2 } };
     for (const auto& c : coordinates)
     {
       points->InsertNextPoint(c);
     }
     vtkNew<vtkCellArray> triangles;
-    const vtkIdType cells[][3] = { { 0, 1, 2 }, { 3, 4, 5 }, { 0, 6, 7 }, { 1, 8, 3 }, { 0, 0, 1 } };
+    const vtkIdType cells[][3] = { { 0, 1, 2 }, { 3, 4, 5 }, { 0, 6, 7 }, { 1, 8, 3 }, { 0, 0, 1 },
+      { 9, 10, 11 } };
     for (const auto& cell : cells)
     {
       triangles->InsertNextCell(3, cell);
@@ -1257,7 +1315,8 @@ int TestAVSM(int, char*[])
     auto badActor = vtkSmartPointer<vtkActor>::New();
     badActor->SetMapper(badMapper);
     badActor->GetProperty()->SetOpacity(0.5);
-    auto badSplats = Splats({ { nan, 0.0, 2.0 }, { 2.0, inf, 2.0 } }, 0.5, 0.5);
+    // (and one good splat at (3.75, 2))
+    auto badSplats = Splats({ { nan, 0.0, 2.0 }, { 2.0, inf, 2.0 }, { 3.75, 2.0, 2.0 } }, 0.5, 0.5);
     const auto v = Visibility(window, MakeAVSM(8, exactMode, true),
       { Quad(-10, 0, 1, 0.3), badActor, badSplats }, true);
     FX_CHECK(v.size() == static_cast<size_t>(Width) * Height, "no visibility");
@@ -1274,10 +1333,21 @@ int TestAVSM(int, char*[])
     {
       bad01 += (std::isfinite(t) && t >= 0.0f && t <= 1.0f) ? 0 : 1;
     }
+    // The good triangle's and splat's shadows (world (3.75, -2) and
+    // (3.75, 2): the parallel view shows 4 units from the centre to the top).
+    const auto at = [&v](double x, double y) {
+      const int px = static_cast<int>(0.5 * Width + x * 0.5 * Height / 4.0);
+      const int py = static_cast<int>(0.5 * Height + y * 0.5 * Height / 4.0);
+      return v[static_cast<size_t>(py) * Width + px];
+    };
     std::cout << (exactMode ? "exact" : "AVSM-8") << ", NaN and infinite casters beside a slab: "
               << bad01 << " pixels not finite in [0, 1], the slab's shadow off by " << under
-              << std::endl;
+              << "; under their good triangle " << at(3.75, -2.0) << ", their good splat "
+              << at(3.75, 2.0) << std::endl;
     FX_CHECK(bad01 == 0 && under <= 1e-3, "NaN or infinite casters broke the shadows");
+    // (the mesh's good triangle casts nothing: its infinite points collapse
+    // its bounds, and VTK draws nothing of it either, with or without vtkFX)
+    FX_CHECK(at(3.75, 2.0) < 0.9, "the finite splat beside the bad ones casts nothing");
   }
 
   // Coincident surfaces: two identical slabs at one height are two
@@ -1477,6 +1547,7 @@ int TestAVSM(int, char*[])
   }
   FX_CHECK(CheckTwoLights(window) == EXIT_SUCCESS, "two casting lights");
   FX_CHECK(CheckShadowMapReuse(window) == EXIT_SUCCESS, "shadow maps kept between frames");
+  FX_CHECK(CheckShadowsBesideNonFiniteLight(window) == EXIT_SUCCESS, "a NaN light and shadows");
 
   // Nothing translucent, or translucent props of opacity 0 only (they
   // cast nothing): the pass is left out and allocates nothing.

@@ -42,6 +42,22 @@ struct Lit
   double LightsPerTile = 0.0;
 };
 
+// A fresh renderer alone in `window` showing scene:spheres on its ground,
+// lit by `count` point lights over it; nullptr (with `error`) on failure.
+vtkRenderer* LitSpheres(vtkRenderWindow* window, int count, std::string& error)
+{
+  window->GetRenderers()->RemoveAllItems();
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  double bounds[6];
+  if (!vtkFXScenes::Populate(renderer, "scene:spheres", vtkFXScenes::Options(), error, bounds))
+  {
+    return nullptr;
+  }
+  vtkFXScenes::AddPointLights(renderer, count, bounds);
+  return renderer; // (the window holds it)
+}
+
 // scene:spheres on its ground lit by `count` point lights (and, with
 // `atCamera`, one more at the camera; with `spots`, every third light a
 // spot light of 50 degrees looking down), in vtkFX (with the composite set
@@ -52,17 +68,13 @@ Lit Render(vtkRenderWindow* window, int count, bool atCamera, bool parallel,
   Lit result;
   for (bool fx : { true, false })
   {
-    window->GetRenderers()->RemoveAllItems();
-    vtkNew<vtkRenderer> renderer;
-    window->AddRenderer(renderer);
     std::string error;
-    double bounds[6];
-    if (!vtkFXScenes::Populate(renderer, "scene:spheres", vtkFXScenes::Options(), error, bounds))
+    vtkRenderer* renderer = LitSpheres(window, count, error);
+    if (!renderer)
     {
       std::cerr << error << std::endl;
       return result;
     }
-    vtkFXScenes::AddPointLights(renderer, count, bounds);
     if (spots)
     {
       vtkLightCollection* lights = renderer->GetLights();
@@ -206,34 +218,39 @@ int CheckTileDepths(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
-// Lights with a NaN or infinite number (position, focal point, intensity,
-// colours, attenuation, cone) among good ones, first and between
-// them: vtkFX leaves them out (VTK's own render turns them into NaN:
-// black), so the image is the one without them, on VTK's uniforms (3 + 5
-// lights) and on the light texture (3 + 7, forced, and 64 + 7), with one
-// warning for two frames.
+// Lights with a NaN or infinite number in what VTK's light uniforms carry
+// (position, focal point, colour x intensity, also past a float's range;
+// a positional light's attenuation, a spot's exponent) among good ones,
+// first and in between: vtkFX's deferred lighting leaves them out (VTK's
+// own render turns them into NaN: black), so the image is the one without
+// them, on VTK's uniforms (3 + 5 point lights; 2 + 2 directional ones,
+// lighting complexity 2) and on the light texture (3 + 7, forced, and
+// 64 + 7), with one warning for two frames. Made finite again, they light
+// as a fresh pipeline draws them.
 int CheckNonFiniteLights(vtkRenderWindow* window)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
-  // (3 + 5 lights: VTK's uniforms; 3 + 7 on the light texture, forced; 64 + 7)
   const struct
   {
     int Good, Bad;
-    bool Texture;
-  } cases[] = { { 3, 5, false }, { 3, 7, true }, { 64, 7, false } };
+    bool Texture, Directional;
+  } cases[] = { { 3, 5, false, false }, { 3, 7, true, false }, { 64, 7, false, false },
+    { 2, 2, false, true } };
   for (const auto& c : cases)
   {
-    const int count = c.Good;
-    window->GetRenderers()->RemoveAllItems();
-    vtkNew<vtkRenderer> renderer;
-    window->AddRenderer(renderer);
     std::string error;
-    double bounds[6];
-    FX_CHECK(vtkFXScenes::Populate(renderer, "scene:spheres", vtkFXScenes::Options(), error, bounds),
-      error);
-    vtkFXScenes::AddPointLights(renderer, count, bounds);
-    vtkNew<vtkFXPipelinePass> pipeline;
+    vtkRenderer* renderer = LitSpheres(window, c.Good, error);
+    FX_CHECK(renderer, error);
+    std::vector<vtkSmartPointer<vtkLight>> lights;
+    vtkCollectionSimpleIterator it;
+    renderer->GetLights()->InitTraversal(it);
+    while (vtkLight* light = renderer->GetLights()->GetNextLight(it))
+    {
+      light->SetPositional(!c.Directional);
+      lights.push_back(light);
+    }
+    auto pipeline = vtkSmartPointer<vtkFXPipelinePass>::New();
     if (c.Texture)
     {
       pipeline->GetCompositePass()->SetMaximumUniformLights(0);
@@ -242,26 +259,22 @@ int CheckNonFiniteLights(vtkRenderWindow* window)
     window->Render();
     const auto good = vtkFXScenes::Capture(window);
 
-    std::vector<vtkSmartPointer<vtkLight>> lights;
-    vtkCollectionSimpleIterator it;
-    renderer->GetLights()->InitTraversal(it);
-    while (vtkLight* light = renderer->GetLights()->GetNextLight(it))
-    {
-      lights.push_back(light);
-    }
     std::vector<vtkSmartPointer<vtkLight>> bad;
     for (int k = 0; k < c.Bad; ++k)
     {
       auto light = vtkSmartPointer<vtkLight>::New();
       light->DeepCopy(lights.front());
-      switch (k)
+      switch (c.Directional ? 2 * k : k)
       {
         case 0: light->SetPosition(nan, 1.0, 0.0); break;
         case 1: light->SetIntensity(inf); break;
         case 2: light->SetColor(nan, 1.0, 1.0); break;
         case 3: light->SetAttenuationValues(1.0, nan, 0.0); break;
-        case 4: light->SetConeAngle(nan); break;
-        case 5: light->SetSpecularColor(inf, 0.0, 0.0); break; // (an exponent is clamped)
+        case 4: light->SetIntensity(1e39); break; // (finite, not as a float)
+        case 5: // a spot light's exponent (VTK's clamp lets NaN through)
+          light->SetConeAngle(50.0);
+          light->SetExponent(nan);
+          break;
         default: light->SetFocalPoint(0.0, -inf, 0.0); break;
       }
       bad.push_back(light);
@@ -283,11 +296,30 @@ int CheckNonFiniteLights(vtkRenderWindow* window)
     vtkFXTest::EventCounter warnings(pipeline, vtkCommand::WarningEvent);
     window->Render();
     window->Render();
-    const std::string name = std::to_string(count) + " lights and " + std::to_string(c.Bad) +
-      " with NaN or infinite numbers" + (c.Texture ? ", light texture" : "");
+    const std::string name = std::to_string(c.Good) + (c.Directional ? " directional" : "") +
+      " lights and " + std::to_string(c.Bad) + " with NaN or infinite numbers" +
+      (c.Texture ? ", light texture" : "");
     FX_CHECK(Check(name.c_str(), good, vtkFXScenes::Capture(window), 60.0, 1) == EXIT_SUCCESS, "");
     std::cout << name << ": " << warnings.Count << " warning(s): " << warnings.Last << std::endl;
     FX_CHECK(warnings.Count == 1, warnings.Count << " warnings about the lights");
+
+    // Made finite again (copies of the first good light): lit as a fresh
+    // pipeline lights them, nothing left dark.
+    for (auto& light : bad)
+    {
+      light->DeepCopy(lights.front());
+    }
+    window->Render();
+    const auto mended = vtkFXScenes::Capture(window);
+    auto fresh = vtkSmartPointer<vtkFXPipelinePass>::New();
+    fresh->GetCompositePass()->SetMaximumUniformLights(
+      pipeline->GetCompositePass()->GetMaximumUniformLights());
+    renderer->SetPass(fresh);
+    window->Render();
+    FX_CHECK(Check((name + ", made finite").c_str(), vtkFXScenes::Capture(window), mended, 60.0, 1) ==
+        EXIT_SUCCESS, "");
+    FX_CHECK(vtkFXScenes::MaxDifference(good, mended) > 10, name << ": the mended lights add no light");
+    pipeline->ReleaseGraphicsResources(window);
   }
   return EXIT_SUCCESS;
 }
@@ -493,14 +525,9 @@ int TestLights(int, char*[])
     std::vector<unsigned char> images[2];
     for (bool culling : { true, false })
     {
-      window->GetRenderers()->RemoveAllItems();
-      vtkNew<vtkRenderer> renderer;
-      window->AddRenderer(renderer);
       std::string error;
-      double bounds[6];
-      FX_CHECK(vtkFXScenes::Populate(renderer, "scene:spheres", vtkFXScenes::Options(), error, bounds),
-        error);
-      vtkFXScenes::AddPointLights(renderer, 64, bounds);
+      vtkRenderer* renderer = LitSpheres(window, 64, error);
+      FX_CHECK(renderer, error);
       // dim lights: their cutoff ranges end well before their factors
       // fall to 0.001
       vtkLightCollection* lights = renderer->GetLights();
