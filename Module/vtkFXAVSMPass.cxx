@@ -23,6 +23,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkProp.h"
 #include "vtkDataObject.h"
+#include "vtkDemandDrivenPipeline.h"
 #include "vtkAlgorithm.h"
 #include "vtkProp3D.h"
 #include "vtkUniforms.h"
@@ -1476,15 +1477,21 @@ void vtkFXAVSMPass::ReportError(const std::string& message)
 
 namespace
 {
-// When an algorithm's output last changed, after updating it (as the
-// render would: a key read before the update would keep the old maps).
+// When an algorithm's output, or anything upstream that will change it,
+// last changed: the output's MTime and the pipeline's (brought up to date
+// without running anything: an Update() here would run the pipeline with
+// a request of its own, the whole data, where a parallel render asks for
+// its piece). A change upstream is seen before it runs.
 double OutputTime(vtkAlgorithm* algorithm, vtkDataObject* output)
 {
-  if (algorithm)
+  vtkMTimeType time = output ? output->GetMTime() : 0;
+  if (auto* pipeline =
+        vtkDemandDrivenPipeline::SafeDownCast(algorithm ? algorithm->GetExecutive() : nullptr))
   {
-    algorithm->Update();
+    pipeline->UpdatePipelineMTime();
+    time = std::max(time, pipeline->GetPipelineMTime());
   }
-  return output ? static_cast<double>(output->GetMTime()) : 0.0;
+  return static_cast<double>(time);
 }
 
 // A texture's settings and image.

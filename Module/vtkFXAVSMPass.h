@@ -249,7 +249,7 @@ public:
    * Keep the shadow maps while nothing they are made from changes (default
    * on): the casters (each part's transform, property, textures and their
    * images, shader property and uniforms, mapper, clipping planes, splat
-   * transfer functions and input data, brought up to date first), the
+   * transfer functions and input data, and their pipelines upstream), the
    * casting lights' views (position, direction, cone, and the visible
    * props' bounds they are fitted to) and this pass's settings (its MTime).
    * A frame that only moves the camera then skips the capture and the
