@@ -267,7 +267,7 @@ void vtkFXPipelinePass::WarnAboutNonFiniteLights(const vtkFXSceneInfo& scene)
       places.push_back(static_cast<int>(i));
     }
   }
-  // (once for each set of such lights: not every frame)
+  // (when the set of such lights changes: not every frame)
   if (!places.empty() && places != this->NonFiniteLights)
   {
     std::ostringstream list;
@@ -276,9 +276,9 @@ void vtkFXPipelinePass::WarnAboutNonFiniteLights(const vtkFXSceneInfo& scene)
       list << (place == places.front() ? "" : ", ") << place;
     }
     vtkWarningMacro("Light(s) " << list.str() << " (counting the lights that are on) have a "
-                                   "position, focal point, intensity, colour, attenuation, cone "
-                                   "angle or exponent that is NaN or infinite: they are left "
-                                   "out (no light, no shadows).");
+                                   "position, focal point, colour x intensity, attenuation or "
+                                   "(a spot light's) exponent that is NaN or infinite, also as "
+                                   "a float: vtkFX's lighting and shadows leave them out.");
   }
   this->NonFiniteLights = places;
 }

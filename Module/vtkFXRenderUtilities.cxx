@@ -93,7 +93,8 @@ bool vtkFXRenderUtilities::IsLightFinite(vtkLight* light)
   // What VTK's light uniforms carry (vtkOpenGLRenderer::UpdateLightingUniforms):
   // diffuse colour x intensity, the direction from position to focal point;
   // for a positional light its position and attenuation, and for a spot
-  // (cone under 90 degrees; NaN is not) its cone and exponent.
+  // light (a cone under 90 degrees, so finite; a NaN cone is no spot) its
+  // exponent.
   double position[3], focalPoint[3];
   light->GetTransformedPosition(position);
   light->GetTransformedFocalPoint(focalPoint);
