@@ -4,6 +4,10 @@
 // uncompressed deep shadow map, every fragment of every texel), as
 // transmittance RMSE against time.
 //
+// Every method makes its shadow maps every frame (ReuseShadowMaps off, as
+// when the data or the lights change); a last block orbits the camera under
+// the lights fixed where they are, with the maps kept (no shadows, AVSM-8,
+// exact: rows "..., camera orbiting, maps kept").
 // One window per method, frames interleaved: no shadows, AVSM-4, -8, -16,
 // the two opacity shadow maps and exact, each with a 1024 x 1024 map (the AVSM issue's setting). The
 // error is the RMSE of the light's transmittance at the opaque receivers
