@@ -186,6 +186,34 @@ void WriteRayPlot(std::vector<Method>& methods, const std::string& title, const 
     "light depth (0..1, linear along the light)", "transmittance", path);
 }
 
+// The last frame's transmittance at the receivers and the G-buffer's
+// linear depth (0 where no receiver is), read back.
+void ReadVisibility(Method& m)
+{
+  m.Visibility = Download(m.Window, m.AVSM->GetOutputTexture("visibility"), 1);
+  m.LinearDepth = Download(
+    m.Window, m.Pipeline->GetGBufferPass()->GetChannelTexture(vtkFXGBufferPass::LinearDepth), 1);
+}
+
+// Transmittance error at the receivers (1 everywhere without shadows): the
+// pixels where the exact mode's G-buffer has a surface, not the background.
+double TransmittanceRMSE(const Method& m, const Method& exact)
+{
+  double sum = 0.0;
+  size_t count = 0;
+  for (size_t i = 0; i < exact.Visibility.size(); ++i)
+  {
+    if (i >= exact.LinearDepth.size() || !(exact.LinearDepth[i] > 0.0f))
+    {
+      continue;
+    }
+    const double mine = m.Visibility.empty() ? 1.0 : m.Visibility[i];
+    sum += (mine - exact.Visibility[i]) * (mine - exact.Visibility[i]);
+    ++count;
+  }
+  return count ? std::sqrt(sum / count) : 0.0;
+}
+
 // VTK's own shadows on the renderer: the shadow-map baker and pass of
 // VTK's examples over lights and opaque props, then the translucent props.
 // A caster with opacity below 1 casts nothing there.
@@ -287,7 +315,7 @@ void BenchOrbit(const Options& o, const std::string& input, std::vector<Method> 
     m.Image = vtkFXScenes::Capture(m.Window);
     if (m.AVSM)
     {
-      m.Visibility = Download(m.Window, m.AVSM->GetOutputTexture("visibility"), 1);
+      ReadVisibility(m);
       // Profile's switch remakes the maps; the frame after it reuses them.
       m.AVSM->ProfileOn();
       m.Window->Render();
@@ -300,12 +328,7 @@ void BenchOrbit(const Options& o, const std::string& input, std::vector<Method> 
   for (size_t i = 1; i < orbit.size(); ++i)
   {
     const Method& m = orbit[i];
-    double sum = 0.0;
-    for (size_t p = 0; p < exact.Visibility.size() && p < m.Visibility.size(); ++p)
-    {
-      sum += (m.Visibility[p] - exact.Visibility[p]) * (m.Visibility[p] - exact.Visibility[p]);
-    }
-    const double rmse = exact.Visibility.empty() ? 0.0 : std::sqrt(sum / exact.Visibility.size());
+    const double rmse = TransmittanceRMSE(m, exact);
     const double psnr = vtkFXScenes::PSNR(m.Image, exact.Image);
     const double frame = Median(m.FrameMs);
     const double lookup = m.AVSM->GetPhaseMilliseconds(2);
@@ -406,9 +429,7 @@ int BenchAVSM(const Options& o)
       m.Image = vtkFXScenes::Capture(m.Window);
       if (m.AVSM)
       {
-        m.Visibility = Download(m.Window, m.AVSM->GetOutputTexture("visibility"), 1);
-        m.LinearDepth = Download(m.Window,
-          m.Pipeline->GetGBufferPass()->GetChannelTexture(vtkFXGBufferPass::LinearDepth), 1);
+        ReadVisibility(m);
         m.AVSM->ProfileOn(); // one more frame, finished phase by phase
         m.Window->Render();
         m.AVSM->ProfileOff();
@@ -419,23 +440,9 @@ int BenchAVSM(const Options& o)
     std::vector<PlotPoint> points;
     for (auto& m : methods)
     {
-      // Transmittance error at the receivers (1 everywhere without shadows):
-      // the pixels where the G-buffer has a surface, not the background.
-      double sum = 0.0;
-      size_t count = 0;
-      for (size_t i = 0; i < exact.Visibility.size(); ++i)
-      {
-        if (i >= exact.LinearDepth.size() || !(exact.LinearDepth[i] > 0.0f))
-        {
-          continue;
-        }
-        const double mine = m.Visibility.empty() ? 1.0 : m.Visibility[i];
-        sum += (mine - exact.Visibility[i]) * (mine - exact.Visibility[i]);
-        ++count;
-      }
       // VTK's shadow maps give no transmittance to compare: its row has
       // none (-1), and its image differs from vtkFX's by its opaque shadows.
-      const double rmse = m.Nodes < 0 ? -1.0 : count ? std::sqrt(sum / count) : 0.0;
+      const double rmse = m.Nodes < 0 ? -1.0 : TransmittanceRMSE(m, exact);
       const double psnr = vtkFXScenes::PSNR(m.Image, exact.Image);
       const double frame = Median(m.FrameMs);
       const double ms = frame - none;
