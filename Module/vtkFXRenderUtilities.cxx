@@ -121,6 +121,21 @@ bool vtkFXRenderUtilities::IsLightFinite(vtkLight* light)
 
 void vtkFXRenderUtilities::DarkenNonFiniteLights(vtkRenderer* renderer, vtkShaderProgram* program)
 {
+  // (only the uniforms the program declares: which depends on the lighting
+  // complexity)
+  const auto set3 = [program](const std::string& name, float x, float y, float z) {
+    const float value[3] = { x, y, z };
+    if (program->IsUniformUsed(name.c_str()))
+    {
+      program->SetUniform3f(name.c_str(), value);
+    }
+  };
+  const auto set1 = [program](const std::string& name, float value) {
+    if (program->IsUniformUsed(name.c_str()))
+    {
+      program->SetUniformf(name.c_str(), value);
+    }
+  };
   vtkCollectionSimpleIterator it;
   renderer->GetLights()->InitTraversal(it);
   int place = -1;
@@ -136,19 +151,6 @@ void vtkFXRenderUtilities::DarkenNonFiniteLights(vtkRenderer* renderer, vtkShade
       continue;
     }
     const std::string n = std::to_string(place);
-    const auto set3 = [program](const std::string& name, float x, float y, float z) {
-      if (program->IsUniformUsed(name.c_str()))
-      {
-        const float value[3] = { x, y, z };
-        program->SetUniform3f(name.c_str(), value);
-      }
-    };
-    const auto set1 = [program](const std::string& name, float value) {
-      if (program->IsUniformUsed(name.c_str()))
-      {
-        program->SetUniformf(name.c_str(), value);
-      }
-    };
     set3("lightColor" + n, 0.0f, 0.0f, 0.0f);
     set3("lightDirectionVC" + n, 0.0f, 0.0f, -1.0f);
     set3("lightPositionVC" + n, 0.0f, 0.0f, 0.0f);
