@@ -82,6 +82,10 @@ const int MaximumListPerTexel = 64; // segments one texel's resolve inserts in o
 // buffers in GLSL 1.50.
 const char* const StorageExtension =
   "//VTK::System::Dec\n#extension GL_ARB_shader_storage_buffer_object : require\n";
+// The capture's flags of the tiles the resolve runs at (image stores).
+const char* const TileFlagsExtension =
+  "//VTK::System::Dec\n#extension GL_ARB_shader_image_load_store : require\n";
+const int ResolveTileSize = 8; // texels
 // Marks the shaders this pass extended (SetShaderParameters binds for them).
 const char* const CaptureMarker = "// vtkFX AVSM capture";
 const char* const ReceiverMarker = "// vtkFX AVSM receiver";
@@ -201,7 +205,7 @@ vtkFXAVSMPass::vtkFXAVSMPass()
   this->Stage = AfterGBuffer;
   this->DeclareOutput("visibility");
   this->CasterPass = vtkSmartPointer<vtkTranslucentPass>::New();
-  this->ResolveQuad.OneTriangle = true; // its walks stop at each texel's count
+  this->ResolveTiles.TileSize = ResolveTileSize;
 }
 
 vtkFXAVSMPass::~vtkFXAVSMPass()
@@ -728,6 +732,12 @@ void vtkFXAVSMPass::BindBuffers(vtkShaderProgram* program)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, this->Buffers[i]);
   }
   program->SetUniform2i("fxAVSMAtlas", this->AtlasSize);
+  if (program->IsUniformUsed("fxAVSMTileMask"))
+  {
+    glBindImageTexture(
+      0, this->ResolveTiles.Mask->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
+    program->SetUniformi("fxAVSMTileMask", 0);
+  }
   this->SetCaptureViewUniforms(program);
   if (program->IsUniformUsed("fxAVSMCapacity"))
   {
@@ -768,6 +778,14 @@ bool vtkFXAVSMPass::PreReplaceShaderValues(
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec", StorageExtension, false);
   vtkShaderProgram::Substitute(
     fragmentShader, "//VTK::Output::Dec", std::string("//VTK::Output::Dec\n") + vtkFXAVSMLists, false);
+  if (this->FlagResolveTiles)
+  {
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec", TileFlagsExtension, false);
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Output::Dec",
+      "//VTK::Output::Dec\n#define FX_TILE_FLAGS " + std::to_string(ResolveTileSize) +
+        "\nlayout(r8) uniform writeonly image2D fxAVSMTileMask;",
+      false);
+  }
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::Output::Dec",
     std::string("//VTK::Output::Dec\n") + vtkFXAVSMLightDepth, false);
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::TCoord::Impl",
@@ -926,6 +944,21 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CounterBuffer]);
   glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, CounterBytes, zeros);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  // The capture flags the tiles that get lists, and the resolve runs
+  // there only (exact lists have no resolve: no flags).
+  const bool flag = !this->Exact && this->CullResolveTiles &&
+    vtkFXRenderUtilities::CanFlagTiles(ResolveTileSize) &&
+    vtkFXRenderUtilities::ClearTileMask(
+      this->ResolveTiles, window, this->AtlasSize[0], this->AtlasSize[1]);
+  if (!flag)
+  {
+    vtkFXRenderUtilities::Release(this->ResolveTiles.Mask, window);
+  }
+  if (flag != this->FlagResolveTiles)
+  {
+    this->FlagResolveTiles = flag;
+    this->ShaderStageTime.Modified(); // the casters' shaders change
+  }
 
   {
     // Every fragment counts: no depth test, no culling by depth; nothing
@@ -963,7 +996,9 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
     ren->SetActiveCamera(viewer);
     viewer->UnRegister(this);
   }
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
+  glMemoryBarrier(
+    GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 
   GLuint counter[2] = { 0, 0 }; // fragments, longest list
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CounterBuffer]);
@@ -1065,11 +1100,15 @@ bool vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
     output << "  gl_FragData[" << nodes / 4 + k << "] = vec4(fxTau[" << 4 * k << "], fxTau["
            << 4 * k + 1 << "], fxTau[" << 4 * k + 2 << "], fxTau[" << 4 * k + 3 << "]);\n";
   }
-  std::ostringstream empty; // no fragment: AVSM depths 3e38, optical depths 0
-  for (int k = 0; k < nodes / 2; ++k)
+  // A texel without fragments (the shader's, or the clear's outside the
+  // flagged tiles): AVSM depths 3e38, optical depths 0.
+  const auto emptyValue = [nodes, slices](int target) {
+    return target < nodes / 4 && !slices ? 3e38f : 0.0f;
+  };
+  std::ostringstream empty;
+  for (int k = 0; k < targets; ++k)
   {
-    empty << "    gl_FragData[" << k << "] = vec4(" << (k < nodes / 4 && !slices ? "3e38" : "0.0")
-          << ");\n";
+    empty << "    gl_FragData[" << k << "] = vec4(" << emptyValue(k) << ");\n";
   }
   std::string fs = vtkFXAVSMResolveFS;
   vtkShaderProgram::Substitute(fs, "//VTK::FXAVSMResolve::Empty", empty.str(), false);
@@ -1088,13 +1127,23 @@ bool vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
   {
     return false;
   }
-  if (vtkShaderProgram* program =
-        vtkFXRenderUtilities::ReadyQuad(this->ResolveQuad, window, fs))
+  if (this->FlagResolveTiles)
+  {
+    // Texels of tiles without lists keep the empty curve the clear gives.
+    for (int k = 0; k < targets; ++k)
+    {
+      const float value[4] = { emptyValue(k), emptyValue(k), emptyValue(k), emptyValue(k) };
+      glClearBufferfv(GL_COLOR, k, value);
+    }
+  }
+  if (vtkShaderProgram* program = vtkFXRenderUtilities::ReadyTileProgram(window, fs))
   {
     this->BindBuffers(program);
     program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->StoredFragments));
     this->SetViewUniforms(program);
-    this->ResolveQuad.Helper->Render();
+    const int origin[2] = { 0, 0 };
+    vtkFXRenderUtilities::DrawTiles(
+      this->ResolveTiles, program, window, origin, this->AtlasSize, this->FlagResolveTiles);
   }
   return true;
 }
@@ -1658,7 +1707,7 @@ void vtkFXAVSMPass::AbandonFrame(vtkOpenGLRenderWindow* window)
 void vtkFXAVSMPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->CasterPass->ReleaseGraphicsResources(w);
-  vtkFXRenderUtilities::ReleaseQuad(this->ResolveQuad, w);
+  vtkFXRenderUtilities::ReleaseTilePoints(this->ResolveTiles, w);
   vtkFXRenderUtilities::ReleaseQuad(this->LookUpQuad, w);
   for (auto& t : this->Curves)
   {
@@ -1678,6 +1727,7 @@ void vtkFXAVSMPass::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ShadowMapSize: " << this->ShadowMapSize << "\n";
   os << indent << "SkipBackground: " << this->SkipBackground << "\n";
+  os << indent << "CullResolveTiles: " << this->CullResolveTiles << "\n";
   os << indent << "NumberOfNodes: " << this->NumberOfNodes << " (" << this->Nodes() << " used)\n";
   os << indent << "Exact: " << this->Exact << "\n";
   os << indent << "Representation: "

@@ -70,8 +70,8 @@
  *
  * Cost, per view: the translucent props drawn once more at
  * ShadowMapSize^2, 16 bytes per captured fragment plus 8 per texel (list
- * head and count); the resolve, one pass over the atlas (NumberOfNodes x 8
- * bytes per texel kept) that reads each texel's list about n^2 / 4 times
+ * head and count); the resolve, one pass over the atlas's tiles that hold
+ * lists (CullResolveTiles; NumberOfNodes x 8 bytes per texel kept) that reads each texel's list about n^2 / 4 times
  * for n segments (in order, four per walk; at most 64 inserted exactly,
  * the rest summed into one last segment; of lists over 15000 segments the
  * rest is left out, llvmpipe's loop budget again)
@@ -165,6 +165,23 @@ public:
   vtkSetMacro(Bilinear, bool);
   vtkGetMacro(Bilinear, bool);
   vtkBooleanMacro(Bilinear, bool);
+
+  /**
+   * Resolve only the 8x8-texel tiles of the atlas that hold lists (default
+   * on): the capture flags them with image stores (GL 4.2 and texture
+   * clears, GL 4.4, or their ARB extensions; points 8 pixels wide), the
+   * curve textures are cleared to the empty curve and the resolve is drawn
+   * as one point per flagged tile. Without those features, or with this
+   * off, the resolve runs at every texel. The curves are the same either
+   * way (the particles' resolve at 1024^2: 192 ms every texel, 93 culled,
+   * with a tenth of the atlas's tiles flagged); off is for comparison.
+   */
+  vtkSetMacro(CullResolveTiles, bool);
+  vtkGetMacro(CullResolveTiles, bool);
+  vtkBooleanMacro(CullResolveTiles, bool);
+
+  /** Whether the last frame's resolve ran over the flagged tiles only. */
+  bool GetResolveTilesCulled() const { return this->FlagResolveTiles; }
 
   /**
    * Receiver depth offset towards the light, as a fraction of the visible
@@ -426,6 +443,7 @@ protected:
   bool Exact = false;
   int Representation = AdaptiveNodes;
   bool Bilinear = true;
+  bool CullResolveTiles = true;
   double Bias = 1e-3;
   double BoundingDiameter = 2.0; // this frame's visible props' (FitLightViews)
   double SplatRadius = 1.7320508075688772;
@@ -484,7 +502,10 @@ protected:
   vtkSmartPointer<vtkOpenGLFramebufferObject> ResolveFrameBuffer;
   vtkSmartPointer<vtkTextureObject> Visibility;
   vtkSmartPointer<vtkOpenGLFramebufferObject> LookUpFrameBuffer;
-  vtkFXRenderUtilities::FullScreenQuad ResolveQuad;
+  // The atlas's 8x8 tiles that hold lists (flagged by the capture): the
+  // resolve runs there only (about a tenth of the particles' map).
+  vtkFXRenderUtilities::TilePoints ResolveTiles;
+  bool FlagResolveTiles = false; // this frame's capture flags them
   vtkFXRenderUtilities::FullScreenQuad LookUpQuad;
 
 private:

@@ -10,10 +10,12 @@
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkFXOpenGL.h"
+#include "vtkFXTilePointsVS.h"
 
 #include <algorithm>
 #include <cmath>
@@ -521,6 +523,106 @@ void vtkFXRenderUtilities::ReleaseDepthMask(DepthMask& mask, vtkWindow* window)
   ReleaseQuad(mask.Quad, window);
   Release(mask.Texture, window);
   Release(mask.FrameBuffer, window);
+}
+
+bool vtkFXRenderUtilities::CanFlagTiles(int tileSize)
+{
+  const bool imageStores = IsOpenGLSupported("GL_ARB_shader_image_load_store");
+  const bool textureClears =
+    IsOpenGLSupported("GL_VERSION_4_4") || IsOpenGLSupported("GL_ARB_clear_texture");
+  float pointSizes[2] = { 1.0f, 1.0f };
+  glGetFloatv(GL_POINT_SIZE_RANGE, pointSizes);
+  return imageStores && textureClears && pointSizes[1] >= tileSize;
+}
+
+bool vtkFXRenderUtilities::ClearTileMask(
+  TilePoints& tiles, vtkOpenGLRenderWindow* window, int width, int height)
+{
+  const int t = tiles.TileSize;
+  EnsureTexture(tiles.Mask, window, (width + t - 1) / t, (height + t - 1) / t, R8);
+  if (!tiles.Mask || tiles.Mask->GetHandle() == 0)
+  {
+    return false;
+  }
+  // (Clearing it as a framebuffer's attachment made llvmpipe wait for the
+  // frame's queued draws: the next G-buffer took 40 ms longer.)
+  const unsigned char zero = 0;
+  glClearTexImage(tiles.Mask->GetHandle(), 0, GL_RED, GL_UNSIGNED_BYTE, &zero);
+  return true;
+}
+
+vtkShaderProgram* vtkFXRenderUtilities::ReadyTileProgram(
+  vtkOpenGLRenderWindow* window, const std::string& fragmentShader)
+{
+  return window->GetShaderCache()->ReadyShaderProgram(
+    vtkFXTilePointsVS, fragmentShader.c_str(), "");
+}
+
+void vtkFXRenderUtilities::DrawTiles(TilePoints& tiles, vtkShaderProgram* program,
+  vtkOpenGLRenderWindow* window, const int origin[2], const int size[2], bool flagged)
+{
+  if (!tiles.Points)
+  {
+    tiles.Points = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+  }
+  // A point's square has no rule for samples on its sides, so a
+  // multisampled target gets the triangle over the whole image.
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  const bool points = flagged && tiles.Mask && samples <= 1;
+  program->SetUniformi("fxEveryTile", points ? 0 : 1);
+  tiles.Points->Bind();
+  if (!points)
+  {
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    tiles.Points->Release();
+    return;
+  }
+  const int t = tiles.TileSize;
+  const int count[2] = { (size[0] + t - 1) / t, (size[1] + t - 1) / t };
+  const int padded[2] = { count[0] * t, count[1] * t };
+  tiles.Mask->Activate();
+  program->SetUniformi("fxTileMask", tiles.Mask->GetTextureUnit());
+  program->SetUniformi("fxTileSize", t);
+  program->SetUniformi("fxTilesPerRow", count[0]);
+  program->SetUniform2i("fxPaddedSize", padded);
+  // One point per tile in a viewport padded to whole tiles; the scissor
+  // box is the image (within the caller's, where it has one).
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglViewport savedViewport(state);
+  vtkOpenGLState::ScopedglScissor savedScissor(state);
+  vtkOpenGLState::ScopedglEnableDisable savedScissorTest(state, GL_SCISSOR_TEST);
+  float pointSize = 1.0f;
+  state->vtkglGetFloatv(GL_POINT_SIZE, &pointSize);
+  int box[4] = { origin[0], origin[1], origin[0] + size[0], origin[1] + size[1] };
+  if (state->GetEnumState(GL_SCISSOR_TEST))
+  {
+    int scissor[4];
+    state->vtkglGetIntegerv(GL_SCISSOR_BOX, scissor);
+    box[0] = std::max(box[0], scissor[0]);
+    box[1] = std::max(box[1], scissor[1]);
+    box[2] = std::min(box[2], scissor[0] + scissor[2]);
+    box[3] = std::min(box[3], scissor[1] + scissor[3]);
+  }
+  state->vtkglViewport(origin[0], origin[1], padded[0], padded[1]);
+  state->vtkglScissor(box[0], box[1], std::max(box[2] - box[0], 0), std::max(box[3] - box[1], 0));
+  state->vtkglEnable(GL_SCISSOR_TEST);
+  // (the size the shader writes, and the one GL takes where VTK left
+  // GL_PROGRAM_POINT_SIZE off)
+  state->vtkglPointSize(static_cast<float>(t));
+  glDrawArrays(GL_POINTS, 0, count[0] * count[1]);
+  state->vtkglPointSize(pointSize);
+  tiles.Mask->Deactivate();
+  tiles.Points->Release();
+}
+
+void vtkFXRenderUtilities::ReleaseTilePoints(TilePoints& tiles, vtkWindow* window)
+{
+  Release(tiles.Mask, window);
+  if (tiles.Points)
+  {
+    tiles.Points->ReleaseGraphicsResources();
+  }
 }
 
 bool vtkFXRenderUtilities::RenderTargetScope::SkipWhereDepthIsOne(vtkTextureObject* depth)

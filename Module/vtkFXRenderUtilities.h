@@ -25,6 +25,7 @@ class vtkLight;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkOpenGLVertexArrayObject;
 class vtkRenderWindow;
 class vtkRenderer;
 class vtkRenderState;
@@ -352,6 +353,52 @@ public:
 
   /** Frees the mask's quad, texture and framebuffer (which holds the texture while attached). */
   static void ReleaseDepthMask(DepthMask& mask, vtkWindow* window);
+
+  /**
+   * Drawing over flagged tiles only (see vtkFXTilePointsVS.glsl): an
+   * earlier pass stores into Mask (R8, one texel per tile of TileSize
+   * pixels square, bound as an image) a non-zero value at the tiles that
+   * hold work, and a program built with ReadyTileProgram then runs at
+   * those tiles' pixels only, one point per tile. On a software rasteriser
+   * this skips what branches cannot: every pixel a primitive covers runs.
+   */
+  struct TilePoints
+  {
+    int TileSize = 8;
+    vtkSmartPointer<vtkTextureObject> Mask;
+    vtkSmartPointer<vtkOpenGLVertexArrayObject> Points; // no attributes
+  };
+
+  /**
+   * Whether the current context can flag tiles of `tileSize` pixels: image
+   * stores (GL_ARB_shader_image_load_store, which GLSL 1.50 shaders enable
+   * by name), texture clears (GL 4.4) and points as wide as a tile.
+   */
+  static bool CanFlagTiles(int tileSize);
+
+  /**
+   * Makes `tiles.Mask` the size that covers width x height pixels and
+   * clears it (no tile flagged). Returns false when it cannot be made.
+   */
+  static bool ClearTileMask(
+    TilePoints& tiles, vtkOpenGLRenderWindow* window, int width, int height);
+
+  /** The program of vtkFXTilePointsVS and `fragmentShader` (no inputs). */
+  static vtkShaderProgram* ReadyTileProgram(
+    vtkOpenGLRenderWindow* window, const std::string& fragmentShader);
+
+  /**
+   * Draws `program` (from ReadyTileProgram, bound) over the `size[0]` x
+   * `size[1]` pixels from `origin` (the viewport's corner): over the tiles flagged in
+   * `tiles.Mask` when `flagged` (and the target is not multisampled),
+   * else over all of them as one triangle. Leaves texture units, viewport,
+   * scissor and point size as they were.
+   */
+  static void DrawTiles(TilePoints& tiles, vtkShaderProgram* program,
+    vtkOpenGLRenderWindow* window, const int origin[2], const int size[2], bool flagged);
+
+  /** Frees the mask and the vertex array. */
+  static void ReleaseTilePoints(TilePoints& tiles, vtkWindow* window);
 
 protected:
   vtkFXRenderUtilities() = default;

@@ -7,7 +7,6 @@
 #include "vtkFXToonBands.h"
 #include "vtkFXToonEdgeMaskFS.h"
 #include "vtkFXToonEdgesFS.h"
-#include "vtkFXToonLineTilesVS.h"
 #include "vtkFXToonLinesFS.h"
 
 #include "vtkMath.h"
@@ -17,7 +16,6 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
-#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkRenderState.h"
 #include "vtkCamera.h"
 #include "vtkRenderer.h"
@@ -58,6 +56,7 @@ vtkFXToonPass::vtkFXToonPass()
   // between neighbouring pixels: safe on llvmpipe only without a
   // primitive edge inside the viewport (see FullScreenQuad::OneTriangle).
   this->EdgeQuad.OneTriangle = true;
+  this->LineTiles.TileSize = LineTileSize;
   this->SetDefaultBandThresholds();
 }
 
@@ -215,31 +214,10 @@ void vtkFXToonPass::GetLineWindow(int height, int window[2]) const
 
 bool vtkFXToonPass::CanFlagLineTiles()
 {
-  // The shaders are GLSL 1.50 (VTK's version line) and enable the
-  // extension by name: GL 4.2 alone is not enough.
-  using U = vtkFXRenderUtilities;
-  const bool imageStores = U::IsOpenGLSupported("GL_ARB_shader_image_load_store");
-  const bool textureClears =
-    U::IsOpenGLSupported("GL_VERSION_4_4") || U::IsOpenGLSupported("GL_ARB_clear_texture");
   // (the marks' framebuffer has no colour attachment)
-  const bool noAttachments = U::IsOpenGLSupported("GL_VERSION_4_3") ||
-    U::IsOpenGLSupported("GL_ARB_framebuffer_no_attachments");
-  // (a flagged tile is drawn as a point as wide as the tile)
-  float pointSizes[2] = { 1.0f, 1.0f };
-  glGetFloatv(GL_POINT_SIZE_RANGE, pointSizes);
-  return imageStores && textureClears && noAttachments && pointSizes[1] >= LineTileSize;
-}
-
-void vtkFXToonPass::ClearTileMask(vtkOpenGLRenderWindow* window, const int size[2])
-{
-  const int tiles[2] = { (size[0] + LineTileSize - 1) / LineTileSize,
-    (size[1] + LineTileSize - 1) / LineTileSize };
-  vtkFXRenderUtilities::EnsureTexture(
-    this->TileMask, window, tiles[0], tiles[1], vtkFXRenderUtilities::R8);
-  // (Clearing it as a framebuffer's attachment made llvmpipe wait for the
-  // frame's queued draws: the next G-buffer took 40 ms longer.)
-  const unsigned char zero = 0;
-  glClearTexImage(this->TileMask->GetHandle(), 0, GL_RED, GL_UNSIGNED_BYTE, &zero);
+  const bool noAttachments = vtkFXRenderUtilities::IsOpenGLSupported("GL_VERSION_4_3") ||
+    vtkFXRenderUtilities::IsOpenGLSupported("GL_ARB_framebuffer_no_attachments");
+  return noAttachments && vtkFXRenderUtilities::CanFlagTiles(LineTileSize);
 }
 
 bool vtkFXToonPass::MakeEdgeMask(
@@ -294,7 +272,7 @@ bool vtkFXToonPass::FindEdges(const vtkRenderState* s, vtkOpenGLRenderWindow* wi
       return true;
     }
   }
-  vtkFXRenderUtilities::Release(this->TileMask, window); // no flags kept
+  vtkFXRenderUtilities::Release(this->LineTiles.Mask, window); // no flags kept
   return this->DrawEdgeMarks(s, window, size);
 }
 
@@ -304,7 +282,10 @@ bool vtkFXToonPass::StoreEdgeMarks(
   // Both images start with no mark; the shader stores the marks and flags.
   const unsigned char zero = 0;
   glClearTexImage(this->Edges->GetHandle(), 0, GL_RED, GL_UNSIGNED_BYTE, &zero);
-  this->ClearTileMask(window, size);
+  if (!vtkFXRenderUtilities::ClearTileMask(this->LineTiles, window, size[0], size[1]))
+  {
+    return false;
+  }
   // No colour attachment: the shader writes images. The G-buffer's depth
   // leaves out the pixels without a surface (they have no marks that a
   // covered neighbour does not store).
@@ -322,7 +303,7 @@ bool vtkFXToonPass::StoreEdgeMarks(
   int lineWindow[2];
   this->GetLineWindow(this->OutputRows, lineWindow);
   program->SetUniform2i("fxLineWindow", lineWindow);
-  glBindImageTexture(0, this->TileMask->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
+  glBindImageTexture(0, this->LineTiles.Mask->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
   glBindImageTexture(1, this->Edges->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
   program->SetUniformi("fxTileMask", 0);
   program->SetUniformi("fxEdges", 1);
@@ -453,8 +434,9 @@ std::string vtkFXToonPass::MidpointCode(int first, int last)
   // Wide lines: a loop over the same list (a few hundred midpoints would
   // make the straight-line code too long). It runs to the end: past the
   // second mark fxTake changes nothing, and on llvmpipe a loop whose trip
-  // count differs between neighbouring pixels goes wrong along a quad's
-  // diagonal (FullScreenQuad::OneTriangle; the whole-image quad has one).
+  // count differs between neighbouring pixels goes wrong along a
+  // primitive's inner edge (vtkFXTilePointsVS draws none; this keeps the
+  // lines right whatever draws them).
   code << "  const vec3 midpoints[" << midpoints.size() << "] = vec3[](";
   for (size_t i = 0; i < midpoints.size(); ++i)
   {
@@ -469,44 +451,6 @@ std::string vtkFXToonPass::MidpointCode(int first, int last)
        << "    fxTake(nearest, (marks & int(midpoints[i].z)) != 0, midpoint);\n"
        << "  }\n";
   return code.str();
-}
-
-void vtkFXToonPass::DrawFlaggedTiles(vtkShaderProgram* program, vtkOpenGLRenderWindow* window,
-  const int viewport[4], const int size[2])
-{
-  const int tiles[2] = { (size[0] + LineTileSize - 1) / LineTileSize,
-    (size[1] + LineTileSize - 1) / LineTileSize };
-  const int padded[2] = { tiles[0] * LineTileSize, tiles[1] * LineTileSize };
-  program->SetUniformi("fxTileSize", LineTileSize);
-  program->SetUniformi("fxTilesPerRow", tiles[0]);
-  program->SetUniform2i("fxPaddedSize", padded);
-  // One point per tile (see vtkFXToonLineTilesVS) in a viewport padded to
-  // whole tiles; the scissor box is the image.
-  vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglViewport savedViewport(state);
-  vtkOpenGLState::ScopedglScissor savedScissor(state);
-  vtkOpenGLState::ScopedglEnableDisable savedScissorTest(state, GL_SCISSOR_TEST);
-  float pointSize = 1.0f;
-  state->vtkglGetFloatv(GL_POINT_SIZE, &pointSize);
-  // (within the caller's scissor box, where it has one)
-  int box[4] = { viewport[0], viewport[1], viewport[0] + size[0], viewport[1] + size[1] };
-  if (state->GetEnumState(GL_SCISSOR_TEST))
-  {
-    int scissor[4];
-    state->vtkglGetIntegerv(GL_SCISSOR_BOX, scissor);
-    box[0] = std::max(box[0], scissor[0]);
-    box[1] = std::max(box[1], scissor[1]);
-    box[2] = std::min(box[2], scissor[0] + scissor[2]);
-    box[3] = std::min(box[3], scissor[1] + scissor[3]);
-  }
-  state->vtkglViewport(viewport[0], viewport[1], padded[0], padded[1]);
-  state->vtkglScissor(box[0], box[1], std::max(box[2] - box[0], 0), std::max(box[3] - box[1], 0));
-  state->vtkglEnable(GL_SCISSOR_TEST);
-  // (the size the shader writes, and the one GL takes where VTK left
-  // GL_PROGRAM_POINT_SIZE off)
-  state->vtkglPointSize(static_cast<float>(LineTileSize));
-  glDrawArrays(GL_POINTS, 0, tiles[0] * tiles[1]);
-  state->vtkglPointSize(pointSize);
 }
 
 void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* window)
@@ -529,8 +473,7 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
     this->LineSourceWindow[0] = lineWindow[0];
     this->LineSourceWindow[1] = lineWindow[1];
   }
-  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
-    vtkFXToonLineTilesVS, this->LineSource.c_str(), "");
+  vtkShaderProgram* program = vtkFXRenderUtilities::ReadyTileProgram(window, this->LineSource);
   if (!program)
   {
     vtkErrorMacro("The feature lines' shaders did not build; no lines are drawn.");
@@ -559,27 +502,7 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
     color[i] = static_cast<float>(c >= 0.0 ? std::min(c, 65504.0) : 0.0);
   }
   program->SetUniform3f("fxLineColor", color);
-  vtkTextureObject* mask = this->TilesFlagged ? this->TileMask.Get() : this->Edges.Get();
-  mask->Activate();
-  program->SetUniformi("fxTileMask", mask->GetTextureUnit());
-  // A point's square has no rule for samples on its sides, so a
-  // multisampled target gets the quad over the whole image.
-  GLint samples = 0;
-  glGetIntegerv(GL_SAMPLES, &samples);
-  const bool points = this->TilesFlagged && samples <= 1;
-  program->SetUniformi("fxEveryTile", points ? 0 : 1);
-  this->LineTiles->Bind();
-  if (points)
-  {
-    this->DrawFlaggedTiles(program, window, viewport, size);
-  }
-  else
-  {
-    // One quad over the image (the sampler then reads the edges, unused).
-    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-  }
-  this->LineTiles->Release();
-  mask->Deactivate();
+  vtkFXRenderUtilities::DrawTiles(this->LineTiles, program, window, viewport, size, this->TilesFlagged);
   this->Edges->Deactivate();
 }
 
@@ -590,7 +513,7 @@ void vtkFXToonPass::Render(const vtkRenderState* s)
   {
     // Bands are composite code; the lines' textures go with the lines.
     vtkRenderWindow* window = s->GetRenderer()->GetRenderWindow();
-    vtkFXRenderUtilities::Release(this->TileMask, window);
+    vtkFXRenderUtilities::ReleaseTilePoints(this->LineTiles, window);
     vtkFXRenderUtilities::Release(this->Edges, window);
     vtkFXRenderUtilities::Release(this->EdgeFrameBuffer, window);
     vtkFXRenderUtilities::Release(this->MarkFrameBuffer, window);
@@ -620,8 +543,7 @@ void vtkFXToonPass::ReleaseGraphicsResources(vtkWindow* w)
   vtkFXRenderUtilities::ReleaseQuad(this->EdgeQuad, w);
   vtkFXRenderUtilities::ReleaseDepthMask(this->EdgeMask, w);
   this->EdgeMaskFailed = false;
-  this->LineTiles->ReleaseGraphicsResources();
-  vtkFXRenderUtilities::Release(this->TileMask, w);
+  vtkFXRenderUtilities::ReleaseTilePoints(this->LineTiles, w);
   vtkFXRenderUtilities::Release(this->Edges, w);
   vtkFXRenderUtilities::Release(this->EdgeFrameBuffer, w);
   vtkFXRenderUtilities::Release(this->MarkFrameBuffer, w);

@@ -64,7 +64,6 @@
 
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
-class vtkOpenGLVertexArrayObject;
 class vtkTextureObject;
 
 class VTKFX_EXPORT vtkFXToonPass : public vtkFXEffectPass
@@ -258,11 +257,7 @@ protected:
   bool MakeEdgeMask(vtkOpenGLRenderWindow* window, vtkTextureObject* depth, const int size[2]);
   /** Texel offsets a line pixel reads marks from (first, last) at `height` rows. */
   void GetLineWindow(int height, int window[2]) const;
-  void ClearTileMask(vtkOpenGLRenderWindow* window, const int size[2]);
   void DrawLines(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
-  /** The lines over the flagged tiles only: one point per tile. */
-  void DrawFlaggedTiles(vtkShaderProgram* program, vtkOpenGLRenderWindow* window,
-    const int viewport[4], const int size[2]);
   /**
    * The lines shader's reads of the 2x2 mark blocks of texel offsets
    * first..last, and its pick of the nearest marked side midpoints.
@@ -286,7 +281,6 @@ protected:
   int OutputRows = 1; // the image's rows (tiles of a scaled screenshot included)
   bool TilesFlagged = false; // this frame's edges pass flagged the tiles
   vtkSmartPointer<vtkTextureObject> Edges;
-  vtkSmartPointer<vtkTextureObject> TileMask; // R8, one texel per 8x8 tile: lines reach it
   vtkSmartPointer<vtkOpenGLFramebufferObject> EdgeFrameBuffer; // Edges as colour
   vtkSmartPointer<vtkOpenGLFramebufferObject> MarkFrameBuffer;  // none: image stores
   vtkFXRenderUtilities::FullScreenQuad EdgeQuad;
@@ -294,7 +288,7 @@ protected:
   // marks drawn as colour: without image stores or with CullLineTiles off)
   vtkFXRenderUtilities::DepthMask EdgeMask;
   bool EdgeMaskFailed = false;
-  vtkNew<vtkOpenGLVertexArrayObject> LineTiles; // no attributes: a point per tile, or one strip
+  vtkFXRenderUtilities::TilePoints LineTiles; // 8x8 tiles that lines reach (Mask: R8)
   std::string LineSource; // the lines' fragment shader, generated
   bool LineSourceGathers = true; // UseTextureGather when LineSource was made
   int LineSourceWindow[2] = { 0, 0 };           // for this line window

@@ -56,6 +56,10 @@
       {
         ivec2 fxTexel = clamp(ivec2(gl_FragCoord.xy), ivec2(0), fxAVSMAtlas - 1);
         int fxSlot = fxTexel.y * fxAVSMAtlas.x + fxTexel.x;
+#ifdef FX_TILE_FLAGS
+        // The resolve runs at flagged tiles only (vtkFXTilePointsVS).
+        imageStore(fxAVSMTileMask, fxTexel / FX_TILE_FLAGS, vec4(1.0));
+#endif
         uint fxHead = atomicExchange(fxAVSMHeads[fxSlot], fxIndex);
         fxAVSMNodes[fxIndex] = fxAVSMNode(fxEntry, fxTau, fxHead, fxExit);
         // The frame's longest list: atomically only when this one may be

@@ -56,7 +56,8 @@ uniform int fxAVSMCapacity; // nodes the buffer holds
 // pixels. A walk that stopped at its own list's end (a loop whose exit
 // differs between neighbouring pixels) went wrong on llvmpipe for pixels
 // along a primitive's inner edge; such walks step fxAVSMWalk times and do
-// nothing past the end. The resolve, drawn as one triangle over the map,
-// has no inner edge and stops at the texel's own count (fxAVSMCounts).
+// nothing past the end. The resolve, drawn as one point per tile (or one
+// triangle over the map), has no inner edge and stops at the texel's own
+// count (fxAVSMCounts).
 uniform int fxAVSMWalk;
 const uint fxAVSMEnd = 0xFFFFFFFFu;

@@ -23,7 +23,6 @@
 
 //VTK::FXAVSMLists::Dec
 
-in vec2 texCoord;
 // FX_SLICES: each view's casters' light depths, near and far; the views
 // are squares of fxViewSize texels, FX_ATLAS_COLUMNS to a row.
 uniform vec2 fxViewSliceRange[FX_VIEWS];
@@ -251,10 +250,6 @@ void fxPick(float e, float t, float x)
 
 void main()
 {
-  if (texCoord.x < -1.0)
-  {
-    discard; // never: keeps texCoord in the program
-  }
   ivec2 texel = ivec2(gl_FragCoord.xy);
   uint node = fxAVSMHeads[texel.y * fxAVSMAtlas.x + texel.x];
   if (node == fxAVSMEnd)
@@ -263,9 +258,9 @@ void main()
     //VTK::FXAVSMResolve::Empty
     return;
   }
-  // Walks stop at the texel's own count: the draw is one triangle, so no
-  // primitive edge splits a 2x2 group (see fxAVSMWalk in
-  // vtkFXAVSMLists.glsl); a texel pays for its own list only.
+  // Walks stop at the texel's own count: the draw is one point per 8x8
+  // tile, or one triangle, so no primitive edge splits a 2x2 group (see
+  // fxAVSMWalk in vtkFXAVSMLists.glsl); a texel pays for its own list only.
   // llvmpipe stops a shader's loops after some 65535 iterations, nested
   // loops' together (59 rounds of 1000 steps lost the tail walk after
   // them): at most 15000 segments are walked, and the rounds below and the

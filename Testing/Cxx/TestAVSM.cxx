@@ -45,6 +45,7 @@
 #include "vtkFXAVSMPass.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXPipelinePass.h"
+#include "vtkFXRenderUtilities.h"
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
 
@@ -459,7 +460,9 @@ int CheckStageSwitching(vtkRenderWindow* window)
 
 // Deterministic output: the same casters captured in the opposite order
 // (props and splats reversed, so every texel's list arrives reversed) give
-// bit-identical curves and visibility for AVSM-4, -8 and -16. The casters:
+// bit-identical curves and visibility for AVSM-4, -8 and -16; so does the
+// resolve at every texel (CullResolveTiles off) against the one at the
+// flagged tiles (where the context can flag them). The casters:
 // 40 overlapping splats, one of them twice, and two identical slabs, so
 // lists are longer than one round of the resolve's selection takes (4
 // segments) and hold identical segments.
@@ -478,8 +481,10 @@ int CheckArrivalOrder(vtkRenderWindow* window)
   centers.push_back(centers[7]);
   for (int nodes : { 4, 8, 16 })
   {
-    std::vector<std::vector<float>> results[2];
-    for (int order = 0; order < 2; ++order)
+    // 0: in order, 1: reversed, 2: in order, every texel resolved
+    std::vector<std::vector<float>> results[3];
+    bool culled[3] = { false, false, false };
+    for (int order = 0; order < 3; ++order)
     {
       auto points = centers;
       std::vector<vtkSmartPointer<vtkActor>> casters = { Splats(points, 0.5, 0.3),
@@ -490,7 +495,9 @@ int CheckArrivalOrder(vtkRenderWindow* window)
         casters = { Quad(-10, 0, 0.6, 0.4), Quad(-10, 0, 0.6, 0.4), Splats(points, 0.5, 0.3) };
       }
       auto avsm = MakeAVSM(nodes, false, true);
+      avsm->SetCullResolveTiles(order != 2);
       results[order].push_back(Visibility(window, avsm, casters, true));
+      culled[order] = avsm->GetResolveTilesCulled();
       for (int k = 0; k < avsm->GetNumberOfCurveTextures(); ++k)
       {
         results[order].push_back(vtkFXTest::Download(avsm->GetCurveTexture(k), 4));
@@ -525,19 +532,28 @@ int CheckArrivalOrder(vtkRenderWindow* window)
     {
       full += lastDepths[4 * texel + 3] < 1e30f ? 1 : 0;
     }
-    size_t differ = 0;
-    for (size_t r = 0; r < results[0].size(); ++r)
+    size_t differ[3] = { 0, 0, 0 };
+    for (int other : { 1, 2 })
     {
-      FX_CHECK(results[0][r].size() == results[1][r].size() && !results[0][r].empty(),
-        "AVSM-" << nodes << ": missing output " << r);
-      differ += std::memcmp(results[0][r].data(), results[1][r].data(),
-                  results[0][r].size() * sizeof(float)) != 0 ? 1 : 0;
+      for (size_t r = 0; r < results[0].size(); ++r)
+      {
+        FX_CHECK(results[0][r].size() == results[other][r].size() && !results[0][r].empty(),
+          "AVSM-" << nodes << ": missing output " << r);
+        differ[other] += std::memcmp(results[0][r].data(), results[other][r].data(),
+                           results[0][r].size() * sizeof(float)) != 0 ? 1 : 0;
+      }
     }
-    std::cout << "AVSM-" << nodes << ", casters in reverse order: " << differ << " of "
-              << results[0].size() << " outputs differ; " << full << " texels use all " << nodes
-              << " nodes" << std::endl;
+    std::cout << "AVSM-" << nodes << ", casters in reverse order: " << differ[1] << " of "
+              << results[0].size() << " outputs differ; every texel resolved against "
+              << (culled[0] ? "flagged tiles only: " : "every texel (no tile flags here): ")
+              << differ[2] << " differ; " << full << " texels use all " << nodes << " nodes"
+              << std::endl;
     FX_CHECK(full > 100, "AVSM-" << nodes << ": only " << full << " texels with full curves");
-    FX_CHECK(differ == 0, "AVSM-" << nodes << " depends on the order fragments arrive in");
+    FX_CHECK(differ[1] == 0, "AVSM-" << nodes << " depends on the order fragments arrive in");
+    FX_CHECK(differ[2] == 0, "AVSM-" << nodes << ": the resolve over flagged tiles differs");
+    FX_CHECK(culled[0] == culled[1] && !culled[2] &&
+        culled[0] == vtkFXRenderUtilities::CanFlagTiles(8),
+      "AVSM-" << nodes << ": tiles culled " << culled[0] << culled[1] << culled[2]);
   }
   return EXIT_SUCCESS;
 }
