@@ -21,7 +21,7 @@
 // textureGather (GL 4.0 / ARB_gpu_shader5) where the context has it.
 // With FX_TILE_MASK (image stores: GL 4.2 / ARB_shader_image_load_store) a
 // marked pixel also flags, in fxTileMask, the FX_TILE x FX_TILE tiles of
-// the pixels whose lines can reach it (vtkFXToonLineTilesVS draws only
+// the pixels whose lines can reach it (vtkFXTilePointsVS draws only
 // those), and the marks themselves are image stores into fxEdges (cleared
 // to no mark): then the pass needs to run at covered pixels only (the
 // G-buffer's depth test rejects the rest before the shader), because a
