@@ -732,7 +732,7 @@ void vtkFXAVSMPass::BindBuffers(vtkShaderProgram* program)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, this->Buffers[i]);
   }
   program->SetUniform2i("fxAVSMAtlas", this->AtlasSize);
-  if (program->IsUniformUsed("fxAVSMTileMask"))
+  if (program->IsUniformUsed("fxAVSMTileMask") && this->ResolveTiles.Mask)
   {
     glBindImageTexture(
       0, this->ResolveTiles.Mask->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
@@ -954,6 +954,7 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
   {
     vtkFXRenderUtilities::Release(this->ResolveTiles.Mask, window);
   }
+  this->ResolveTilesCulled = false; // (until a resolve draws them)
   if (flag != this->FlagResolveTiles)
   {
     this->FlagResolveTiles = flag;
@@ -997,8 +998,9 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
     viewer->UnRegister(this);
   }
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
-  glMemoryBarrier(
-    GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  // (the resolve reads the tile flags; the next capture clears them)
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
+    GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 
   GLuint counter[2] = { 0, 0 }; // fragments, longest list
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CounterBuffer]);
@@ -1142,7 +1144,7 @@ bool vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
     program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->StoredFragments));
     this->SetViewUniforms(program);
     const int origin[2] = { 0, 0 };
-    vtkFXRenderUtilities::DrawTiles(
+    this->ResolveTilesCulled = vtkFXRenderUtilities::DrawTiles(
       this->ResolveTiles, program, window, origin, this->AtlasSize, this->FlagResolveTiles);
   }
   return true;

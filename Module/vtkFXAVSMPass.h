@@ -70,8 +70,9 @@
  *
  * Cost, per view: the translucent props drawn once more at
  * ShadowMapSize^2, 16 bytes per captured fragment plus 8 per texel (list
- * head and count); the resolve, one pass over the atlas's tiles that hold
- * lists (CullResolveTiles; NumberOfNodes x 8 bytes per texel kept) that reads each texel's list about n^2 / 4 times
+ * head and count); the resolve, one pass over the atlas's tiles that
+ * hold lists (CullResolveTiles; NumberOfNodes x 8 bytes per texel kept)
+ * that reads each texel's list about n^2 / 4 times
  * for n segments (in order, four per walk; at most 64 inserted exactly,
  * the rest summed into one last segment; of lists over 15000 segments the
  * rest is left out, llvmpipe's loop budget again)
@@ -168,8 +169,9 @@ public:
 
   /**
    * Resolve only the 8x8-texel tiles of the atlas that hold lists (default
-   * on): the capture flags them with image stores (GL 4.2 and texture
-   * clears, GL 4.4, or their ARB extensions; points 8 pixels wide), the
+   * on): the capture flags them with image stores
+   * (GL_ARB_shader_image_load_store) and texture clears (GL 4.4 or
+   * GL_ARB_clear_texture; points 8 pixels wide), the
    * curve textures are cleared to the empty curve and the resolve is drawn
    * as one point per flagged tile. Without those features, or with this
    * off, the resolve runs at every texel. The curves are the same either
@@ -180,8 +182,11 @@ public:
   vtkGetMacro(CullResolveTiles, bool);
   vtkBooleanMacro(CullResolveTiles, bool);
 
-  /** Whether the last frame's resolve ran over the flagged tiles only. */
-  bool GetResolveTilesCulled() const { return this->FlagResolveTiles; }
+  /**
+   * Whether the last capture's resolve ran over the flagged tiles only
+   * (false after a capture without a resolve: exact lists).
+   */
+  bool GetResolveTilesCulled() const { return this->ResolveTilesCulled; }
 
   /**
    * Receiver depth offset towards the light, as a fraction of the visible
@@ -505,7 +510,8 @@ protected:
   // The atlas's 8x8 tiles that hold lists (flagged by the capture): the
   // resolve runs there only (about a tenth of the particles' map).
   vtkFXRenderUtilities::TilePoints ResolveTiles;
-  bool FlagResolveTiles = false; // this frame's capture flags them
+  bool FlagResolveTiles = false;   // this frame's capture flags them
+  bool ResolveTilesCulled = false; // the last resolve drew the flagged tiles only
   vtkFXRenderUtilities::FullScreenQuad LookUpQuad;
 
 private:

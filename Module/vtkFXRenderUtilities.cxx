@@ -558,7 +558,7 @@ vtkShaderProgram* vtkFXRenderUtilities::ReadyTileProgram(
     vtkFXTilePointsVS, fragmentShader.c_str(), "");
 }
 
-void vtkFXRenderUtilities::DrawTiles(TilePoints& tiles, vtkShaderProgram* program,
+bool vtkFXRenderUtilities::DrawTiles(TilePoints& tiles, vtkShaderProgram* program,
   vtkOpenGLRenderWindow* window, const int origin[2], const int size[2], bool flagged)
 {
   if (!tiles.Points)
@@ -576,7 +576,7 @@ void vtkFXRenderUtilities::DrawTiles(TilePoints& tiles, vtkShaderProgram* progra
   {
     glDrawArrays(GL_TRIANGLES, 0, 3);
     tiles.Points->Release();
-    return;
+    return false;
   }
   const int t = tiles.TileSize;
   const int count[2] = { (size[0] + t - 1) / t, (size[1] + t - 1) / t };
@@ -614,6 +614,7 @@ void vtkFXRenderUtilities::DrawTiles(TilePoints& tiles, vtkShaderProgram* progra
   state->vtkglPointSize(pointSize);
   tiles.Mask->Deactivate();
   tiles.Points->Release();
+  return true;
 }
 
 void vtkFXRenderUtilities::ReleaseTilePoints(TilePoints& tiles, vtkWindow* window)

@@ -392,9 +392,10 @@ public:
    * `size[1]` pixels from `origin` (the viewport's corner): over the tiles flagged in
    * `tiles.Mask` when `flagged` (and the target is not multisampled),
    * else over all of them as one triangle. Leaves texture units, viewport,
-   * scissor and point size as they were.
+   * scissor and point size as they were. Returns whether it drew the
+   * flagged tiles only.
    */
-  static void DrawTiles(TilePoints& tiles, vtkShaderProgram* program,
+  static bool DrawTiles(TilePoints& tiles, vtkShaderProgram* program,
     vtkOpenGLRenderWindow* window, const int origin[2], const int size[2], bool flagged);
 
   /** Frees the mask and the vertex array. */
