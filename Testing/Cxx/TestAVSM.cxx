@@ -560,6 +560,57 @@ int CheckArrivalOrder(vtkRenderWindow* window)
 
 }
 
+// The resolve over flagged tiles against the resolve at every texel where
+// tiles cross views and the atlas's edge: a point light's six views of
+// 100 texels (not a multiple of the 8-texel tile), splats and a slab over
+// part of the ground. Visibility and every curve texture byte for byte.
+int CheckTilesAcrossViews(vtkRenderWindow* window)
+{
+  std::vector<std::array<double, 3>> centers;
+  for (int i = 0; i < 12; ++i)
+  {
+    centers.push_back({ -1.5 + 0.25 * i, 0.3 * std::sin(i), 1.0 + 0.1 * i });
+  }
+  std::vector<std::vector<float>> results[2];
+  bool culled[2] = { false, false };
+  for (int cull = 0; cull < 2; ++cull)
+  {
+    auto avsm = MakeAVSM(8, false, true);
+    avsm->SetShadowMapSize(100);
+    avsm->SetCullResolveTiles(cull == 1);
+    results[cull].push_back(Visibility(window, avsm,
+      { Splats(centers, 0.4, 0.5), Quad(-10, 0, 0.5, 0.3) }, false, 1, 4.0, 90.0));
+    culled[cull] = avsm->GetResolveTilesCulled();
+    for (int k = 0; k < avsm->GetNumberOfCurveTextures(); ++k)
+    {
+      results[cull].push_back(vtkFXTest::Download(avsm->GetCurveTexture(k), 4));
+    }
+  }
+  size_t differ = 0;
+  for (size_t r = 0; r < results[0].size(); ++r)
+  {
+    FX_CHECK(r < results[1].size() && results[0][r].size() == results[1][r].size() &&
+        !results[0][r].empty(), "tiles across views: missing output " << r);
+    differ += std::memcmp(results[0][r].data(), results[1][r].data(),
+                results[0][r].size() * sizeof(float)) != 0 ? 1 : 0;
+  }
+  // (texels with a curve: results[0][1] holds the first four node depths)
+  size_t withCurve = 0;
+  for (size_t texel = 0; texel < results[0][1].size() / 4; ++texel)
+  {
+    withCurve += results[0][1][4 * texel] < 1e30f ? 1 : 0;
+  }
+  std::cout << "point light, six views of 100 texels: flagged tiles only ("
+            << (culled[1] ? "culled" : "not culled here") << ") against every texel: " << differ
+            << " of " << results[0].size() << " outputs differ; " << withCurve
+            << " texels with a curve" << std::endl;
+  FX_CHECK(withCurve > 500, "tiles across views: only " << withCurve << " texels with a curve");
+  FX_CHECK(differ == 0, "the resolve over flagged tiles differs across views");
+  FX_CHECK(!culled[0] && culled[1] == vtkFXRenderUtilities::CanFlagTiles(8),
+    "tiles across views: culled " << culled[0] << culled[1]);
+  return EXIT_SUCCESS;
+}
+
 // Two directional lights over the ground and a slab of opacity 0.3 at
 // z = 1 over x < 0: A straight down (intensity 0.5), B from 45 degrees
 // towards -x (intensity 0.4, ShadowAttenuation 0.5), both casting. The
@@ -1520,6 +1571,7 @@ int TestAVSM(int, char*[])
     "splat self-shadowing without an opaque prop");
   FX_CHECK(CheckStageSwitching(window) == EXIT_SUCCESS, "frames with and without opaque props");
   FX_CHECK(CheckArrivalOrder(window) == EXIT_SUCCESS, "order independence");
+  FX_CHECK(CheckTilesAcrossViews(window) == EXIT_SUCCESS, "flagged tiles across views");
   // Four splats whose chords overlap along the light (scale 0.6, centres
   // 0.5 apart, spheres 2.1 across): 8 entries and exits, which AVSM-16
   // keeps exactly.
