@@ -527,6 +527,8 @@ void vtkFXRenderUtilities::ReleaseDepthMask(DepthMask& mask, vtkWindow* window)
 
 bool vtkFXRenderUtilities::CanFlagTiles(int tileSize)
 {
+  // The shaders are GLSL 1.50 (VTK's version line) and enable the
+  // extension by name: GL 4.2 alone is not enough.
   const bool imageStores = IsOpenGLSupported("GL_ARB_shader_image_load_store");
   const bool textureClears =
     IsOpenGLSupported("GL_VERSION_4_4") || IsOpenGLSupported("GL_ARB_clear_texture");
