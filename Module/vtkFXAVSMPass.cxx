@@ -30,6 +30,8 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkPixelBufferObject.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
@@ -48,6 +50,7 @@
 #include "vtkFXOpenGL.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <iterator>
@@ -227,6 +230,20 @@ bool vtkFXAVSMPass::HasWork(const vtkFXSceneInfo& scene)
   this->Casters.clear();
   std::copy_if(scene.TranslucentViewProps.begin(), scene.TranslucentViewProps.end(),
     std::back_inserter(this->Casters), CanCast);
+  // Where the look-up's receivers can be (CullLookUp): nullptr bounds, or
+  // none, leave nothing out.
+  this->ReceiverBounds.clear();
+  for (const auto* props : { &scene.OpaqueProps, &scene.ForwardOpaqueProps })
+  {
+    for (vtkProp* prop : *props)
+    {
+      const double* b = prop->GetBounds();
+      const double everywhere[6] = { -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
+        VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+      this->ReceiverBounds.emplace_back();
+      std::copy(b ? b : everywhere, (b ? b : everywhere) + 6, this->ReceiverBounds.back().begin());
+    }
+  }
   this->CastingLights.clear();
   for (size_t i = 0; i < scene.Lights.size(); ++i)
   {
@@ -632,12 +649,78 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
     ((views + this->AtlasColumns - 1) / this->AtlasColumns) * this->ShadowMapSize;
 }
 
+namespace
+{
+// How far the splats of `splats` reach from their centres, in the
+// coordinates of `matrix` (their actor's or assembly path's): a sphere of
+// `radius` times a splat's scale (the scale array's value, through the
+// scale function when there is one, times the scale factor).
+double SplatsReach(vtkPointGaussianMapper* splats, vtkMatrix4x4* matrix, double radius)
+{
+  double scale = 1.0;
+  vtkDataSet* input = splats->GetInput();
+  vtkDataArray* values = input && splats->GetScaleArray()
+    ? input->GetPointData()->GetArray(splats->GetScaleArray())
+    : nullptr;
+  if (values && values->GetNumberOfTuples() > 0)
+  {
+    const int component =
+      std::min(std::max(0, splats->GetScaleArrayComponent()), values->GetNumberOfComponents() - 1);
+    const double* range = values->GetRange(component);
+    scale = std::max(std::fabs(range[0]), std::fabs(range[1]));
+    if (vtkPiecewiseFunction* function = splats->GetScaleFunction())
+    {
+      scale = 0.0;
+      for (int i = 0; i < function->GetSize(); ++i)
+      {
+        double node[4];
+        function->GetNodeValue(i, node);
+        scale = std::max(scale, std::fabs(node[1]));
+      }
+    }
+  }
+  double stretch = matrix ? 0.0 : 1.0; // the longest axis the matrix scales
+  for (int c = 0; matrix && c < 3; ++c)
+  {
+    stretch = std::max(stretch,
+      std::sqrt(matrix->GetElement(0, c) * matrix->GetElement(0, c) +
+        matrix->GetElement(1, c) * matrix->GetElement(1, c) +
+        matrix->GetElement(2, c) * matrix->GetElement(2, c)));
+  }
+  const double reach = radius * scale * std::fabs(splats->GetScaleFactor()) * stretch;
+  return std::isfinite(reach) ? reach : VTK_DOUBLE_MAX;
+}
+}
+
+double vtkFXAVSMPass::SplatReach(vtkProp* prop) const
+{
+  // VTK's bounds of splats hold their centres only. Down to the parts of
+  // assemblies, as CaptureKey walks them.
+  double reach = 0.0;
+  vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop);
+  prop->InitPathTraversal();
+  while (vtkAssemblyPath* path = prop->GetNextPath())
+  {
+    vtkActor* actor = vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp());
+    if (auto* splats = actor ? vtkPointGaussianMapper::SafeDownCast(actor->GetMapper()) : nullptr)
+    {
+      vtkMatrix4x4* matrix = actor == prop3D ? prop3D->GetMatrix() : path->GetLastNode()->GetMatrix();
+      reach = std::max(reach, SplatsReach(splats, matrix, this->SplatRadius));
+    }
+  }
+  return reach;
+}
+
 void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
 {
   // The casters' bounds seen from the light, in light depth (0..1, see
   // vtkFXAVSMLightDepth.glsl). A box reaching behind a spot or point light
   // (the light inside the data) starts at the near plane.
   double lo = 1.0, hi = 0.0;
+  double* box = view.ShadowedBox;
+  box[0] = box[2] = box[4] = 1.0;
+  box[1] = box[3] = -1.0;
+  box[5] = 1.0;
   vtkNew<vtkMatrix4x4> toClip;
   vtkMatrix4x4::Multiply4x4(view.Projection, view.Camera->GetViewTransformMatrix(), toClip);
   for (vtkProp* prop : this->Casters)
@@ -651,6 +734,18 @@ void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
     }
     lo = std::min(lo, behind > 0 ? 0.0 : LightDepthFromNDC(view, ndcMin[2]));
     hi = std::max(hi, LightDepthFromNDC(view, ndcMax[2]));
+    // What it can shadow.
+    const double reach = this->SplatReach(prop);
+    const double reached[6] = { b[0] - reach, b[1] + reach, b[2] - reach, b[3] + reach,
+      b[4] - reach, b[5] + reach };
+    const int reachedBehind = vtkFXRenderUtilities::ProjectBox(reached, &toClip->Element[0][0], ndcMin, ndcMax);
+    // A box reaching behind the light may shadow anything in its view.
+    for (int a = 0; a < 3; ++a)
+    {
+      box[2 * a] = std::min(box[2 * a], reachedBehind > 0 ? -1.0 : std::max(-1.0, ndcMin[a]));
+      box[2 * a + 1] =
+        std::max(box[2 * a + 1], a == 2 || reachedBehind > 0 ? 1.0 : std::min(1.0, ndcMax[a]));
+    }
   }
   view.SliceRange[0] = static_cast<float>(std::max(0.0, std::min(lo, hi)));
   view.SliceRange[1] = static_cast<float>(std::min(1.0, std::max(lo, hi)));
@@ -1320,6 +1415,173 @@ void vtkFXAVSMPass::ComputeViewToLight(vtkOpenGLRenderer* ren)
   }
 }
 
+namespace
+{
+using Point = std::array<double, 3>;
+using Polygon = std::vector<Point>;
+using Plane = std::array<double, 4>; // inside: a x + b y + c z + d >= 0
+
+double Side(const Plane& plane, const Point& p)
+{
+  return plane[0] * p[0] + plane[1] * p[1] + plane[2] * p[2] + plane[3];
+}
+
+// Sutherland and Hodgman's clip of a convex polygon by a half-space.
+Polygon ClipPolygon(const Polygon& polygon, const Plane& plane)
+{
+  Polygon kept;
+  for (size_t i = 0; i < polygon.size(); ++i)
+  {
+    const Point& a = polygon[i];
+    const Point& b = polygon[(i + 1) % polygon.size()];
+    const double sa = Side(plane, a);
+    const double sb = Side(plane, b);
+    if (sa >= 0.0)
+    {
+      kept.push_back(a);
+    }
+    if ((sa >= 0.0) != (sb >= 0.0))
+    {
+      const double t = sa / (sa - sb);
+      kept.push_back({ a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2]) });
+    }
+  }
+  return kept;
+}
+
+// The six faces of a box given by its corners (corner i at x = i & 1,
+// y = (i >> 1) & 1, z = (i >> 2) & 1), each in order around it.
+std::vector<Polygon> BoxFaces(const Point corners[8])
+{
+  static const int faces[6][4] = { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 }, { 2, 3, 7, 6 },
+    { 0, 1, 3, 2 }, { 4, 5, 7, 6 } };
+  std::vector<Polygon> polygons;
+  for (const auto& face : faces)
+  {
+    polygons.push_back({ corners[face[0]], corners[face[1]], corners[face[2]], corners[face[3]] });
+  }
+  return polygons;
+}
+
+// The corners of the intersection of two convex bodies, each given by its
+// faces and the half-spaces that bound it: every face of one clipped by the
+// other's half-spaces.
+void AddIntersectionCorners(const std::vector<Polygon>& facesA, const std::vector<Plane>& planesA,
+  const std::vector<Polygon>& facesB, const std::vector<Plane>& planesB, std::vector<Point>& corners)
+{
+  const auto clipAll = [&corners](const std::vector<Polygon>& faces, const std::vector<Plane>& planes) {
+    for (Polygon polygon : faces)
+    {
+      for (const Plane& plane : planes)
+      {
+        polygon = ClipPolygon(polygon, plane);
+      }
+      corners.insert(corners.end(), polygon.begin(), polygon.end());
+    }
+  };
+  clipAll(facesA, planesB);
+  clipAll(facesB, planesA);
+}
+}
+
+void vtkFXAVSMPass::ComputeShadowedPixels(
+  vtkOpenGLRenderer* ren, int width, int height, int rect[4]) const
+{
+  // Each view's ShadowedBox, two texels wider (a bilinear look-up reads
+  // half a texel around its point), in world coordinates, cut by each
+  // receiver's bounds (a tilted ground would otherwise carry the box down
+  // to its lowest corner), then seen by the viewer: the pieces' corners
+  // bound their image, unless one reaches the viewer's plane.
+  rect[0] = width;
+  rect[1] = height;
+  rect[2] = 0;
+  rect[3] = 0;
+  vtkCamera* camera = ren->GetActiveCamera();
+  vtkNew<vtkMatrix4x4> worldToViewer;
+  vtkMatrix4x4::Multiply4x4(
+    camera->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1.0, 1.0),
+    camera->GetViewTransformMatrix(), worldToViewer);
+  const double margin = 4.0 / this->ShadowMapSize;
+  std::vector<Point> corners;
+  for (const LightView& view : this->Views)
+  {
+    const double* box = view.ShadowedBox;
+    if (!(box[0] <= box[1] && box[2] <= box[3] && box[4] <= box[5]))
+    {
+      continue; // no caster in its view
+    }
+    const double region[6] = { std::max(-1.0, box[0] - margin), std::min(1.0, box[1] + margin),
+      std::max(-1.0, box[2] - margin), std::min(1.0, box[3] + margin), box[4], box[5] };
+    vtkNew<vtkMatrix4x4> worldToLight;
+    vtkMatrix4x4::Multiply4x4(view.Projection, view.Camera->GetViewTransformMatrix(), worldToLight);
+    vtkNew<vtkMatrix4x4> lightToWorld;
+    vtkMatrix4x4::Invert(worldToLight, lightToWorld);
+    // Its corners (in front of the light: w > 0) and bounding planes:
+    // x >= x0 w is (row 0 - x0 row 3) . (p, 1) >= 0, and so on.
+    Point prism[8];
+    for (int i = 0; i < 8; ++i)
+    {
+      double p[4] = { region[i & 1], region[2 + ((i >> 1) & 1)], region[4 + ((i >> 2) & 1)], 1.0 };
+      lightToWorld->MultiplyPoint(p, p);
+      prism[i] = { p[0] / p[3], p[1] / p[3], p[2] / p[3] };
+    }
+    std::vector<Plane> prismPlanes;
+    for (int a = 0; a < 3; ++a)
+    {
+      for (int end = 0; end < 2; ++end)
+      {
+        const double sign = end == 0 ? 1.0 : -1.0;
+        Plane plane;
+        for (int c = 0; c < 4; ++c)
+        {
+          plane[c] =
+            sign * (worldToLight->GetElement(a, c) - region[2 * a + end] * worldToLight->GetElement(3, c));
+        }
+        prismPlanes.push_back(plane);
+      }
+    }
+    const std::vector<Polygon> prismFaces = BoxFaces(prism);
+    for (const auto& b : this->ReceiverBounds)
+    {
+      if (!(b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5]))
+      {
+        continue;
+      }
+      Point receiver[8];
+      for (int i = 0; i < 8; ++i)
+      {
+        receiver[i] = { b[i & 1], b[2 + ((i >> 1) & 1)], b[4 + ((i >> 2) & 1)] };
+      }
+      const std::vector<Plane> receiverPlanes = { { 1, 0, 0, -b[0] }, { -1, 0, 0, b[1] },
+        { 0, 1, 0, -b[2] }, { 0, -1, 0, b[3] }, { 0, 0, 1, -b[4] }, { 0, 0, -1, b[5] } };
+      AddIntersectionCorners(prismFaces, prismPlanes, BoxFaces(receiver), receiverPlanes, corners);
+    }
+  }
+  for (const Point& corner : corners)
+  {
+    double p[4] = { corner[0], corner[1], corner[2], 1.0 };
+    worldToViewer->MultiplyPoint(p, p);
+    const double x = p[0] / p[3];
+    const double y = p[1] / p[3];
+    if (!(p[3] > 0.0) || !std::isfinite(x) || !std::isfinite(y))
+    {
+      // at or behind the viewer's plane: anywhere on the screen
+      rect[0] = rect[1] = 0;
+      rect[2] = width;
+      rect[3] = height;
+      return;
+    }
+    const auto pixel = [](double ndc, int size, bool up) {
+      const double at = 0.5 * (std::min(std::max(ndc, -2.0), 2.0) + 1.0) * size;
+      return up ? static_cast<int>(std::ceil(at)) + 1 : static_cast<int>(std::floor(at)) - 1;
+    };
+    rect[0] = std::min(rect[0], std::max(0, pixel(x, width, false)));
+    rect[1] = std::min(rect[1], std::max(0, pixel(y, height, false)));
+    rect[2] = std::max(rect[2], std::min(width, pixel(x, width, true)));
+    rect[3] = std::max(rect[3], std::min(height, pixel(y, height, true)));
+  }
+}
+
 bool vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window)
 {
   vtkTextureObject* depth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
@@ -1348,21 +1610,33 @@ bool vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window
   this->LookUpQuad.AtFarPlane = surfaces != nullptr;
   vtkShaderProgram* program =
     vtkFXRenderUtilities::ReadyQuad(this->LookUpQuad, window, fs);
-  if (!program || surfaces)
+  // And where no caster can shadow (CullLookUp: the scissor box).
+  const int width = static_cast<int>(depth->GetWidth());
+  const int height = static_cast<int>(depth->GetHeight());
+  int rect[4] = { 0, 0, width, height };
+  if (this->CullLookUp)
   {
-    const float unshadowed[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
-    vtkFXRenderUtilities::ClearTargets(1, unshadowed);
+    this->ComputeShadowedPixels(ren, width, height, rect);
   }
+  std::copy(rect, rect + 4, this->LookUpPixels);
+  const bool culled = rect[0] > 0 || rect[1] > 0 || rect[2] < width || rect[3] < height;
+  const float unshadowed[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
   if (!program)
   {
+    vtkFXRenderUtilities::ClearTargets(1, unshadowed);
     return true;
   }
+  vtkFXRenderUtilities::ScissorScope scissor(
+    window->GetState(), rect, surfaces || culled ? unshadowed : nullptr);
   target.SkipWhereDepthIsOne(surfaces);
   depth->Activate();
   program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());
   vtkFXRenderUtilities::SetFrustumRayUniforms(program, ren);
   this->SetCurveUniforms(program);
-  this->LookUpQuad.Helper->Render();
+  if (rect[0] < rect[2] && rect[1] < rect[3])
+  {
+    this->LookUpQuad.Helper->Render();
+  }
   depth->Deactivate();
   this->ReleaseCurveUnits();
   return true;
@@ -1729,6 +2003,7 @@ void vtkFXAVSMPass::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ShadowMapSize: " << this->ShadowMapSize << "\n";
   os << indent << "SkipBackground: " << this->SkipBackground << "\n";
+  os << indent << "CullLookUp: " << this->CullLookUp << "\n";
   os << indent << "CullResolveTiles: " << this->CullResolveTiles << "\n";
   os << indent << "NumberOfNodes: " << this->NumberOfNodes << " (" << this->Nodes() << " used)\n";
   os << indent << "Exact: " << this->Exact << "\n";
@@ -1745,3 +2020,4 @@ void vtkFXAVSMPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CapturedFragments: " << this->CapturedFragments << " (capacity "
      << this->Capacity << ")\n";
 }
+

@@ -77,7 +77,9 @@
  * the rest summed into one last segment; of lists over 15000 segments the
  * rest is left out, llvmpipe's loop budget again)
  * and inserts each segment into the curve; the look-up, one full-resolution pass of 1 (4
- * bilinear) curve reads per casting light, or a walk of the lists (Exact).
+ * bilinear) curve reads per casting light, or a walk of the lists (Exact),
+ * over the pixels that hold a surface (SkipBackground) inside the
+ * rectangle where casters can shadow (CullLookUp).
  * A positional light without a cone inside the props costs six views.
  * A frame whose casters, casting lights and settings are those of the
  * frame before (the camera alone moved) keeps that frame's curves or lists
@@ -95,6 +97,7 @@
 #include "vtkWeakPointer.h" // for the buffers' window
 #include "vtkWrappingHints.h" // for VTK_WRAPEXCLUDE
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -268,6 +271,30 @@ public:
   vtkBooleanMacro(SkipBackground, bool);
 
   /**
+   * Look the shadows up only inside the screen rectangle that the region
+   * the casters can shadow projects to (default on): in each light view,
+   * the casters' extent across the view, two texels wider, from their
+   * nearest depth to the view's far plane, seen by the viewer; the whole
+   * screen when that region reaches the viewer's plane. Each view's region
+   * is cut by each opaque prop's bounds first, so a large tilted ground
+   * does not carry it to its lowest corner; splats count with their
+   * spheres (SplatRadius times their scale), which VTK's bounds leave out.
+   * Pixels outside are unshadowed without running the shader. The result
+   * is the same either way; off is for comparison. (AVSM-8, 1280x720,
+   * three alternating runs: look-up 32 -> 23 ms on scene:particles, 30 ->
+   * 21 on scene:cloud, 29 -> 11 on scene:isoshadow.)
+   */
+  vtkSetMacro(CullLookUp, bool);
+  vtkGetMacro(CullLookUp, bool);
+  vtkBooleanMacro(CullLookUp, bool);
+
+  /**
+   * The pixels (x0, y0, x1, y1, ends excluded) the last look-up ran over:
+   * the whole target unless CullLookUp left some out.
+   */
+  const int* GetLookUpPixels() const { return this->LookUpPixels; }
+
+  /**
    * Keep the shadow maps while nothing they are made from changes (default
    * on): the casters (each part's transform, property, textures and their
    * images, shader property and uniforms, mapper, clipping planes, splat
@@ -397,6 +424,10 @@ protected:
     bool Perspective = false;                 // a spot or point light's
     double NearFar[2] = { 1.0, 3.0 };         // its depth range
     float SliceRange[2] = { 0.0f, 1.0f };     // this frame's casters' light depths
+    // The region its casters can shadow, in its normalized device
+    // coordinates: their x, y range (within the view) and from their
+    // nearest depth to the far plane (xmin, xmax, ymin, ymax, zmin, zmax).
+    double ShadowedBox[6] = { -1.0, 1.0, -1.0, 1.0, -1.0, 1.0 };
     int Origin[2] = { 0, 0 };                 // atlas texel of its corner
   };
   // A casting light and its views.
@@ -413,7 +444,11 @@ protected:
   void FitLightViews(vtkOpenGLRenderer* ren);
   void AddView(const double position[3], const double direction[3], vtkMatrix4x4* projection,
     bool perspective, const double nearFar[2]);
-  void ComputeCasterDepthRange(LightView& view) const; // its SliceRange
+  void ComputeCasterDepthRange(LightView& view) const; // its SliceRange and ShadowedBox
+  double SplatReach(vtkProp* prop) const; // how far a caster's splats reach past its bounds
+  // The viewer's pixels (x0, y0, x1, y1, ends excluded) of a width x height
+  // target where a receiver can be in some view's ShadowedBox.
+  void ComputeShadowedPixels(vtkOpenGLRenderer* ren, int width, int height, int rect[4]) const;
   bool EnsureBuffers(vtkOpenGLRenderWindow* window);
   // Texel (x, y) of an RGBA32F texture, by downloading it (GetTexelCurve's
   // way without GL 4.5's glGetTextureSubImage).
@@ -458,6 +493,9 @@ protected:
   vtkIdType CapturedFragments = 0;
   vtkIdType Capacity = 0;
   bool SkipBackground = true;
+  bool CullLookUp = true;
+  std::vector<std::array<double, 6>> ReceiverBounds; // this frame's opaque props'
+  int LookUpPixels[4] = { 0, 0, 0, 0 };
   vtkIdType CapacityLimit = 0;
   vtkIdType StoredFragments = 0; // nodes this frame's lists hold
   bool WarnedOverflow = false;

@@ -31,32 +31,8 @@ namespace
 {
 using GB = vtkFXGBufferPass;
 const int MaximumLevels = 10;
+const float Transparent[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
 
-// While it lives, draws touch only `rect` (x0, y0, x1, y1, ends excluded)
-// of the current target, which is first cleared to 0 when `clear` is set.
-class ScissorScope
-{
-public:
-  ScissorScope(vtkOpenGLState* state, const int rect[4], bool clear)
-    : Enable(state, GL_SCISSOR_TEST)
-    , Box(state)
-    , Clear(state)
-  {
-    if (clear)
-    {
-      state->vtkglDisable(GL_SCISSOR_TEST);
-      state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-      state->vtkglClear(GL_COLOR_BUFFER_BIT);
-    }
-    state->vtkglEnable(GL_SCISSOR_TEST);
-    state->vtkglScissor(rect[0], rect[1], std::max(0, rect[2] - rect[0]), std::max(0, rect[3] - rect[1]));
-  }
-
-private:
-  vtkOpenGLState::ScopedglEnableDisable Enable;
-  vtkOpenGLState::ScopedglScissor Box;
-  vtkOpenGLState::ScopedglClearColor Clear;
-};
 }
 
 namespace
@@ -342,7 +318,7 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
     vtkFXRenderUtilities::RenderTargetScope target(window, level.DownTarget, level.Down);
     int rect[4];
     this->LevelRect(k, rect);
-    ScissorScope scissor(window->GetState(), rect, true);
+    vtkFXRenderUtilities::ScissorScope scissor(window->GetState(), rect, Transparent);
     vtkShaderProgram* program = this->ReadyProgram(first ? FirstDown : Down, window, fs);
     if (!program)
     {
@@ -389,7 +365,7 @@ bool vtkFXBloomPass::Upsample(vtkOpenGLRenderWindow* window, int levels)
     vtkFXRenderUtilities::RenderTargetScope target(window, level.UpTarget, level.Up);
     int rect[4];
     this->LevelRect(k, rect);
-    ScissorScope scissor(window->GetState(), rect, true);
+    vtkFXRenderUtilities::ScissorScope scissor(window->GetState(), rect, Transparent);
     vtkShaderProgram* program = this->ReadyProgram(Up, window, fs);
     if (!program)
     {
@@ -434,7 +410,7 @@ void vtkFXBloomPass::AddGlow(vtkOpenGLRenderWindow* window)
   window->GetState()->vtkglGetIntegerv(GL_VIEWPORT, viewport);
   const int rect[4] = { viewport[0] + this->GlowRect[0], viewport[1] + this->GlowRect[1],
     viewport[0] + this->GlowRect[2], viewport[1] + this->GlowRect[3] };
-  ScissorScope scissor(window->GetState(), rect, false);
+  vtkFXRenderUtilities::ScissorScope scissor(window->GetState(), rect);
   glow->Activate();
   program->SetUniformi("fxCoarse", glow->GetTextureUnit());
   const float texel[2] = { 1.0f / glow->GetWidth(), 1.0f / glow->GetHeight() };

@@ -677,6 +677,23 @@ int vtkFXRenderUtilities::ProjectBox(
   return behind;
 }
 
+vtkFXRenderUtilities::ScissorScope::ScissorScope(
+  vtkOpenGLState* state, const int rect[4], const float* clearColor)
+  : Enable(state, GL_SCISSOR_TEST)
+  , Box(state)
+  , Clear(state)
+{
+  if (clearColor)
+  {
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    state->vtkglClearColor(clearColor[0], clearColor[1], clearColor[2], clearColor[3]);
+    state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  }
+  state->vtkglEnable(GL_SCISSOR_TEST);
+  state->vtkglScissor(
+    rect[0], rect[1], std::max(0, rect[2] - rect[0]), std::max(0, rect[3] - rect[1]));
+}
+
 vtkFXRenderUtilities::BlendOntoScope::BlendOntoScope(vtkOpenGLRenderWindow* window,
   unsigned int srcRGB, unsigned int dstRGB, unsigned int srcAlpha, unsigned int dstAlpha)
   : Blend(window->GetState(), GL_BLEND)

@@ -251,6 +251,23 @@ public:
     double ndcMax[3]);
 
   /**
+   * While it lives, draws touch only `rect` (x0, y0, x1, y1 in pixels, ends
+   * excluded) of the current target; with `clearColor`, the whole target is
+   * cleared to it first. The scissor's box and switch and the clear colour
+   * come back when it is destroyed.
+   */
+  class VTKFX_EXPORT ScissorScope
+  {
+  public:
+    ScissorScope(vtkOpenGLState* state, const int rect[4], const float* clearColor = nullptr);
+
+  private:
+    vtkOpenGLState::ScopedglEnableDisable Enable;
+    vtkOpenGLState::ScopedglScissor Box;
+    vtkOpenGLState::ScopedglClearColor Clear;
+  };
+
+  /**
    * While it lives, draws go to `target` (the only colour attachment of
    * `framebuffer`, created on first use) over its whole size, with depth
    * test, blending and scissor off. The previous framebuffer, viewport and

@@ -183,16 +183,22 @@ vtkRenderer* GroundScene(vtkRenderWindow* window, bool parallel, vtkActor** grou
 
 // The ground, the light and `casters` in a pipeline with `avsm`; renders
 // `frames` frames and returns the visibility per pixel (rows bottom-up).
+// `placeCamera`, when given, moves the viewer's camera.
 // With spotHeight > 0 the light is a spot light that high over the origin,
 // pointing at (spotAimX, 0, 0), with a cone of spotCone degrees (90 or
 // more: a positional light shining every way, six views). A view angle
 // above 54 degrees shows background around the ground.
 std::vector<float> Visibility(vtkRenderWindow* window, vtkFXAVSMPass* avsm,
   const std::vector<vtkSmartPointer<vtkActor>>& casters, bool parallel, int frames = 1,
-  double spotHeight = 0.0, double spotCone = 60.0, double spotAimX = 0.0, double viewAngle = 22.0)
+  double spotHeight = 0.0, double spotCone = 60.0, double spotAimX = 0.0, double viewAngle = 22.0,
+  const std::function<void(vtkCamera*)>& placeCamera = nullptr)
 {
   vtkRenderer* renderer = GroundScene(window, parallel);
   renderer->GetActiveCamera()->SetViewAngle(viewAngle);
+  if (placeCamera)
+  {
+    placeCamera(renderer->GetActiveCamera());
+  }
   if (spotHeight > 0.0)
   {
     renderer->RemoveAllLights();
@@ -206,7 +212,10 @@ std::vector<float> Visibility(vtkRenderWindow* window, vtkFXAVSMPass* avsm,
   }
   for (const auto& caster : casters)
   {
-    renderer->AddActor(caster);
+    if (caster)
+    {
+      renderer->AddActor(caster);
+    }
   }
   vtkNew<vtkFXPipelinePass> pipeline;
   pipeline->AddEffect("avsm", avsm);
@@ -608,6 +617,102 @@ int CheckTilesAcrossViews(vtkRenderWindow* window)
   FX_CHECK(differ == 0, "the resolve over flagged tiles differs across views");
   FX_CHECK(!culled[0] && culled[1] == vtkFXRenderUtilities::CanFlagTiles(8),
     "tiles across views: culled " << culled[0] << culled[1]);
+  return EXIT_SUCCESS;
+}
+
+// The look-up over the pixels the casters can shadow (CullLookUp) against
+// the look-up at every pixel, byte for byte: splats and a slab over part
+// of the ground under a directional light (parallel and perspective
+// viewers), a spot light, a point light (six views) and a viewer near the
+// ground looking along it, under the casters, where the shadowed ground
+// reaches behind it (nothing is left out then); and splats sized by an
+// array in a scaled assembly.
+int CheckLookUpCulling(vtkRenderWindow* window)
+{
+  std::vector<std::array<double, 3>> centers;
+  for (int i = 0; i < 10; ++i)
+  {
+    centers.push_back({ -2.0 + 0.15 * i, 0.4 * std::sin(i), 1.0 + 0.2 * i });
+  }
+  const auto lookAlongGround = [](vtkCamera* camera) {
+    camera->SetPosition(-1.0, 0.0, 0.3);
+    camera->SetFocalPoint(-8.0, 0.0, 0.2);
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    camera->SetClippingRange(0.05, 30.0);
+  };
+  struct Case
+  {
+    const char* Name;
+    bool Parallel;
+    double SpotHeight, SpotCone;
+    std::function<void(vtkCamera*)> Place;
+    int Culled; // 1: some pixels left out, 0: none, -1: either
+  };
+  const Case cases[] = { { "directional light, parallel viewer", true, 0.0, 60.0, nullptr, 1 },
+    { "directional light, perspective viewer", false, 0.0, 60.0, nullptr, 1 },
+    { "spot light", false, 8.0, 40.0, nullptr, 1 }, { "point light", false, 4.0, 90.0, nullptr, -1 },
+    { "viewer under the casters", false, 0.0, 60.0, lookAlongGround, 0 },
+    { "splats sized by an array, in a scaled assembly", false, 0.0, 60.0, nullptr, 1 } };
+  // Splats whose sizes come from an array (0.5 and 2, times the scale
+  // factor), in an assembly that scales them by 1.5 about the origin:
+  // VTK's bounds hold their centres only.
+  const auto sizedSplats = [&centers]() {
+    auto splats = Splats(centers, 0.2, 0.5);
+    auto* mapper = vtkPointGaussianMapper::SafeDownCast(splats->GetMapper());
+    vtkNew<vtkFloatArray> sizes;
+    sizes->SetName("sizes");
+    for (size_t i = 0; i < centers.size(); ++i)
+    {
+      sizes->InsertNextValue(i % 2 ? 2.0f : 0.5f);
+    }
+    vtkPolyData::SafeDownCast(mapper->GetInput())->GetPointData()->AddArray(sizes);
+    mapper->SetScaleArray("sizes");
+    vtkNew<vtkAssembly> assembly;
+    assembly->AddPart(splats);
+    assembly->SetScale(1.5);
+    return vtkSmartPointer<vtkAssembly>(assembly);
+  };
+  for (const Case& c : cases)
+  {
+    std::vector<float> v[2];
+    int pixels[2] = { 0, 0 };
+    for (int cull = 0; cull < 2; ++cull)
+    {
+      auto avsm = MakeAVSM(8, false, true);
+      avsm->SetCullLookUp(cull == 1);
+      const bool sized = std::string(c.Name).find("sized") != std::string::npos;
+      vtkSmartPointer<vtkAssembly> assembly = sized ? sizedSplats() : nullptr;
+      v[cull] = Visibility(window, avsm,
+        { sized ? nullptr : Splats(centers, 0.4, 0.5), Quad(-10, -1.5, 0.5, 0.3) }, c.Parallel, 1,
+        c.SpotHeight, c.SpotCone, 0.0, 22.0, [&](vtkCamera* camera) {
+          if (c.Place)
+          {
+            c.Place(camera);
+          }
+          if (assembly)
+          {
+            window->GetRenderers()->GetFirstRenderer()->AddViewProp(assembly);
+          }
+        });
+      const int* r = avsm->GetLookUpPixels();
+      pixels[cull] = std::max(0, r[2] - r[0]) * std::max(0, r[3] - r[1]);
+    }
+    size_t shadowed = 0;
+    for (float t : v[0])
+    {
+      shadowed += t < 0.999f ? 1 : 0;
+    }
+    const bool same = v[0].size() == v[1].size() && !v[0].empty() &&
+      std::memcmp(v[0].data(), v[1].data(), v[0].size() * sizeof(float)) == 0;
+    std::cout << "look-up culling, " << c.Name << ": " << pixels[1] << " of " << pixels[0]
+              << " pixels looked up, " << shadowed << " shadowed, "
+              << (same ? "identical" : "DIFFERENT") << std::endl;
+    FX_CHECK(pixels[0] == Width * Height, c.Name << ": CullLookUp off left pixels out");
+    FX_CHECK(shadowed > 500, c.Name << ": only " << shadowed << " shadowed pixels");
+    FX_CHECK(same, c.Name << ": the culled look-up differs");
+    FX_CHECK(c.Culled < 0 || (pixels[1] < pixels[0]) == (c.Culled == 1),
+      c.Name << ": " << pixels[1] << " of " << pixels[0] << " pixels looked up");
+  }
   return EXIT_SUCCESS;
 }
 
@@ -1571,6 +1676,7 @@ int TestAVSM(int, char*[])
     "splat self-shadowing without an opaque prop");
   FX_CHECK(CheckStageSwitching(window) == EXIT_SUCCESS, "frames with and without opaque props");
   FX_CHECK(CheckArrivalOrder(window) == EXIT_SUCCESS, "order independence");
+  FX_CHECK(CheckLookUpCulling(window) == EXIT_SUCCESS, "look-up culling");
   FX_CHECK(CheckTilesAcrossViews(window) == EXIT_SUCCESS, "flagged tiles across views");
   // Four splats whose chords overlap along the light (scale 0.6, centres
   // 0.5 apart, spheres 2.1 across): 8 entries and exits, which AVSM-16
