@@ -15,7 +15,10 @@
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
+#include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
 #include "vtkDataObject.h"
 #include "vtkDemandDrivenPipeline.h"
 #include "vtkImageData.h"
@@ -230,18 +233,23 @@ bool vtkFXAVSMPass::HasWork(const vtkFXSceneInfo& scene)
   this->Casters.clear();
   std::copy_if(scene.TranslucentViewProps.begin(), scene.TranslucentViewProps.end(),
     std::back_inserter(this->Casters), CanCast);
-  // Where the look-up's receivers can be (CullLookUp): nullptr bounds, or
-  // none, leave nothing out.
+  // Where the look-up's receivers are drawn (CullLookUp): the props the
+  // G-buffer captures (forward-drawn ones are shaded without the look-up).
   this->ReceiverBounds.clear();
-  for (const auto* props : { &scene.OpaqueProps, &scene.ForwardOpaqueProps })
+  this->ReceiverWidth = 1.0;
+  this->ReceiversAnywhere = false;
+  for (vtkProp* prop : scene.OpaqueProps)
   {
-    for (vtkProp* prop : *props)
+    std::array<double, 6> bounds;
+    double width = 1.0;
+    if (!DrawnExtent(prop, -1.0, bounds.data(), width))
     {
-      const double* b = prop->GetBounds();
-      const double everywhere[6] = { -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
-        VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
-      this->ReceiverBounds.emplace_back();
-      std::copy(b ? b : everywhere, (b ? b : everywhere) + 6, this->ReceiverBounds.back().begin());
+      this->ReceiversAnywhere = true;
+    }
+    else if (vtkMath::AreBoundsInitialized(bounds.data()))
+    {
+      this->ReceiverBounds.push_back(bounds);
+      this->ReceiverWidth = std::max(this->ReceiverWidth, width);
     }
   }
   this->CastingLights.clear();
@@ -651,35 +659,70 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
 
 namespace
 {
-// How far the splats of `splats` reach from their centres, in the
-// coordinates of `matrix` (their actor's or assembly path's): a sphere of
-// `radius` times a splat's scale (the scale array's value, through the
-// scale function when there is one, times the scale factor).
-double SplatsReach(vtkPointGaussianMapper* splats, vtkMatrix4x4* matrix, double radius)
+// The largest scale of a point-gaussian mapper's splats (the scale array's
+// largest value, or its magnitude's when the component is out of range,
+// through the scale function when there is one, times the scale factor),
+// or -1 when it cannot be told (a scale array missing from the data).
+double SplatScale(vtkPointGaussianMapper* splats)
 {
-  double scale = 1.0;
-  vtkDataSet* input = splats->GetInput();
-  vtkDataArray* values = input && splats->GetScaleArray()
-    ? input->GetPointData()->GetArray(splats->GetScaleArray())
-    : nullptr;
-  if (values && values->GetNumberOfTuples() > 0)
+  const double factor = std::fabs(splats->GetScaleFactor());
+  if (!splats->GetScaleArray())
   {
-    const int component =
-      std::min(std::max(0, splats->GetScaleArrayComponent()), values->GetNumberOfComponents() - 1);
-    const double* range = values->GetRange(component);
-    scale = std::max(std::fabs(range[0]), std::fabs(range[1]));
-    if (vtkPiecewiseFunction* function = splats->GetScaleFunction())
+    return factor;
+  }
+  std::vector<vtkDataSet*> sets;
+  vtkDataObject* input = splats->GetInputDataObject(0, 0);
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> leaf;
+    leaf.TakeReference(composite->NewIterator());
+    for (leaf->InitTraversal(); !leaf->IsDoneWithTraversal(); leaf->GoToNextItem())
     {
-      scale = 0.0;
-      for (int i = 0; i < function->GetSize(); ++i)
+      if (auto* set = vtkDataSet::SafeDownCast(leaf->GetCurrentDataObject()))
       {
-        double node[4];
-        function->GetNodeValue(i, node);
-        scale = std::max(scale, std::fabs(node[1]));
+        sets.push_back(set);
       }
     }
   }
-  double stretch = matrix ? 0.0 : 1.0; // the longest axis the matrix scales
+  else if (auto* set = vtkDataSet::SafeDownCast(input))
+  {
+    sets.push_back(set);
+  }
+  double largest = 0.0;
+  for (vtkDataSet* set : sets)
+  {
+    vtkDataArray* values = set->GetPointData()->GetArray(splats->GetScaleArray());
+    if (!values)
+    {
+      return set->GetNumberOfPoints() > 0 ? -1.0 : largest;
+    }
+    if (values->GetNumberOfTuples() == 0)
+    {
+      continue;
+    }
+    const int component = splats->GetScaleArrayComponent();
+    const bool one = values->GetNumberOfComponents() == 1 ||
+      (component >= 0 && component < values->GetNumberOfComponents());
+    const double* range = values->GetRange(one ? std::max(0, component) : -1);
+    largest = std::max({ largest, std::fabs(range[0]), std::fabs(range[1]) });
+  }
+  if (vtkPiecewiseFunction* function = splats->GetScaleFunction())
+  {
+    largest = 0.0;
+    for (int i = 0; i < function->GetSize(); ++i)
+    {
+      double node[4];
+      function->GetNodeValue(i, node);
+      largest = std::max(largest, std::fabs(node[1]));
+    }
+  }
+  return largest * factor;
+}
+
+// The longest axis `matrix` scales by (1 without one).
+double Stretch(vtkMatrix4x4* matrix)
+{
+  double stretch = matrix ? 0.0 : 1.0;
   for (int c = 0; matrix && c < 3; ++c)
   {
     stretch = std::max(stretch,
@@ -687,28 +730,61 @@ double SplatsReach(vtkPointGaussianMapper* splats, vtkMatrix4x4* matrix, double 
         matrix->GetElement(1, c) * matrix->GetElement(1, c) +
         matrix->GetElement(2, c) * matrix->GetElement(2, c)));
   }
-  const double reach = radius * scale * std::fabs(splats->GetScaleFactor()) * stretch;
-  return std::isfinite(reach) ? reach : VTK_DOUBLE_MAX;
+  return stretch;
 }
 }
 
-double vtkFXAVSMPass::SplatReach(vtkProp* prop) const
+bool vtkFXAVSMPass::DrawnExtent(vtkProp* prop, double splatReach, double bounds[6], double& width)
 {
-  // VTK's bounds of splats hold their centres only. Down to the parts of
-  // assemblies, as CaptureKey walks them.
+  // The prop's bounds, grown by its splats' reach (VTK's bounds of splats
+  // hold their centres only: a splat reaches splatReach times its scale,
+  // or where splatReach < 0, its triangle's corner, twice its
+  // TriangleScale: an opaque splat's extent),
+  // down to the parts of assemblies, as CaptureKey walks them; `width`,
+  // its widest point or line in pixels. An assembly's bounds leave out
+  // parts with UseBounds off or without bounds, which are drawn all the
+  // same: then, and for splats whose scale cannot be told, anywhere.
+  const double* b = prop->GetBounds();
+  if (!b)
+  {
+    return false;
+  }
   double reach = 0.0;
+  width = 1.0;
   vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop);
   prop->InitPathTraversal();
   while (vtkAssemblyPath* path = prop->GetNextPath())
   {
-    vtkActor* actor = vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp());
-    if (auto* splats = actor ? vtkPointGaussianMapper::SafeDownCast(actor->GetMapper()) : nullptr)
+    vtkProp* part = path->GetLastNode()->GetViewProp();
+    if (part != prop && (!part->GetUseBounds() || !part->GetBounds()))
     {
+      return false;
+    }
+    vtkActor* actor = vtkActor::SafeDownCast(part);
+    if (!actor)
+    {
+      continue;
+    }
+    width = std::max({ width, static_cast<double>(actor->GetProperty()->GetPointSize()),
+      static_cast<double>(actor->GetProperty()->GetLineWidth()) });
+    if (auto* splats = vtkPointGaussianMapper::SafeDownCast(actor->GetMapper()))
+    {
+      const double scale = SplatScale(splats);
+      if (scale < 0.0)
+      {
+        return false;
+      }
       vtkMatrix4x4* matrix = actor == prop3D ? prop3D->GetMatrix() : path->GetLastNode()->GetMatrix();
-      reach = std::max(reach, SplatsReach(splats, matrix, this->SplatRadius));
+      const double perScale = splatReach < 0.0 ? 2.0 * splats->GetTriangleScale() : splatReach;
+      reach = std::max(reach, perScale * scale * Stretch(matrix));
     }
   }
-  return reach;
+  for (int i = 0; i < 6; ++i)
+  {
+    bounds[i] = b[i] + (i % 2 ? reach : -reach);
+  }
+  return std::all_of(bounds, bounds + 6, [](double v) { return std::isfinite(v); }) &&
+    std::isfinite(width);
 }
 
 void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
@@ -723,28 +799,52 @@ void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
   box[5] = 1.0;
   vtkNew<vtkMatrix4x4> toClip;
   vtkMatrix4x4::Multiply4x4(view.Projection, view.Camera->GetViewTransformMatrix(), toClip);
+  const auto wholeView = [box]() {
+    box[0] = box[2] = box[4] = -1.0;
+    box[1] = box[3] = box[5] = 1.0;
+  };
+  view.CasterWidth = 1.0;
   for (vtkProp* prop : this->Casters)
   {
     const double* b = prop->GetBounds();
     double ndcMin[3], ndcMax[3];
     const int behind = b ? vtkFXRenderUtilities::ProjectBox(b, &toClip->Element[0][0], ndcMin, ndcMax) : 8;
-    if (behind == 8)
+    if (behind != 8)
+    {
+      lo = std::min(lo, behind > 0 ? 0.0 : LightDepthFromNDC(view, ndcMin[2]));
+      hi = std::max(hi, LightDepthFromNDC(view, ndcMax[2]));
+    }
+    // What it can shadow: where it is drawn, from its nearest depth on; a
+    // box reaching behind the light, anything in its view.
+    double reached[6];
+    double width = 1.0;
+    if (!DrawnExtent(prop, this->SplatRadius, reached, width))
+    {
+      wholeView();
+      continue;
+    }
+    if (!vtkMath::AreBoundsInitialized(reached))
+    {
+      continue; // nothing drawn
+    }
+    view.CasterWidth = std::max(view.CasterWidth, width);
+    const int reachedBehind =
+      vtkFXRenderUtilities::ProjectBox(reached, &toClip->Element[0][0], ndcMin, ndcMax);
+    if (reachedBehind == 8)
     {
       continue;
     }
-    lo = std::min(lo, behind > 0 ? 0.0 : LightDepthFromNDC(view, ndcMin[2]));
-    hi = std::max(hi, LightDepthFromNDC(view, ndcMax[2]));
-    // What it can shadow.
-    const double reach = this->SplatReach(prop);
-    const double reached[6] = { b[0] - reach, b[1] + reach, b[2] - reach, b[3] + reach,
-      b[4] - reach, b[5] + reach };
-    const int reachedBehind = vtkFXRenderUtilities::ProjectBox(reached, &toClip->Element[0][0], ndcMin, ndcMax);
-    // A box reaching behind the light may shadow anything in its view.
+    if (reachedBehind > 0 ||
+      !std::all_of(ndcMin, ndcMin + 3, [](double v) { return std::isfinite(v); }) ||
+      !std::all_of(ndcMax, ndcMax + 3, [](double v) { return std::isfinite(v); }))
+    {
+      wholeView();
+      continue;
+    }
     for (int a = 0; a < 3; ++a)
     {
-      box[2 * a] = std::min(box[2 * a], reachedBehind > 0 ? -1.0 : std::max(-1.0, ndcMin[a]));
-      box[2 * a + 1] =
-        std::max(box[2 * a + 1], a == 2 || reachedBehind > 0 ? 1.0 : std::min(1.0, ndcMax[a]));
+      box[2 * a] = std::min(box[2 * a], std::max(-1.0, ndcMin[a]));
+      box[2 * a + 1] = std::max(box[2 * a + 1], a == 2 ? 1.0 : std::min(1.0, ndcMax[a]));
     }
   }
   view.SliceRange[0] = static_cast<float>(std::max(0.0, std::min(lo, hi)));
@@ -1487,21 +1587,27 @@ void AddIntersectionCorners(const std::vector<Polygon>& facesA, const std::vecto
 void vtkFXAVSMPass::ComputeShadowedPixels(
   vtkOpenGLRenderer* ren, int width, int height, int rect[4]) const
 {
-  // Each view's ShadowedBox, two texels wider (a bilinear look-up reads
-  // half a texel around its point), in world coordinates, cut by each
-  // receiver's bounds (a tilted ground would otherwise carry the box down
-  // to its lowest corner), then seen by the viewer: the pieces' corners
-  // bound their image, unless one reaches the viewer's plane.
-  rect[0] = width;
-  rect[1] = height;
-  rect[2] = 0;
-  rect[3] = 0;
+  // Each view's ShadowedBox, wider by two texels (a bilinear look-up reads
+  // up to a texel from its point, also just outside a view) and half the
+  // casters' widest point or line, and deep to the farthest receiver (past
+  // the view's far plane a curve's last value holds), in world
+  // coordinates, cut by each receiver's bounds (a tilted ground would
+  // otherwise carry the box down to its lowest corner), then seen by the
+  // viewer: the pieces' corners bound their image, grown by half the
+  // receivers' widest point or line, unless one reaches the viewer's
+  // plane.
+  rect[0] = rect[1] = 0;
+  rect[2] = width;
+  rect[3] = height;
+  if (this->ReceiversAnywhere)
+  {
+    return;
+  }
   vtkCamera* camera = ren->GetActiveCamera();
   vtkNew<vtkMatrix4x4> worldToViewer;
   vtkMatrix4x4::Multiply4x4(
     camera->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1.0, 1.0),
     camera->GetViewTransformMatrix(), worldToViewer);
-  const double margin = 4.0 / this->ShadowMapSize;
   std::vector<Point> corners;
   for (const LightView& view : this->Views)
   {
@@ -1510,10 +1616,24 @@ void vtkFXAVSMPass::ComputeShadowedPixels(
     {
       continue; // no caster in its view
     }
-    const double region[6] = { std::max(-1.0, box[0] - margin), std::min(1.0, box[1] + margin),
-      std::max(-1.0, box[2] - margin), std::min(1.0, box[3] + margin), box[4], box[5] };
     vtkNew<vtkMatrix4x4> worldToLight;
     vtkMatrix4x4::Multiply4x4(view.Projection, view.Camera->GetViewTransformMatrix(), worldToLight);
+    double farthest = box[5];
+    for (const auto& b : this->ReceiverBounds)
+    {
+      double ndcMin[3], ndcMax[3];
+      if (vtkFXRenderUtilities::ProjectBox(b.data(), &worldToLight->Element[0][0], ndcMin, ndcMax) < 8)
+      {
+        farthest = std::max(farthest, ndcMax[2]);
+      }
+    }
+    if (!std::isfinite(farthest))
+    {
+      return;
+    }
+    const double margin = (2.0 + 0.5 * view.CasterWidth) * 2.0 / this->ShadowMapSize;
+    const double region[6] = { box[0] - margin, box[1] + margin, box[2] - margin,
+      box[3] + margin, box[4], farthest };
     vtkNew<vtkMatrix4x4> lightToWorld;
     vtkMatrix4x4::Invert(worldToLight, lightToWorld);
     // Its corners (in front of the light: w > 0) and bounding planes:
@@ -1557,6 +1677,11 @@ void vtkFXAVSMPass::ComputeShadowedPixels(
       AddIntersectionCorners(prismFaces, prismPlanes, BoxFaces(receiver), receiverPlanes, corners);
     }
   }
+  rect[0] = width;
+  rect[1] = height;
+  rect[2] = 0;
+  rect[3] = 0;
+  const int pad = static_cast<int>(std::ceil(0.5 * this->ReceiverWidth));
   for (const Point& corner : corners)
   {
     double p[4] = { corner[0], corner[1], corner[2], 1.0 };
@@ -1571,9 +1696,9 @@ void vtkFXAVSMPass::ComputeShadowedPixels(
       rect[3] = height;
       return;
     }
-    const auto pixel = [](double ndc, int size, bool up) {
+    const auto pixel = [pad](double ndc, int size, bool up) {
       const double at = 0.5 * (std::min(std::max(ndc, -2.0), 2.0) + 1.0) * size;
-      return up ? static_cast<int>(std::ceil(at)) + 1 : static_cast<int>(std::floor(at)) - 1;
+      return up ? static_cast<int>(std::ceil(at)) + pad : static_cast<int>(std::floor(at)) - pad;
     };
     rect[0] = std::min(rect[0], std::max(0, pixel(x, width, false)));
     rect[1] = std::min(rect[1], std::max(0, pixel(y, height, false)));

@@ -713,6 +713,56 @@ int CheckLookUpCulling(vtkRenderWindow* window)
     FX_CHECK(c.Culled < 0 || (pixels[1] < pixels[0]) == (c.Culled == 1),
       c.Name << ": " << pixels[1] << " of " << pixels[0] << " pixels looked up");
   }
+  // A small slab of opacity 0.6 whose shadow the screen holds on all four
+  // sides, with the background looked up too (SkipBackground off) and
+  // under a spot light whose cone's edge crosses the shadow: identical,
+  // and the rectangle within 5 pixels of the shadow (the two texels' margin
+  // is about 1 pixel here, the pad and the rounding 1 each).
+  for (bool spot : { false, true })
+  {
+    std::vector<float> v[2];
+    const int* r = nullptr;
+    vtkSmartPointer<vtkFXAVSMPass> kept;
+    for (int cull = 0; cull < 2; ++cull)
+    {
+      auto avsm = MakeAVSM(8, false, true);
+      avsm->SetCullLookUp(cull == 1);
+      avsm->SetSkipBackground(false);
+      auto slab = Quad(-1.0, 1.0, 0.5, 0.6);
+      slab->SetScale(1.0, 0.1, 1.0);
+      slab->SetPosition(0.8, 0.5, 0.0);
+      v[cull] = Visibility(window, avsm, { slab }, false, 1, spot ? 8.0 : 0.0, 7.0, 1.8);
+      r = avsm->GetLookUpPixels();
+      kept = avsm;
+    }
+    int lo[2] = { Width, Height }, hi[2] = { -1, -1 };
+    for (int y = 0; y < Height; ++y)
+    {
+      for (int x = 0; x < Width; ++x)
+      {
+        if (v[0][static_cast<size_t>(y) * Width + x] < 0.999f)
+        {
+          lo[0] = std::min(lo[0], x);
+          lo[1] = std::min(lo[1], y);
+          hi[0] = std::max(hi[0], x);
+          hi[1] = std::max(hi[1], y);
+        }
+      }
+    }
+    const bool same = v[0].size() == v[1].size() && !v[0].empty() &&
+      std::memcmp(v[0].data(), v[1].data(), v[0].size() * sizeof(float)) == 0;
+    const char* name = spot ? "small slab, spot light's cone edge across it" : "small slab";
+    std::cout << "look-up culling, " << name << ": shadow in pixels " << lo[0] << "-" << hi[0]
+              << " x " << lo[1] << "-" << hi[1] << ", looked up " << r[0] << "-" << r[2] - 1
+              << " x " << r[1] << "-" << r[3] - 1 << ", " << (same ? "identical" : "DIFFERENT")
+              << std::endl;
+    FX_CHECK(same, name << ": the culled look-up differs");
+    FX_CHECK(lo[0] > 5 && lo[1] > 5 && hi[0] < Width - 6 && hi[1] < Height - 6,
+      name << ": the shadow is not inside the screen");
+    FX_CHECK(r[0] <= lo[0] && r[1] <= lo[1] && r[2] > hi[0] && r[3] > hi[1] &&
+        lo[0] - r[0] <= 5 && lo[1] - r[1] <= 5 && r[2] - 1 - hi[0] <= 5 && r[3] - 1 - hi[1] <= 5,
+      name << ": the rectangle is not within 5 pixels of the shadow");
+  }
   return EXIT_SUCCESS;
 }
 
