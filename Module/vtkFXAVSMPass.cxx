@@ -293,6 +293,11 @@ vtkTextureObject* vtkFXAVSMPass::GetCurveTexture(int i)
   return (i >= 0 && i < this->GetNumberOfCurveTextures()) ? this->Curves[i].GetPointer() : nullptr;
 }
 
+vtkTextureObject* vtkFXAVSMPass::GetResolveTileMask()
+{
+  return this->ResolveTilesCulled ? this->ResolveTiles.Mask.GetPointer() : nullptr;
+}
+
 double vtkFXAVSMPass::GetListBytesPerTexel() const
 {
   const double texels = double(this->AtlasSize[0]) * this->AtlasSize[1];

@@ -192,6 +192,13 @@ public:
   bool GetResolveTilesCulled() const { return this->ResolveTilesCulled; }
 
   /**
+   * The last capture's flags (for tests and debugging): one R8 texel per
+   * 8x8 tile of the atlas, nonzero where the resolve ran; nullptr when the
+   * tiles were not culled.
+   */
+  vtkTextureObject* GetResolveTileMask();
+
+  /**
    * Receiver depth offset towards the light, as a fraction of the visible
    * props' bounding-sphere diameter (0..0.1, default 1e-3; distances along
    * the light, for spot lights too): casters closer to a receiver than

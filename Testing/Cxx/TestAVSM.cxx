@@ -582,6 +582,8 @@ int CheckTilesAcrossViews(vtkRenderWindow* window)
   }
   std::vector<std::vector<float>> results[2];
   bool culled[2] = { false, false };
+  std::vector<float> flags;
+  int atlasWidth = 0;
   for (int cull = 0; cull < 2; ++cull)
   {
     auto avsm = MakeAVSM(8, false, true);
@@ -590,6 +592,11 @@ int CheckTilesAcrossViews(vtkRenderWindow* window)
     results[cull].push_back(Visibility(window, avsm,
       { Splats(centers, 0.4, 0.5), Quad(-10, 0, 0.5, 0.3) }, false, 1, 4.0, 90.0));
     culled[cull] = avsm->GetResolveTilesCulled();
+    if (culled[cull])
+    {
+      flags = vtkFXTest::Download(avsm->GetResolveTileMask(), 1);
+      atlasWidth = static_cast<int>(avsm->GetCurveTexture(0)->GetWidth());
+    }
     for (int k = 0; k < avsm->GetNumberOfCurveTextures(); ++k)
     {
       results[cull].push_back(vtkFXTest::Download(avsm->GetCurveTexture(k), 4));
@@ -614,6 +621,28 @@ int CheckTilesAcrossViews(vtkRenderWindow* window)
             << " of " << results[0].size() << " outputs differ; " << withCurve
             << " texels with a curve" << std::endl;
   FX_CHECK(withCurve > 500, "tiles across views: only " << withCurve << " texels with a curve");
+  // Every tile holding a curve is flagged, and some tiles are not (a mask
+  // flagging every tile would give the same curves, only slower).
+  if (culled[1])
+  {
+    const int tilesWide = (atlasWidth + 7) / 8;
+    size_t flagged = 0, missed = 0;
+    for (float f : flags)
+    {
+      flagged += f > 0.0f ? 1 : 0;
+    }
+    for (size_t texel = 0; texel < results[0][1].size() / 4; ++texel)
+    {
+      const size_t x = texel % atlasWidth, y = texel / atlasWidth;
+      const size_t tile = (y / 8) * tilesWide + x / 8;
+      missed += results[0][1][4 * texel] < 1e30f && !(tile < flags.size() && flags[tile] > 0.0f);
+    }
+    std::cout << "tiles across views: " << flagged << " of " << flags.size() << " tiles flagged, "
+              << missed << " texels with a curve in an unflagged tile" << std::endl;
+    FX_CHECK(missed == 0 && flagged > 0 && flagged < flags.size() / 2,
+      "tiles across views: " << flagged << " of " << flags.size() << " tiles flagged, " << missed
+                             << " texels with a curve unflagged");
+  }
   FX_CHECK(differ == 0, "the resolve over flagged tiles differs across views");
   FX_CHECK(!culled[0] && culled[1] == vtkFXRenderUtilities::CanFlagTiles(8),
     "tiles across views: culled " << culled[0] << culled[1]);
