@@ -756,6 +756,11 @@ bool vtkFXAVSMPass::DrawnExtent(vtkProp* prop, double splatReach, double bounds[
   }
   double reach = 0.0;
   width = 1.0;
+  if (!vtkMath::AreBoundsInitialized(b))
+  {
+    std::copy(b, b + 6, bounds); // nothing drawn (grown, they would be a box)
+    return true;
+  }
   vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop);
   prop->InitPathTraversal();
   while (vtkAssemblyPath* path = prop->GetNextPath())
