@@ -236,20 +236,17 @@ bool vtkFXAVSMPass::HasWork(const vtkFXSceneInfo& scene)
   // Where the look-up's receivers are drawn (CullLookUp): the props the
   // G-buffer captures (forward-drawn ones are shaded without the look-up).
   this->ReceiverBounds.clear();
-  this->ReceiverWidth = 1.0;
   this->ReceiversAnywhere = false;
   for (vtkProp* prop : scene.OpaqueProps)
   {
     std::array<double, 6> bounds;
-    double width = 1.0;
-    if (!DrawnExtent(prop, -1.0, bounds.data(), width))
+    if (!DrawnExtent(prop, -1.0, bounds.data()))
     {
       this->ReceiversAnywhere = true;
     }
     else if (vtkMath::AreBoundsInitialized(bounds.data()))
     {
       this->ReceiverBounds.push_back(bounds);
-      this->ReceiverWidth = std::max(this->ReceiverWidth, width);
     }
   }
   this->CastingLights.clear();
@@ -666,8 +663,8 @@ namespace
 {
 // The largest scale of a point-gaussian mapper's splats (the scale array's
 // largest value, or its magnitude's when the component is out of range,
-// through the scale function when there is one, times the scale factor),
-// or -1 when it cannot be told (a scale array missing from the data).
+// 1 where a piece lacks the array, through the scale function when there
+// is one, times the scale factor).
 double SplatScale(vtkPointGaussianMapper* splats)
 {
   const double factor = std::fabs(splats->GetScaleFactor());
@@ -697,12 +694,11 @@ double SplatScale(vtkPointGaussianMapper* splats)
   for (vtkDataSet* set : sets)
   {
     vtkDataArray* values = set->GetPointData()->GetArray(splats->GetScaleArray());
-    if (!values)
+    if (!values || values->GetNumberOfTuples() == 0)
     {
-      return set->GetNumberOfPoints() > 0 ? -1.0 : largest;
-    }
-    if (values->GetNumberOfTuples() == 0)
-    {
+      // (VTK sizes the splats of a piece without the array as 1, through
+      // the scale function)
+      largest = std::max(largest, set->GetNumberOfPoints() > 0 ? 1.0 : 0.0);
       continue;
     }
     const int component = splats->GetScaleArrayComponent();
@@ -724,38 +720,40 @@ double SplatScale(vtkPointGaussianMapper* splats)
   return largest * factor;
 }
 
-// The longest axis `matrix` scales by (1 without one).
+// How far along any world axis `matrix` takes a point at distance 1 from
+// another: its rows' largest length (a sphere's box grows by the radius
+// times row i's length along axis i, sheared or not; 1 without a matrix).
 double Stretch(vtkMatrix4x4* matrix)
 {
   double stretch = matrix ? 0.0 : 1.0;
-  for (int c = 0; matrix && c < 3; ++c)
+  for (int r = 0; matrix && r < 3; ++r)
   {
     stretch = std::max(stretch,
-      std::sqrt(matrix->GetElement(0, c) * matrix->GetElement(0, c) +
-        matrix->GetElement(1, c) * matrix->GetElement(1, c) +
-        matrix->GetElement(2, c) * matrix->GetElement(2, c)));
+      std::sqrt(matrix->GetElement(r, 0) * matrix->GetElement(r, 0) +
+        matrix->GetElement(r, 1) * matrix->GetElement(r, 1) +
+        matrix->GetElement(r, 2) * matrix->GetElement(r, 2)));
   }
   return stretch;
 }
 }
 
-bool vtkFXAVSMPass::DrawnExtent(vtkProp* prop, double splatReach, double bounds[6], double& width)
+bool vtkFXAVSMPass::DrawnExtent(vtkProp* prop, double splatReach, double bounds[6])
 {
   // The prop's bounds, grown by its splats' reach (VTK's bounds of splats
   // hold their centres only: a splat reaches splatReach times its scale,
   // or where splatReach < 0, its triangle's corner, twice its
   // TriangleScale: an opaque splat's extent),
-  // down to the parts of assemblies, as CaptureKey walks them; `width`,
-  // its widest point or line in pixels. An assembly's bounds leave out
-  // parts with UseBounds off or without bounds, which are drawn all the
-  // same: then, and for splats whose scale cannot be told, anywhere.
+  // down to the parts of assemblies, as CaptureKey walks them. An
+  // assembly's bounds leave out parts with UseBounds off or without
+  // bounds, which are drawn all the same, and points or lines wider than a
+  // pixel reach past them sideways (and sphere or tube impostors write
+  // depths nearer the viewer): anywhere, then.
   const double* b = prop->GetBounds();
   if (!b)
   {
     return false;
   }
   double reach = 0.0;
-  width = 1.0;
   if (!vtkMath::AreBoundsInitialized(b))
   {
     std::copy(b, b + 6, bounds); // nothing drawn (grown, they would be a box)
@@ -775,15 +773,13 @@ bool vtkFXAVSMPass::DrawnExtent(vtkProp* prop, double splatReach, double bounds[
     {
       continue;
     }
-    width = std::max({ width, static_cast<double>(actor->GetProperty()->GetPointSize()),
-      static_cast<double>(actor->GetProperty()->GetLineWidth()) });
+    if (actor->GetProperty()->GetPointSize() > 1.0f || actor->GetProperty()->GetLineWidth() > 1.0f)
+    {
+      return false;
+    }
     if (auto* splats = vtkPointGaussianMapper::SafeDownCast(actor->GetMapper()))
     {
       const double scale = SplatScale(splats);
-      if (scale < 0.0)
-      {
-        return false;
-      }
       vtkMatrix4x4* matrix = actor == prop3D ? prop3D->GetMatrix() : path->GetLastNode()->GetMatrix();
       const double perScale = splatReach < 0.0 ? 2.0 * splats->GetTriangleScale() : splatReach;
       reach = std::max(reach, perScale * scale * Stretch(matrix));
@@ -793,8 +789,7 @@ bool vtkFXAVSMPass::DrawnExtent(vtkProp* prop, double splatReach, double bounds[
   {
     bounds[i] = b[i] + (i % 2 ? reach : -reach);
   }
-  return std::all_of(bounds, bounds + 6, [](double v) { return std::isfinite(v); }) &&
-    std::isfinite(width);
+  return std::all_of(bounds, bounds + 6, [](double v) { return std::isfinite(v); });
 }
 
 void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
@@ -813,7 +808,6 @@ void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
     box[0] = box[2] = box[4] = -1.0;
     box[1] = box[3] = box[5] = 1.0;
   };
-  view.CasterWidth = 1.0;
   for (vtkProp* prop : this->Casters)
   {
     const double* b = prop->GetBounds();
@@ -827,8 +821,7 @@ void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
     // What it can shadow: where it is drawn, from its nearest depth on; a
     // box reaching behind the light, anything in its view.
     double reached[6];
-    double width = 1.0;
-    if (!DrawnExtent(prop, this->SplatRadius, reached, width))
+    if (!DrawnExtent(prop, this->SplatRadius, reached))
     {
       wholeView();
       continue;
@@ -837,7 +830,6 @@ void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
     {
       continue; // nothing drawn
     }
-    view.CasterWidth = std::max(view.CasterWidth, width);
     const int reachedBehind =
       vtkFXRenderUtilities::ProjectBox(reached, &toClip->Element[0][0], ndcMin, ndcMax);
     if (reachedBehind == 8)
@@ -1641,7 +1633,7 @@ void vtkFXAVSMPass::ComputeShadowedPixels(
     {
       return;
     }
-    const double margin = (2.0 + 0.5 * view.CasterWidth) * 2.0 / this->ShadowMapSize;
+    const double margin = 2.0 * 2.0 / this->ShadowMapSize;
     const double region[6] = { box[0] - margin, box[1] + margin, box[2] - margin,
       box[3] + margin, box[4], farthest };
     vtkNew<vtkMatrix4x4> lightToWorld;
@@ -1654,6 +1646,10 @@ void vtkFXAVSMPass::ComputeShadowedPixels(
       double p[4] = { region[i & 1], region[2 + ((i >> 1) & 1)], region[4 + ((i >> 2) & 1)], 1.0 };
       lightToWorld->MultiplyPoint(p, p);
       prism[i] = { p[0] / p[3], p[1] / p[3], p[2] / p[3] };
+      if (!(p[3] > 0.0) || !std::all_of(prism[i].begin(), prism[i].end(), [](double v) { return std::isfinite(v); }))
+      {
+        return; // a receiver about as far as the light's depth reaches (w about 0)
+      }
     }
     std::vector<Plane> prismPlanes;
     for (int a = 0; a < 3; ++a)
@@ -1691,7 +1687,7 @@ void vtkFXAVSMPass::ComputeShadowedPixels(
   rect[1] = height;
   rect[2] = 0;
   rect[3] = 0;
-  const int pad = static_cast<int>(std::ceil(0.5 * this->ReceiverWidth));
+  const int pad = 1; // (rounding)
   for (const Point& corner : corners)
   {
     double p[4] = { corner[0], corner[1], corner[2], 1.0 };

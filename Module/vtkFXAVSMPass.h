@@ -280,20 +280,20 @@ public:
   /**
    * Look the shadows up only inside the screen rectangle that the region
    * the casters can shadow projects to (default on): in each light view,
-   * the casters' extent across the view, wider by two texels and half
-   * their widest point or line, from their nearest depth to the farthest
-   * receiver, cut by each opaque prop's bounds (so a large tilted ground
-   * does not carry it to its lowest corner) and seen by the viewer, grown
-   * by half the receivers' widest point or line; the whole screen when
-   * that region reaches the viewer's plane. Splats count with their
-   * spheres (SplatRadius times their scale; a receiver's with its
-   * triangle), which VTK's bounds leave out; a prop whose extent cannot be
-   * told (an assembly part with UseBounds off, splats whose scale array is
-   * missing) makes it the whole view or screen. Pixels outside are
-   * unshadowed without running the shader. The result is the same either
-   * way; off is for comparison. (AVSM-8, 1280x720, three alternating runs:
-   * look-up 32 -> 23 ms on scene:particles, 30 -> 21 on scene:cloud, 29 ->
-   * 11 on scene:isoshadow.)
+   * the casters' extent across the view, two texels wider, from their
+   * nearest depth to the farthest receiver, cut by each opaque prop's
+   * bounds (so a large tilted ground does not carry it to its lowest
+   * corner) and seen by the viewer; the whole screen when that region
+   * reaches the viewer's plane. Splats count with their spheres
+   * (SplatRadius times their scale; a receiver's with its triangle), which
+   * VTK's bounds leave out. A prop drawn past what can be told of it (an
+   * assembly part with UseBounds off, points or lines wider than a pixel,
+   * whose impostors also write nearer depths) makes it the whole view
+   * (casters) or screen (receivers). Pixels outside are unshadowed
+   * without running the shader. The result is the same either way; off is
+   * for comparison. (AVSM-8, 1280x720, three alternating runs: look-up 32
+   * -> 23 ms on scene:particles, 30 -> 21 on scene:cloud, 29 -> 11 on
+   * scene:isoshadow.)
    */
   vtkSetMacro(CullLookUp, bool);
   vtkGetMacro(CullLookUp, bool);
@@ -439,7 +439,6 @@ protected:
     // coordinates: their x, y range (within the view) and from their
     // nearest depth to the far plane (xmin, xmax, ymin, ymax, zmin, zmax).
     double ShadowedBox[6] = { -1.0, 1.0, -1.0, 1.0, -1.0, 1.0 };
-    double CasterWidth = 1.0; // its casters' widest point or line (texels)
     int Origin[2] = { 0, 0 };                 // atlas texel of its corner
   };
   // A casting light and its views.
@@ -458,9 +457,9 @@ protected:
     bool perspective, const double nearFar[2]);
   void ComputeCasterDepthRange(LightView& view) const; // its SliceRange and ShadowedBox
   // Where `prop` is drawn: its bounds grown by its splats' reach (splatReach
-  // times their scale; below 0, their triangles') and its widest point or
-  // line (pixels); false when that cannot be told (anywhere).
-  static bool DrawnExtent(vtkProp* prop, double splatReach, double bounds[6], double& width);
+  // times their scale; below 0, their triangles'); false when that cannot
+  // be told (anywhere).
+  static bool DrawnExtent(vtkProp* prop, double splatReach, double bounds[6]);
   // The viewer's pixels (x0, y0, x1, y1, ends excluded) of a width x height
   // target where a receiver can be in some view's ShadowedBox.
   void ComputeShadowedPixels(vtkOpenGLRenderer* ren, int width, int height, int rect[4]) const;
@@ -510,7 +509,6 @@ protected:
   bool SkipBackground = true;
   bool CullLookUp = true;
   std::vector<std::array<double, 6>> ReceiverBounds; // where this frame's opaque props are drawn
-  double ReceiverWidth = 1.0;     // their widest point or line (pixels)
   bool ReceiversAnywhere = false; // one of them may be drawn anywhere
   int LookUpPixels[4] = { 0, 0, 0, 0 };
   vtkIdType CapacityLimit = 0;

@@ -49,6 +49,7 @@
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
 
+#include "vtkActorCollection.h"
 #include "vtkAppendPolyData.h"
 #include "vtkCallbackCommand.h"
 #include "vtkLight.h"
@@ -654,8 +655,9 @@ int CheckTilesAcrossViews(vtkRenderWindow* window)
 // of the ground under a directional light (parallel and perspective
 // viewers), a spot light, a point light (six views) and a viewer near the
 // ground looking along it, under the casters, where the shadowed ground
-// reaches behind it (nothing is left out then); and splats sized by an
-// array in a scaled assembly.
+// reaches behind it (nothing is left out then); splats sized by an array
+// in a scaled assembly; and a ground whose lines would be 3 pixels wide
+// (a receiver drawn past its bounds: nothing left out).
 int CheckLookUpCulling(vtkRenderWindow* window)
 {
   std::vector<std::array<double, 3>> centers;
@@ -669,6 +671,10 @@ int CheckLookUpCulling(vtkRenderWindow* window)
     camera->SetViewUp(0.0, 0.0, 1.0);
     camera->SetClippingRange(0.05, 30.0);
   };
+  const auto wideGroundLines = [window](vtkCamera*) {
+    vtkActor* ground = window->GetRenderers()->GetFirstRenderer()->GetActors()->GetLastActor();
+    ground->GetProperty()->SetLineWidth(3.0f);
+  };
   struct Case
   {
     const char* Name;
@@ -681,7 +687,8 @@ int CheckLookUpCulling(vtkRenderWindow* window)
     { "directional light, perspective viewer", false, 0.0, 60.0, nullptr, 1 },
     { "spot light", false, 8.0, 40.0, nullptr, 1 }, { "point light", false, 4.0, 90.0, nullptr, -1 },
     { "viewer under the casters", false, 0.0, 60.0, lookAlongGround, 0 },
-    { "splats sized by an array, in a scaled assembly", false, 0.0, 60.0, nullptr, 1 } };
+    { "splats sized by an array, in a scaled assembly", false, 0.0, 60.0, nullptr, 1 },
+    { "the ground with lines 3 pixels wide (anywhere)", false, 0.0, 60.0, wideGroundLines, 0 } };
   // Splats whose sizes come from an array (0.5 and 2, times the scale
   // factor), in an assembly that scales them by 1.5 about the origin:
   // VTK's bounds hold their centres only.
