@@ -244,7 +244,7 @@ bool vtkFXAVSMPass::HasWork(const vtkFXSceneInfo& scene)
     {
       this->ReceiversAnywhere = true;
     }
-    else if (vtkMath::AreBoundsInitialized(bounds.data()))
+    else
     {
       this->ReceiverBounds.push_back(bounds);
     }
@@ -745,7 +745,8 @@ bool vtkFXAVSMPass::DrawnExtent(vtkProp* prop, double splatReach, double bounds[
   // TriangleScale: an opaque splat's extent),
   // down to the parts of assemblies, as CaptureKey walks them. An
   // assembly's bounds leave out parts with UseBounds off or without
-  // bounds, which are drawn all the same, and points or lines wider than a
+  // bounds, which are drawn all the same, a prop may report no bounds and
+  // draw (below), and points or lines wider than a
   // pixel reach past them sideways (and sphere or tube impostors write
   // depths nearer the viewer): anywhere, then.
   const double* b = prop->GetBounds();
@@ -756,8 +757,9 @@ bool vtkFXAVSMPass::DrawnExtent(vtkProp* prop, double splatReach, double bounds[
   double reach = 0.0;
   if (!vtkMath::AreBoundsInitialized(b))
   {
-    std::copy(b, b + 6, bounds); // nothing drawn (grown, they would be a box)
-    return true;
+    // Not only props without data: VTK 9.1's point-gaussian mapper reports
+    // no bounds for composite input, which it draws.
+    return false;
   }
   vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop);
   prop->InitPathTraversal();
@@ -825,10 +827,6 @@ void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
     {
       wholeView();
       continue;
-    }
-    if (!vtkMath::AreBoundsInitialized(reached))
-    {
-      continue; // nothing drawn
     }
     const int reachedBehind =
       vtkFXRenderUtilities::ProjectBox(reached, &toClip->Element[0][0], ndcMin, ndcMax);
