@@ -359,6 +359,49 @@ int CheckSplatSphere(vtkRenderWindow* window, bool exact, double height,
   return EXIT_SUCCESS;
 }
 
+// A splat whose sphere reaches out of the visible props' bounds (which
+// hold its centre only) and past the light view's near plane: a splat of
+// scale 1 (sphere radius R = SplatRadius) at height 1.8 over a ground 2
+// units wide, lit from straight above (the view's near plane at 2.58, the
+// sphere's top at 3.53). The chord comes from the splat's centre depth, so
+// none of it is cut: the ground under it gets
+// exp(-ln 2 sqrt(1 - rho^2 / R^2)) (within 0.01 away from the ground's
+// edge).
+int CheckSplatAboveBounds(vtkRenderWindow* window)
+{
+  auto avsm = MakeAVSM(8, false, true);
+  avsm->SetShadowMapSize(2048);
+  const double R = avsm->GetSplatRadius();
+  const auto shrinkGround = [window](vtkCamera*) {
+    vtkActor* ground = window->GetRenderers()->GetFirstRenderer()->GetActors()->GetLastActor();
+    ground->SetScale(0.1, 0.1, 1.0);
+  };
+  const auto v = Visibility(window, avsm, { Splats({ { 0.0, 0.0, 1.8 } }, 1.0, 0.5) }, true, 1,
+    0.0, 60.0, 0.0, 22.0, shrinkGround);
+  FX_CHECK(v.size() == static_cast<size_t>(Width) * Height, "no visibility");
+  const double unitsPerPixel = 8.0 / Height; // parallel scale 4
+  double worst = 0.0, centre = -1.0;
+  for (int y = 0; y < Height; ++y)
+  {
+    for (int x = 0; x < Width; ++x)
+    {
+      const double px = (x + 0.5 - 0.5 * Width) * unitsPerPixel;
+      const double py = (y + 0.5 - 0.5 * Height) * unitsPerPixel;
+      if (std::max(std::fabs(px), std::fabs(py)) < 0.8)
+      {
+        const double rho = std::sqrt(px * px + py * py);
+        const double expected = std::exp(-std::log(2.0) * std::sqrt(1.0 - rho * rho / (R * R)));
+        worst = std::max(worst, std::fabs(v[static_cast<size_t>(y) * Width + x] - expected));
+      }
+    }
+  }
+  centre = v[static_cast<size_t>(Height / 2) * Width + Width / 2];
+  std::cout << "splat reaching out of the props' bounds towards the light: centre " << centre
+            << " (expected 0.5), largest error " << worst << std::endl;
+  FX_CHECK(worst < 0.01, "a splat reaching out of the bounds: shadow off by " << worst);
+  return EXIT_SUCCESS;
+}
+
 // Two white splats (scale 0.3, opacity 0.5) side by side at x = -1 and
 // x = 1, z = 2, lit along -x only, over GroundScene's ground (which the
 // light grazes: black), in a pipeline with `avsm`. The ground is returned
@@ -1794,6 +1837,7 @@ int TestAVSM(int, char*[])
   FX_CHECK(CheckStageSwitching(window) == EXIT_SUCCESS, "frames with and without opaque props");
   FX_CHECK(CheckArrivalOrder(window) == EXIT_SUCCESS, "order independence");
   FX_CHECK(CheckLookUpCulling(window) == EXIT_SUCCESS, "look-up culling");
+  FX_CHECK(CheckSplatAboveBounds(window) == EXIT_SUCCESS, "splat reaching out of the bounds");
   FX_CHECK(CheckTilesAcrossViews(window) == EXIT_SUCCESS, "flagged tiles across views");
   // Four splats whose chords overlap along the light (scale 0.6, centres
   // 0.5 apart, spheres 2.1 across): 8 entries and exits, which AVSM-16
