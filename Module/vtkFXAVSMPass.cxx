@@ -1588,14 +1588,13 @@ void vtkFXAVSMPass::ComputeShadowedPixels(
   vtkOpenGLRenderer* ren, int width, int height, int rect[4]) const
 {
   // Each view's ShadowedBox, wider by two texels (a bilinear look-up reads
-  // up to a texel from its point, also just outside a view) and half the
-  // casters' widest point or line, and deep to the farthest receiver (past
-  // the view's far plane a curve's last value holds), in world
-  // coordinates, cut by each receiver's bounds (a tilted ground would
-  // otherwise carry the box down to its lowest corner), then seen by the
-  // viewer: the pieces' corners bound their image, grown by half the
-  // receivers' widest point or line, unless one reaches the viewer's
-  // plane.
+  // up to a texel from its point, also just outside a view) and deep to
+  // the farthest receiver (past the view's far plane a curve's last value
+  // holds), in world coordinates, cut by each receiver's bounds (a tilted
+  // ground would otherwise carry the box down to its lowest corner), then
+  // seen by the viewer: the pieces' corners bound their image, unless one
+  // reaches the viewer's plane. (Props drawn past what their bounds say
+  // made the box the whole view, or set ReceiversAnywhere: DrawnExtent.)
   rect[0] = rect[1] = 0;
   rect[2] = width;
   rect[3] = height;
@@ -1644,7 +1643,9 @@ void vtkFXAVSMPass::ComputeShadowedPixels(
       double p[4] = { region[i & 1], region[2 + ((i >> 1) & 1)], region[4 + ((i >> 2) & 1)], 1.0 };
       lightToWorld->MultiplyPoint(p, p);
       prism[i] = { p[0] / p[3], p[1] / p[3], p[2] / p[3] };
-      if (!(p[3] > 0.0) || !std::all_of(prism[i].begin(), prism[i].end(), [](double v) { return std::isfinite(v); }))
+      const bool finite = std::all_of(
+        prism[i].begin(), prism[i].end(), [](double v) { return std::isfinite(v); });
+      if (!(p[3] > 0.0) || !finite)
       {
         return; // a receiver about as far as the light's depth reaches (w about 0)
       }
