@@ -15,7 +15,6 @@
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
-#include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
@@ -672,27 +671,14 @@ double SplatScale(vtkPointGaussianMapper* splats)
   {
     return factor;
   }
-  std::vector<vtkDataSet*> sets;
-  vtkDataObject* input = splats->GetInputDataObject(0, 0);
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> leaf;
-    leaf.TakeReference(composite->NewIterator());
-    for (leaf->InitTraversal(); !leaf->IsDoneWithTraversal(); leaf->GoToNextItem())
-    {
-      if (auto* set = vtkDataSet::SafeDownCast(leaf->GetCurrentDataObject()))
-      {
-        sets.push_back(set);
-      }
-    }
-  }
-  else if (auto* set = vtkDataSet::SafeDownCast(input))
-  {
-    sets.push_back(set);
-  }
   double largest = 0.0;
-  for (vtkDataSet* set : sets)
+  for (vtkDataObject* leaf : vtkFXRenderUtilities::Leaves(splats->GetInputDataObject(0, 0)))
   {
+    auto* set = vtkDataSet::SafeDownCast(leaf);
+    if (!set)
+    {
+      continue;
+    }
     vtkDataArray* values = set->GetPointData()->GetArray(splats->GetScaleArray());
     if (!values || values->GetNumberOfTuples() == 0)
     {
@@ -720,6 +706,12 @@ double SplatScale(vtkPointGaussianMapper* splats)
   return largest * factor;
 }
 
+// Whether every value in [begin, end) is finite.
+bool AllFinite(const double* begin, const double* end)
+{
+  return std::all_of(begin, end, [](double v) { return std::isfinite(v); });
+}
+
 // How far along any world axis `matrix` takes a point at distance 1 from
 // another: its rows' largest length (a sphere's box grows by the radius
 // times row i's length along axis i, sheared or not; 1 without a matrix).
@@ -742,25 +734,20 @@ bool vtkFXAVSMPass::DrawnExtent(vtkProp* prop, double splatReach, double bounds[
   // The prop's bounds, grown by its splats' reach (VTK's bounds of splats
   // hold their centres only: a splat reaches splatReach times its scale,
   // or where splatReach < 0, its triangle's corner, twice its
-  // TriangleScale: an opaque splat's extent),
-  // down to the parts of assemblies, as CaptureKey walks them. An
-  // assembly's bounds leave out parts with UseBounds off or without
-  // bounds, which are drawn all the same, a prop may report no bounds and
-  // draw (below), and points or lines wider than a
-  // pixel reach past them sideways (and sphere or tube impostors write
-  // depths nearer the viewer): anywhere, then.
+  // TriangleScale: an opaque splat's extent), down to the parts of
+  // assemblies, as CaptureKey walks them. Anywhere (false) where the
+  // bounds do not hold what is drawn: a prop without bounds (VTK 9.1's
+  // point-gaussian mapper reports none for composite input, which it
+  // draws), an assembly part with UseBounds off or without bounds (its
+  // assembly's bounds leave it out), points or lines wider than a pixel
+  // (they reach past the bounds sideways, and sphere or tube impostors
+  // write depths nearer the viewer).
   const double* b = prop->GetBounds();
-  if (!b)
+  if (!b || !vtkMath::AreBoundsInitialized(b))
   {
     return false;
   }
   double reach = 0.0;
-  if (!vtkMath::AreBoundsInitialized(b))
-  {
-    // Not only props without data: VTK 9.1's point-gaussian mapper reports
-    // no bounds for composite input, which it draws.
-    return false;
-  }
   vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop);
   prop->InitPathTraversal();
   while (vtkAssemblyPath* path = prop->GetNextPath())
@@ -791,7 +778,7 @@ bool vtkFXAVSMPass::DrawnExtent(vtkProp* prop, double splatReach, double bounds[
   {
     bounds[i] = b[i] + (i % 2 ? reach : -reach);
   }
-  return std::all_of(bounds, bounds + 6, [](double v) { return std::isfinite(v); });
+  return AllFinite(bounds, bounds + 6);
 }
 
 void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
@@ -834,9 +821,7 @@ void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
     {
       continue;
     }
-    if (reachedBehind > 0 ||
-      !std::all_of(ndcMin, ndcMin + 3, [](double v) { return std::isfinite(v); }) ||
-      !std::all_of(ndcMax, ndcMax + 3, [](double v) { return std::isfinite(v); }))
+    if (reachedBehind > 0 || !AllFinite(ndcMin, ndcMin + 3) || !AllFinite(ndcMax, ndcMax + 3))
     {
       wholeView();
       continue;
@@ -1640,12 +1625,11 @@ void vtkFXAVSMPass::ComputeShadowedPixels(
     Point prism[8];
     for (int i = 0; i < 8; ++i)
     {
-      double p[4] = { region[i & 1], region[2 + ((i >> 1) & 1)], region[4 + ((i >> 2) & 1)], 1.0 };
+      double p[4] = { 0.0, 0.0, 0.0, 1.0 };
+      vtkFXRenderUtilities::BoxCorner(region, i, p);
       lightToWorld->MultiplyPoint(p, p);
       prism[i] = { p[0] / p[3], p[1] / p[3], p[2] / p[3] };
-      const bool finite = std::all_of(
-        prism[i].begin(), prism[i].end(), [](double v) { return std::isfinite(v); });
-      if (!(p[3] > 0.0) || !finite)
+      if (!(p[3] > 0.0) || !AllFinite(prism[i].data(), prism[i].data() + 3))
       {
         return; // a receiver about as far as the light's depth reaches (w about 0)
       }
@@ -1668,25 +1652,22 @@ void vtkFXAVSMPass::ComputeShadowedPixels(
     const std::vector<Polygon> prismFaces = BoxFaces(prism);
     for (const auto& b : this->ReceiverBounds)
     {
-      if (!(b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5]))
-      {
-        continue;
-      }
       Point receiver[8];
       for (int i = 0; i < 8; ++i)
       {
-        receiver[i] = { b[i & 1], b[2 + ((i >> 1) & 1)], b[4 + ((i >> 2) & 1)] };
+        vtkFXRenderUtilities::BoxCorner(b.data(), i, receiver[i].data());
       }
       const std::vector<Plane> receiverPlanes = { { 1, 0, 0, -b[0] }, { -1, 0, 0, b[1] },
         { 0, 1, 0, -b[2] }, { 0, -1, 0, b[3] }, { 0, 0, 1, -b[4] }, { 0, 0, -1, b[5] } };
       AddIntersectionCorners(prismFaces, prismPlanes, BoxFaces(receiver), receiverPlanes, corners);
     }
   }
-  rect[0] = width;
-  rect[1] = height;
-  rect[2] = 0;
-  rect[3] = 0;
-  const int pad = 1; // (rounding)
+  // (one pixel more on each side for the rounding)
+  const auto pixel = [](double ndc, int size, bool up) {
+    const double at = 0.5 * (std::min(std::max(ndc, -2.0), 2.0) + 1.0) * size;
+    return up ? static_cast<int>(std::ceil(at)) + 1 : static_cast<int>(std::floor(at)) - 1;
+  };
+  int image[4] = { width, height, 0, 0 };
   for (const Point& corner : corners)
   {
     double p[4] = { corner[0], corner[1], corner[2], 1.0 };
@@ -1695,21 +1676,14 @@ void vtkFXAVSMPass::ComputeShadowedPixels(
     const double y = p[1] / p[3];
     if (!(p[3] > 0.0) || !std::isfinite(x) || !std::isfinite(y))
     {
-      // at or behind the viewer's plane: anywhere on the screen
-      rect[0] = rect[1] = 0;
-      rect[2] = width;
-      rect[3] = height;
-      return;
+      return; // at or behind the viewer's plane: anywhere on the screen
     }
-    const auto pixel = [pad](double ndc, int size, bool up) {
-      const double at = 0.5 * (std::min(std::max(ndc, -2.0), 2.0) + 1.0) * size;
-      return up ? static_cast<int>(std::ceil(at)) + pad : static_cast<int>(std::floor(at)) - pad;
-    };
-    rect[0] = std::min(rect[0], std::max(0, pixel(x, width, false)));
-    rect[1] = std::min(rect[1], std::max(0, pixel(y, height, false)));
-    rect[2] = std::max(rect[2], std::min(width, pixel(x, width, true)));
-    rect[3] = std::max(rect[3], std::min(height, pixel(y, height, true)));
+    image[0] = std::min(image[0], std::max(0, pixel(x, width, false)));
+    image[1] = std::min(image[1], std::max(0, pixel(y, height, false)));
+    image[2] = std::max(image[2], std::min(width, pixel(x, width, true)));
+    image[3] = std::max(image[3], std::min(height, pixel(y, height, true)));
   }
+  std::copy(image, image + 4, rect);
 }
 
 bool vtkFXAVSMPass::LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window)
@@ -2150,4 +2124,3 @@ void vtkFXAVSMPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CapturedFragments: " << this->CapturedFragments << " (capacity "
      << this->Capacity << ")\n";
 }
-

@@ -8,8 +8,6 @@
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
-#include "vtkCompositeDataIterator.h"
-#include "vtkCompositeDataSet.h"
 #include "vtkDataObject.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleKey.h"
@@ -293,20 +291,8 @@ bool vtkFXGBufferPass::PerturbsNormal(vtkProp* prop)
     vtkPolyData* mesh = vtkPolyData::SafeDownCast(object);
     return mesh && mesh->GetPointData()->GetTangents() && mesh->GetPointData()->GetTCoords();
   };
-  if (auto* blocks = vtkCompositeDataSet::SafeDownCast(data))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> leaves;
-    leaves.TakeReference(blocks->NewIterator());
-    for (leaves->InitTraversal(); !leaves->IsDoneWithTraversal(); leaves->GoToNextItem())
-    {
-      if (mapped(leaves->GetCurrentDataObject()))
-      {
-        return true;
-      }
-    }
-    return false;
-  }
-  return mapped(data);
+  const std::vector<vtkDataObject*> leaves = vtkFXRenderUtilities::Leaves(data);
+  return std::any_of(leaves.begin(), leaves.end(), mapped);
 }
 
 vtkTextureObject* vtkFXGBufferPass::GetDepthTexture()

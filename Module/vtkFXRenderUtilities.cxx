@@ -1,6 +1,8 @@
 #include "vtkFXRenderUtilities.h"
 
 #include "vtkCamera.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMatrix4x4.h"
@@ -648,6 +650,32 @@ bool vtkFXRenderUtilities::RenderTargetScope::IsComplete() const
   return glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
 }
 
+void vtkFXRenderUtilities::BoxCorner(const double box[6], int i, double corner[3])
+{
+  corner[0] = box[i & 1];
+  corner[1] = box[2 + ((i >> 1) & 1)];
+  corner[2] = box[4 + ((i >> 2) & 1)];
+}
+
+std::vector<vtkDataObject*> vtkFXRenderUtilities::Leaves(vtkDataObject* data)
+{
+  std::vector<vtkDataObject*> leaves;
+  if (auto* blocks = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> leaf;
+    leaf.TakeReference(blocks->NewIterator());
+    for (leaf->InitTraversal(); !leaf->IsDoneWithTraversal(); leaf->GoToNextItem())
+    {
+      leaves.push_back(leaf->GetCurrentDataObject());
+    }
+  }
+  else if (data)
+  {
+    leaves.push_back(data);
+  }
+  return leaves;
+}
+
 int vtkFXRenderUtilities::ProjectBox(
   const double box[6], const double m[16], double ndcMin[3], double ndcMax[3])
 {
@@ -659,8 +687,8 @@ int vtkFXRenderUtilities::ProjectBox(
   }
   for (int corner = 0; corner < 8; ++corner)
   {
-    const double p[3] = { box[corner & 1], box[2 + ((corner >> 1) & 1)],
-      box[4 + ((corner >> 2) & 1)] };
+    double p[3];
+    BoxCorner(box, corner, p);
     const double w = m[12] * p[0] + m[13] * p[1] + m[14] * p[2] + m[15];
     if (!(w > 0.0))
     {

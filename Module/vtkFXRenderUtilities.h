@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+class vtkDataObject;
 class vtkLight;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
@@ -237,6 +238,18 @@ public:
    * constant, ndc.x and ndc.y coefficients. Exposed for tests and CPU code.
    */
   static void ComputeFrustumRay(vtkRenderer* renderer, double origin[3][3], double direction[3][3]);
+
+  /**
+   * Corner `i` (0..7) of the axis-aligned box `box` (xmin, xmax, ymin,
+   * ymax, zmin, zmax): x from bit 0, y from bit 1, z from bit 2.
+   */
+  static void BoxCorner(const double box[6], int i, double corner[3]);
+
+  /**
+   * The data sets of `data`: the leaves of a composite dataset, in order,
+   * or `data` itself (none for nullptr).
+   */
+  static std::vector<vtkDataObject*> Leaves(vtkDataObject* data);
 
   /**
    * Projects the 8 corners of the axis-aligned box `box` (xmin, xmax,

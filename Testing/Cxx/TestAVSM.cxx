@@ -258,6 +258,13 @@ int CheckHalves(const char* name, const std::vector<float>& v, double under, dou
   return EXIT_SUCCESS;
 }
 
+// Whether two read-back textures hold the same bytes (and any at all).
+bool SameBytes(const std::vector<float>& a, const std::vector<float>& b)
+{
+  return a.size() == b.size() && !a.empty() &&
+    std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
 vtkSmartPointer<vtkFXAVSMPass> MakeAVSM(int nodes, bool exact, bool bilinear)
 {
   auto avsm = vtkSmartPointer<vtkFXAVSMPass>::New();
@@ -592,8 +599,7 @@ int CheckArrivalOrder(vtkRenderWindow* window)
       {
         FX_CHECK(results[0][r].size() == results[other][r].size() && !results[0][r].empty(),
           "AVSM-" << nodes << ": missing output " << r);
-        differ[other] += std::memcmp(results[0][r].data(), results[other][r].data(),
-                           results[0][r].size() * sizeof(float)) != 0 ? 1 : 0;
+        differ[other] += SameBytes(results[0][r], results[other][r]) ? 0 : 1;
       }
     }
     std::cout << "AVSM-" << nodes << ", casters in reverse order: " << differ[1] << " of "
@@ -651,8 +657,7 @@ int CheckTilesAcrossViews(vtkRenderWindow* window)
   {
     FX_CHECK(r < results[1].size() && results[0][r].size() == results[1][r].size() &&
         !results[0][r].empty(), "tiles across views: missing output " << r);
-    differ += std::memcmp(results[0][r].data(), results[1][r].data(),
-                results[0][r].size() * sizeof(float)) != 0 ? 1 : 0;
+    differ += SameBytes(results[0][r], results[1][r]) ? 0 : 1;
   }
   // (texels with a curve: results[0][1] holds the first four node depths)
   size_t withCurve = 0;
@@ -812,8 +817,7 @@ int CheckLookUpCulling(vtkRenderWindow* window)
     {
       shadowed += t < 0.999f ? 1 : 0;
     }
-    const bool same = v[0].size() == v[1].size() && !v[0].empty() &&
-      std::memcmp(v[0].data(), v[1].data(), v[0].size() * sizeof(float)) == 0;
+    const bool same = SameBytes(v[0], v[1]);
     std::cout << "look-up culling, " << c.Name << ": " << pixels[1] << " of " << pixels[0]
               << " pixels looked up, " << shadowed << " shadowed, "
               << (same ? "identical" : "DIFFERENT") << std::endl;
@@ -859,8 +863,7 @@ int CheckLookUpCulling(vtkRenderWindow* window)
         }
       }
     }
-    const bool same = v[0].size() == v[1].size() && !v[0].empty() &&
-      std::memcmp(v[0].data(), v[1].data(), v[0].size() * sizeof(float)) == 0;
+    const bool same = SameBytes(v[0], v[1]);
     const char* name = spot ? "small slab, spot light's cone edge across it" : "small slab";
     std::cout << "look-up culling, " << name << ": shadow in pixels " << lo[0] << "-" << hi[0]
               << " x " << lo[1] << "-" << hi[1] << ", looked up " << r[0] << "-" << r[2] - 1
