@@ -232,12 +232,17 @@ bool vtkFXAVSMPass::HasWork(const vtkFXSceneInfo& scene)
   this->Casters.clear();
   std::copy_if(scene.TranslucentViewProps.begin(), scene.TranslucentViewProps.end(),
     std::back_inserter(this->Casters), CanCast);
-  // Where the look-up's receivers are drawn (CullLookUp): the props the
-  // G-buffer captures (forward-drawn ones are shaded without the look-up).
+  // Where the look-up's receivers are drawn (CullLookUp only): the props
+  // the G-buffer captures (forward-drawn ones are shaded without the
+  // look-up).
   this->ReceiverBounds.clear();
   this->ReceiversAnywhere = false;
   for (vtkProp* prop : scene.OpaqueProps)
   {
+    if (!this->CullLookUp)
+    {
+      break;
+    }
     std::array<double, 6> bounds;
     if (!DrawnExtent(prop, -1.0, bounds.data()))
     {
