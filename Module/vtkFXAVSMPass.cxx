@@ -539,7 +539,7 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
   // box around it; from a spot light, the perspective view of its cone;
   // from any other positional light, the six faces of a cube.
   double bounds[6];
-  ren->ComputeVisiblePropBounds(bounds);
+  vtkFXRenderUtilities::ComputeVisiblePropBounds(ren, bounds);
   double center[3] = { 0.0, 0.0, 0.0 };
   double radius = 1.0;
   if (vtkMath::AreBoundsInitialized(bounds))
@@ -741,14 +741,14 @@ bool vtkFXAVSMPass::DrawnExtent(vtkProp* prop, double splatReach, double bounds[
   // or where splatReach < 0, its triangle's corner, twice its
   // TriangleScale: an opaque splat's extent), down to the parts of
   // assemblies, as CaptureKey walks them. Anywhere (false) where the
-  // bounds do not hold what is drawn: a prop without bounds (VTK 9.1's
-  // point-gaussian mapper reports none for composite input, which it
-  // draws), an assembly part with UseBounds off or without bounds (its
-  // assembly's bounds leave it out), points or lines wider than a pixel
-  // (they reach past the bounds sideways, and sphere or tube impostors
-  // write depths nearer the viewer).
-  const double* b = prop->GetBounds();
-  if (!b || !vtkMath::AreBoundsInitialized(b))
+  // bounds do not hold what is drawn: a prop without bounds (even those
+  // vtkFXRenderUtilities::GetDrawnBounds puts back), an assembly part with
+  // UseBounds off or without bounds (its assembly's bounds leave it out),
+  // points or lines wider than a pixel (they reach past the bounds
+  // sideways, and sphere or tube impostors write depths nearer the
+  // viewer).
+  double b[6];
+  if (!vtkFXRenderUtilities::GetDrawnBounds(prop, b))
   {
     return false;
   }
@@ -758,7 +758,9 @@ bool vtkFXAVSMPass::DrawnExtent(vtkProp* prop, double splatReach, double bounds[
   while (vtkAssemblyPath* path = prop->GetNextPath())
   {
     vtkProp* part = path->GetLastNode()->GetViewProp();
-    if (part != prop && (!part->GetUseBounds() || !part->GetBounds()))
+    double partBounds[6];
+    if (part != prop &&
+      (!part->GetUseBounds() || !vtkFXRenderUtilities::GetDrawnBounds(part, partBounds)))
     {
       return false;
     }
@@ -804,9 +806,17 @@ void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
   };
   for (vtkProp* prop : this->Casters)
   {
-    const double* b = prop->GetBounds();
+    double b[6];
+    if (!vtkFXRenderUtilities::GetDrawnBounds(prop, b))
+    {
+      // (no bounds: it may be at any depth, and shadow anything)
+      lo = 0.0;
+      hi = 1.0;
+      wholeView();
+      continue;
+    }
     double ndcMin[3], ndcMax[3];
-    const int behind = b ? vtkFXRenderUtilities::ProjectBox(b, &toClip->Element[0][0], ndcMin, ndcMax) : 8;
+    const int behind = vtkFXRenderUtilities::ProjectBox(b, &toClip->Element[0][0], ndcMin, ndcMax);
     if (behind != 8)
     {
       lo = std::min(lo, behind > 0 ? 0.0 : LightDepthFromNDC(view, ndcMin[2]));

@@ -99,9 +99,10 @@ bool vtkFXBloomPass::HasWork(const vtkFXSceneInfo& scene)
   vtkBoundingBox emissive;
   for (vtkProp* prop : scene.EmissiveProps)
   {
-    if (const double* b = prop->GetBounds())
+    double b[6];
+    if (vtkFXRenderUtilities::GetDrawnBounds(prop, b))
     {
-      emissive.AddBounds(b); // skips a prop without bounds
+      emissive.AddBounds(b);
     }
   }
   emissive.GetBounds(this->EmissiveBounds); // uninitialized when none has bounds

@@ -1,10 +1,16 @@
 #include "vtkFXRenderUtilities.h"
 
+#include "vtkActor.h"
+#include "vtkAssemblyNode.h"
+#include "vtkAssemblyPath.h"
+#include "vtkBoundingBox.h"
 #include "vtkCamera.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkDataSet.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -13,6 +19,8 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPointGaussianMapper.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -674,6 +682,98 @@ std::vector<vtkDataObject*> vtkFXRenderUtilities::Leaves(vtkDataObject* data)
     leaves.push_back(data);
   }
   return leaves;
+}
+
+bool vtkFXRenderUtilities::GetDrawnBounds(vtkProp* prop, double bounds[6])
+{
+  vtkMath::UninitializeBounds(bounds);
+  if (!prop)
+  {
+    return false;
+  }
+  vtkBoundingBox box;
+  const double* own = prop->GetBounds();
+  if (own && vtkMath::AreBoundsInitialized(own))
+  {
+    box.AddBounds(own);
+  }
+  vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop);
+  prop->InitPathTraversal();
+  while (vtkAssemblyPath* path = prop->GetNextPath())
+  {
+    auto* actor = vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp());
+    auto* splats = actor ? vtkPointGaussianMapper::SafeDownCast(actor->GetMapper()) : nullptr;
+    if (!splats || (actor != prop && !actor->GetUseBounds()))
+    {
+      continue;
+    }
+    const double* reported = splats->GetBounds();
+    if (reported && vtkMath::AreBoundsInitialized(reported))
+    {
+      continue; // (in the prop's bounds already)
+    }
+    vtkBoundingBox centres;
+    for (vtkDataObject* leaf : Leaves(splats->GetInputDataObject(0, 0)))
+    {
+      auto* data = vtkDataSet::SafeDownCast(leaf);
+      if (data && data->GetNumberOfPoints() > 0)
+      {
+        centres.AddBounds(data->GetBounds());
+      }
+    }
+    if (!centres.IsValid())
+    {
+      continue;
+    }
+    double local[6];
+    centres.GetBounds(local);
+    vtkMatrix4x4* matrix =
+      actor == prop3D ? prop3D->GetMatrix() : path->GetLastNode()->GetMatrix();
+    for (int i = 0; i < 8; ++i)
+    {
+      double corner[4] = { 0.0, 0.0, 0.0, 1.0 };
+      BoxCorner(local, i, corner);
+      if (matrix)
+      {
+        matrix->MultiplyPoint(corner, corner);
+        for (int a = 0; a < 3; ++a)
+        {
+          corner[a] /= corner[3];
+        }
+      }
+      box.AddPoint(corner);
+    }
+  }
+  if (!box.IsValid())
+  {
+    return false;
+  }
+  box.GetBounds(bounds);
+  return true;
+}
+
+void vtkFXRenderUtilities::ComputeVisiblePropBounds(vtkRenderer* renderer, double bounds[6])
+{
+  vtkBoundingBox box;
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    double b[6];
+    if (prop->GetVisibility() && prop->GetUseBounds() && GetDrawnBounds(prop, b))
+    {
+      box.AddBounds(b);
+    }
+  }
+  if (box.IsValid())
+  {
+    box.GetBounds(bounds);
+  }
+  else
+  {
+    vtkMath::UninitializeBounds(bounds);
+  }
 }
 
 int vtkFXRenderUtilities::ProjectBox(

@@ -29,6 +29,7 @@ class vtkOpenGLRenderWindow;
 class vtkOpenGLVertexArrayObject;
 class vtkRenderWindow;
 class vtkRenderer;
+class vtkProp;
 class vtkRenderState;
 class vtkShaderProgram;
 class vtkTextureObject;
@@ -250,6 +251,25 @@ public:
    * or `data` itself (none for nullptr).
    */
   static std::vector<vtkDataObject*> Leaves(vtkDataObject* data);
+
+  /**
+   * The bounds of what `prop` draws (xmin, xmax, ymin, ymax, zmin, zmax):
+   * its GetBounds, with what VTK leaves out put back. VTK 9.1's
+   * vtkPointGaussianMapper reports no bounds for composite input, which it
+   * draws; for such an actor, or such a part of an assembly (UseBounds
+   * on), the bounds of its leaves' points are taken through the actor's
+   * or the assembly path's matrix. Splats reach past their centres by
+   * their radius: these are the centres' bounds, as VTK gives for
+   * polydata. False, with the bounds uninitialized, where nothing is known.
+   */
+  static bool GetDrawnBounds(vtkProp* prop, double bounds[6]);
+
+  /**
+   * vtkRenderer::ComputeVisiblePropBounds through GetDrawnBounds: the
+   * bounds of the visible props that use bounds, uninitialized when none
+   * has any.
+   */
+  static void ComputeVisiblePropBounds(vtkRenderer* renderer, double bounds[6]);
 
   /**
    * Projects the 8 corners of the axis-aligned box `box` (xmin, xmax,

@@ -279,7 +279,7 @@ double vtkFXSSAOPass::ComputeRadius(vtkRenderer* ren) const
     return representable(this->Radius);
   }
   double bounds[6];
-  ren->ComputeVisiblePropBounds(bounds);
+  vtkFXRenderUtilities::ComputeVisiblePropBounds(ren, bounds);
   if (!vtkMath::AreBoundsInitialized(bounds))
   {
     return 1.0;

@@ -275,9 +275,10 @@ vtkSmartPointer<vtkFXAVSMPass> MakeAVSM(int nodes, bool exact, bool bilinear)
 }
 
 // Point-gaussian splats at `centers`, of scale `scale` and opacity
-// `opacity` (white, unlit as VTK draws them).
-vtkSmartPointer<vtkActor> Splats(
-  const std::vector<std::array<double, 3>>& centers, double scale, double opacity)
+// `opacity` (white, unlit as VTK draws them); with `composite`, the cloud
+// is the second block of a multi-block data set (the first one empty).
+vtkSmartPointer<vtkActor> Splats(const std::vector<std::array<double, 3>>& centers, double scale,
+  double opacity, bool composite = false)
 {
   vtkNew<vtkPoints> points;
   for (const auto& c : centers)
@@ -287,7 +288,18 @@ vtkSmartPointer<vtkActor> Splats(
   vtkNew<vtkPolyData> cloud;
   cloud->SetPoints(points);
   vtkNew<vtkPointGaussianMapper> mapper;
-  mapper->SetInputData(cloud);
+  if (composite)
+  {
+    vtkNew<vtkMultiBlockDataSet> blocks;
+    blocks->SetNumberOfBlocks(2);
+    blocks->SetBlock(0, vtkNew<vtkPolyData>());
+    blocks->SetBlock(1, cloud);
+    mapper->SetInputDataObject(blocks);
+  }
+  else
+  {
+    mapper->SetInputData(cloud);
+  }
   mapper->SetScaleFactor(scale);
   mapper->EmissiveOff();
   auto actor = vtkSmartPointer<vtkActor>::New();
@@ -366,25 +378,31 @@ int CheckSplatSphere(vtkRenderWindow* window, bool exact, double height,
   return EXIT_SUCCESS;
 }
 
-// A splat whose sphere reaches out of the visible props' bounds (which
-// hold its centre only) and past the light view's near plane: a splat of
-// scale 1 (sphere radius R = SplatRadius) at height 1.8 over a ground 2
-// units wide, lit from straight above (the view's near plane at 2.58, the
-// sphere's top at 3.53). The chord comes from the splat's centre depth, so
-// none of it is cut: the ground under it gets
-// exp(-ln 2 sqrt(1 - rho^2 / R^2)) (within 0.01 away from the ground's
-// edge).
-int CheckSplatAboveBounds(vtkRenderWindow* window)
+// One splat of scale 1 and opacity 0.5 (sphere radius R = SplatRadius) at
+// `height` over the origin, above the ground (scaled by `groundScale` in
+// x and y), lit from straight above: the ground under it gets the whole
+// chord, exp(-ln 2 sqrt(1 - rho^2 / R^2)), within 0.01 (checked within
+// 0.8 of the axis, away from the ground's edge). The cases:
+// - a splat whose sphere reaches out of the visible props' bounds (which
+//   hold its centre only) and past the light view's near plane: height
+//   1.8 over a ground 2 units wide (the view's near plane at 2.58, the
+//   sphere's top at 3.53). The chord comes from the splat's centre depth,
+//   so none of it is cut;
+// - a splat of composite data, for which VTK 9.1's point-gaussian mapper
+//   reports no bounds, at height 16, out of the bounding sphere of the
+//   20-unit ground (radius 14.1): the light views must fit it too.
+int CheckSplatShadowBelow(
+  vtkRenderWindow* window, const char* name, double height, double groundScale, bool composite)
 {
   auto avsm = MakeAVSM(8, false, true);
   avsm->SetShadowMapSize(2048);
   const double R = avsm->GetSplatRadius();
-  const auto shrinkGround = [window](vtkCamera*) {
+  const auto scaleGround = [window, groundScale](vtkCamera*) {
     vtkActor* ground = window->GetRenderers()->GetFirstRenderer()->GetActors()->GetLastActor();
-    ground->SetScale(0.1, 0.1, 1.0);
+    ground->SetScale(groundScale, groundScale, 1.0);
   };
-  const auto v = Visibility(window, avsm, { Splats({ { 0.0, 0.0, 1.8 } }, 1.0, 0.5) }, true, 1,
-    0.0, 60.0, 0.0, 22.0, shrinkGround);
+  const auto v = Visibility(window, avsm, { Splats({ { 0.0, 0.0, height } }, 1.0, 0.5, composite) },
+    true, 1, 0.0, 60.0, 0.0, 22.0, scaleGround);
   FX_CHECK(v.size() == static_cast<size_t>(Width) * Height, "no visibility");
   const double unitsPerPixel = 8.0 / Height; // parallel scale 4
   double worst = 0.0, centre = -1.0;
@@ -403,9 +421,62 @@ int CheckSplatAboveBounds(vtkRenderWindow* window)
     }
   }
   centre = v[static_cast<size_t>(Height / 2) * Width + Width / 2];
-  std::cout << "splat reaching out of the props' bounds towards the light: centre " << centre
-            << " (expected 0.5), largest error " << worst << std::endl;
-  FX_CHECK(worst < 0.01, "a splat reaching out of the bounds: shadow off by " << worst);
+  std::cout << name << ": centre " << centre << " (expected 0.5), largest error " << worst
+            << std::endl;
+  FX_CHECK(worst < 0.01, name << ": shadow off by " << worst);
+  return EXIT_SUCCESS;
+}
+
+// vtkFXRenderUtilities::GetDrawnBounds on splats of composite data (for
+// which VTK 9.1 reports no bounds): their centres' bounds through the
+// actor's matrix, and through the assembly path's for a part; a part with
+// UseBounds off and an empty cloud add nothing; ComputeVisiblePropBounds
+// takes them with the other props. Exact up to rounding (1e-12).
+int CheckDrawnBounds()
+{
+  const auto near = [](const double* a, const std::array<double, 6>& b) {
+    for (int i = 0; i < 6; ++i)
+    {
+      if (!(std::fabs(a[i] - b[i]) <= 1e-12 * (1.0 + std::fabs(b[i]))))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  const auto cloud = [] { return Splats({ { -1.0, 0.0, 2.0 }, { 1.0, 0.5, 3.0 } }, 1.0, 0.5, true); };
+  double b[6];
+  // moved 5 along x, scaled 2 about its origin
+  auto actor = cloud();
+  actor->SetPosition(5.0, 0.0, 0.0);
+  actor->SetScale(2.0);
+  FX_CHECK(vtkFXRenderUtilities::GetDrawnBounds(actor, b) && near(b, { 3, 7, 0, 1, 4, 6 }),
+    "composite splats: bounds " << b[0] << " " << b[1] << " " << b[2] << " " << b[3] << " " << b[4]
+                                << " " << b[5]);
+  // a part of an assembly moved 10 along y (the part's own matrix, then
+  // the assembly's)
+  vtkNew<vtkAssembly> assembly;
+  assembly->AddPart(actor);
+  assembly->SetPosition(0.0, 10.0, 0.0);
+  FX_CHECK(vtkFXRenderUtilities::GetDrawnBounds(assembly, b) && near(b, { 3, 7, 10, 11, 4, 6 }),
+    "composite splats in an assembly: bounds " << b[0] << " " << b[1] << " " << b[2] << " "
+                                               << b[3] << " " << b[4] << " " << b[5]);
+  actor->UseBoundsOff();
+  FX_CHECK(!vtkFXRenderUtilities::GetDrawnBounds(assembly, b),
+    "a part with UseBounds off counted in its assembly's bounds");
+  actor->UseBoundsOn();
+  auto empty = Splats({}, 1.0, 0.5, true);
+  FX_CHECK(!vtkFXRenderUtilities::GetDrawnBounds(empty, b), "an empty cloud has bounds");
+  // with a plain prop, in a renderer
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(Quad(-10.0, 10.0, 0.0, 1.0));
+  renderer->AddActor(cloud());
+  renderer->AddActor(empty);
+  vtkFXRenderUtilities::ComputeVisiblePropBounds(renderer, b);
+  FX_CHECK(near(b, { -10, 10, -10, 10, 0, 3 }),
+    "visible props' bounds " << b[0] << " " << b[1] << " " << b[2] << " " << b[3] << " " << b[4]
+                             << " " << b[5]);
+  std::cout << "drawn bounds of composite splats: as expected" << std::endl;
   return EXIT_SUCCESS;
 }
 
@@ -704,8 +775,10 @@ int CheckTilesAcrossViews(vtkRenderWindow* window)
 // viewers), a spot light, a point light (six views) and a viewer near the
 // ground looking along it, under the casters, where the shadowed ground
 // reaches behind it (nothing is left out then); splats sized by an array
-// in a scaled assembly; and a ground whose lines would be 3 pixels wide
-// (a receiver drawn past its bounds: nothing left out).
+// in a scaled assembly; splats of composite data (whose bounds come from
+// their blocks), alone and in a scaled assembly; and a ground whose lines
+// would be 3 pixels wide (a receiver drawn past its bounds: nothing left
+// out).
 int CheckLookUpCulling(vtkRenderWindow* window)
 {
   std::vector<std::array<double, 3>> centers;
@@ -770,6 +843,17 @@ int CheckLookUpCulling(vtkRenderWindow* window)
     actor->GetProperty()->SetOpacity(0.5);
     return vtkSmartPointer<vtkProp>(actor);
   };
+  // The same in an assembly that scales them by 1.5 about the origin and
+  // moves them 3 units along x, out of where their blocks' bounds are
+  // (VTK 9.1 reports no bounds for the part, and leaves it out of the
+  // assembly's).
+  const auto compositeSplatsInAssembly = [&compositeSplats]() {
+    vtkNew<vtkAssembly> assembly;
+    assembly->AddPart(vtkProp3D::SafeDownCast(compositeSplats()));
+    assembly->SetScale(1.5);
+    assembly->SetPosition(3.0, 0.0, 0.0);
+    return vtkSmartPointer<vtkProp>(assembly);
+  };
   const auto wideGroundLines = [window](vtkCamera*) {
     vtkActor* ground = window->GetRenderers()->GetFirstRenderer()->GetActors()->GetLastActor();
     ground->GetProperty()->SetLineWidth(3.0f);
@@ -788,8 +872,10 @@ int CheckLookUpCulling(vtkRenderWindow* window)
     { "spot light", false, 8.0, 40.0, nullptr, 1 }, { "point light", false, 4.0, 90.0, nullptr, -1 },
     { "viewer under the casters", false, 0.0, 60.0, lookAlongGround, 0 },
     { "splats sized by an array, in a scaled assembly", false, 0.0, 60.0, nullptr, 1, sizedSplats },
-    { "splats of composite data sized by vector lengths (VTK 9.1 reports no bounds)", false, 0.0,
-      60.0, nullptr, -1, compositeSplats },
+    { "splats of composite data sized by vector lengths (bounds from the blocks)", false, 0.0,
+      60.0, nullptr, 1, compositeSplats },
+    { "splats of composite data in a scaled assembly", false, 0.0, 60.0, nullptr, 1,
+      compositeSplatsInAssembly },
     { "the ground with lines 3 pixels wide (anywhere)", false, 0.0, 60.0, wideGroundLines, 0 } };
   for (const Case& c : cases)
   {
@@ -1840,7 +1926,13 @@ int TestAVSM(int, char*[])
   FX_CHECK(CheckStageSwitching(window) == EXIT_SUCCESS, "frames with and without opaque props");
   FX_CHECK(CheckArrivalOrder(window) == EXIT_SUCCESS, "order independence");
   FX_CHECK(CheckLookUpCulling(window) == EXIT_SUCCESS, "look-up culling");
-  FX_CHECK(CheckSplatAboveBounds(window) == EXIT_SUCCESS, "splat reaching out of the bounds");
+  FX_CHECK(CheckSplatShadowBelow(window, "splat reaching out of the props' bounds towards the light",
+             1.8, 0.1, false) == EXIT_SUCCESS,
+    "splat reaching out of the bounds");
+  FX_CHECK(CheckDrawnBounds() == EXIT_SUCCESS, "drawn bounds");
+  FX_CHECK(CheckSplatShadowBelow(window, "splat of composite data out of the other props' bounds",
+             16.0, 1.0, true) == EXIT_SUCCESS,
+    "composite splats out of the bounds");
   FX_CHECK(CheckTilesAcrossViews(window) == EXIT_SUCCESS, "flagged tiles across views");
   // Four splats whose chords overlap along the light (scale 0.6, centres
   // 0.5 apart, spheres 2.1 across): 8 entries and exits, which AVSM-16
