@@ -244,11 +244,12 @@ bool vtkFXAVSMPass::HasWork(const vtkFXSceneInfo& scene)
       break;
     }
     std::array<double, 6> bounds;
-    if (!DrawnExtent(prop, -1.0, bounds.data()))
+    const int kind = DrawnExtent(prop, -1.0, bounds.data());
+    if (kind == vtkFXRenderUtilities::DrawsAnywhere)
     {
       this->ReceiversAnywhere = true;
     }
-    else
+    else if (kind == vtkFXRenderUtilities::DrawsWithin)
     {
       this->ReceiverBounds.push_back(bounds);
     }
@@ -734,35 +735,43 @@ double Stretch(vtkMatrix4x4* matrix)
 }
 }
 
-bool vtkFXAVSMPass::DrawnExtent(vtkProp* prop, double splatReach, double bounds[6])
+int vtkFXAVSMPass::DrawnExtent(vtkProp* prop, double splatReach, double bounds[6])
 {
-  // The prop's bounds, grown by its splats' reach (VTK's bounds of splats
-  // hold their centres only: a splat reaches splatReach times its scale,
-  // or where splatReach < 0, its triangle's corner, twice its
-  // TriangleScale: an opaque splat's extent), down to the parts of
-  // assemblies, as CaptureKey walks them. Anywhere (false) where the
-  // bounds do not hold what is drawn: a prop without bounds (even those
-  // vtkFXRenderUtilities::GetDrawnBounds puts back), an assembly part with
-  // UseBounds off or without bounds (its assembly's bounds leave it out),
-  // points or lines wider than a pixel (they reach past the bounds
-  // sideways, and sphere or tube impostors write depths nearer the
-  // viewer).
-  double b[6];
-  if (!vtkFXRenderUtilities::GetDrawnBounds(prop, b))
+  // The prop's bounds (vtkFXRenderUtilities::GetDrawnBounds: splats'
+  // centres included), grown by its splats' reach (a splat reaches
+  // splatReach times its scale, or where splatReach < 0, its triangle's
+  // corner, twice its TriangleScale: an opaque splat's extent), down to
+  // the visible parts of assemblies, as CaptureKey walks them. Anywhere
+  // where the bounds do not hold what is drawn: a 3D prop without bounds,
+  // an assembly part with UseBounds off or without bounds (its assembly's
+  // bounds leave it out), points or lines wider than a pixel (they reach
+  // past the bounds sideways, and sphere or tube impostors write depths
+  // nearer the viewer).
+  using RU = vtkFXRenderUtilities;
+  const int kind = RU::GetDrawnBounds(prop, bounds);
+  if (kind != RU::DrawsWithin)
   {
-    return false;
+    return kind;
   }
   double reach = 0.0;
-  vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop);
   prop->InitPathTraversal();
   while (vtkAssemblyPath* path = prop->GetNextPath())
   {
     vtkProp* part = path->GetLastNode()->GetViewProp();
-    double partBounds[6];
-    if (part != prop &&
-      (!part->GetUseBounds() || !vtkFXRenderUtilities::GetDrawnBounds(part, partBounds)))
+    if (part != prop && !part->GetVisibility())
     {
-      return false;
+      continue; // (not drawn)
+    }
+    double partBounds[6];
+    const int partKind = part == prop ? kind : RU::GetDrawnBounds(part, partBounds);
+    if (partKind == RU::DrawsNothing)
+    {
+      continue;
+    }
+    if (!part->GetUseBounds() || partKind == RU::DrawsAnywhere)
+    {
+      vtkMath::UninitializeBounds(bounds);
+      return RU::DrawsAnywhere;
     }
     vtkActor* actor = vtkActor::SafeDownCast(part);
     if (!actor)
@@ -771,21 +780,39 @@ bool vtkFXAVSMPass::DrawnExtent(vtkProp* prop, double splatReach, double bounds[
     }
     if (actor->GetProperty()->GetPointSize() > 1.0f || actor->GetProperty()->GetLineWidth() > 1.0f)
     {
-      return false;
+      vtkMath::UninitializeBounds(bounds);
+      return RU::DrawsAnywhere;
     }
     if (auto* splats = vtkPointGaussianMapper::SafeDownCast(actor->GetMapper()))
     {
       const double scale = SplatScale(splats);
-      vtkMatrix4x4* matrix = actor == prop3D ? prop3D->GetMatrix() : path->GetLastNode()->GetMatrix();
       const double perScale = splatReach < 0.0 ? 2.0 * splats->GetTriangleScale() : splatReach;
-      reach = std::max(reach, perScale * scale * Stretch(matrix));
+      reach = std::max(reach, perScale * scale * Stretch(RU::PathMatrix(prop, path)));
     }
   }
   for (int i = 0; i < 6; ++i)
   {
-    bounds[i] = b[i] + (i % 2 ? reach : -reach);
+    bounds[i] += i % 2 ? reach : -reach;
   }
-  return AllFinite(bounds, bounds + 6);
+  if (!AllFinite(bounds, bounds + 6))
+  {
+    vtkMath::UninitializeBounds(bounds);
+    return RU::DrawsAnywhere;
+  }
+  return RU::DrawsWithin;
+}
+
+void vtkFXAVSMPass::MeasureCasters()
+{
+  // (once a frame: the views all use them)
+  this->CasterExtents.clear();
+  for (vtkProp* prop : this->Casters)
+  {
+    CasterExtent extent;
+    extent.Kind = vtkFXRenderUtilities::GetDrawnBounds(prop, extent.Bounds);
+    extent.ReachKind = DrawnExtent(prop, this->SplatRadius, extent.Reached);
+    this->CasterExtents.push_back(extent);
+  }
 }
 
 void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
@@ -793,6 +820,7 @@ void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
   // The casters' bounds seen from the light, in light depth (0..1, see
   // vtkFXAVSMLightDepth.glsl). A box reaching behind a spot or point light
   // (the light inside the data) starts at the near plane.
+  using RU = vtkFXRenderUtilities;
   double lo = 1.0, hi = 0.0;
   double* box = view.ShadowedBox;
   box[0] = box[2] = box[4] = 1.0;
@@ -804,10 +832,13 @@ void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
     box[0] = box[2] = box[4] = -1.0;
     box[1] = box[3] = box[5] = 1.0;
   };
-  for (vtkProp* prop : this->Casters)
+  for (const CasterExtent& extent : this->CasterExtents)
   {
-    double b[6];
-    if (!vtkFXRenderUtilities::GetDrawnBounds(prop, b))
+    if (extent.Kind == RU::DrawsNothing)
+    {
+      continue;
+    }
+    if (extent.Kind == RU::DrawsAnywhere)
     {
       // (no bounds: it may be at any depth, and shadow anything)
       lo = 0.0;
@@ -816,7 +847,7 @@ void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
       continue;
     }
     double ndcMin[3], ndcMax[3];
-    const int behind = vtkFXRenderUtilities::ProjectBox(b, &toClip->Element[0][0], ndcMin, ndcMax);
+    const int behind = RU::ProjectBox(extent.Bounds, &toClip->Element[0][0], ndcMin, ndcMax);
     if (behind != 8)
     {
       lo = std::min(lo, behind > 0 ? 0.0 : LightDepthFromNDC(view, ndcMin[2]));
@@ -824,14 +855,13 @@ void vtkFXAVSMPass::ComputeCasterDepthRange(LightView& view) const
     }
     // What it can shadow: where it is drawn, from its nearest depth on; a
     // box reaching behind the light, anything in its view.
-    double reached[6];
-    if (!DrawnExtent(prop, this->SplatRadius, reached))
+    if (extent.ReachKind != RU::DrawsWithin)
     {
       wholeView();
       continue;
     }
     const int reachedBehind =
-      vtkFXRenderUtilities::ProjectBox(reached, &toClip->Element[0][0], ndcMin, ndcMax);
+      RU::ProjectBox(extent.Reached, &toClip->Element[0][0], ndcMin, ndcMax);
     if (reachedBehind == 8)
     {
       continue;
@@ -1791,6 +1821,7 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
     return;
   }
   this->FitLightViews(ren);
+  this->MeasureCasters();
   // Kept for the frame: the casters are forgotten after Render, and VTK's
   // translucent step (translucent receivers) comes later.
   for (LightView& view : this->Views)
@@ -1876,6 +1907,7 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
   // The casters and lights are the frame's (HasWork sets them again); the
   // lights' indices and views stay for the translucent step.
   this->Casters.clear();
+  this->CasterExtents.clear();
   for (CastingLight& casting : this->CastingLights)
   {
     casting.Light = nullptr;
@@ -2044,16 +2076,12 @@ std::vector<double> vtkFXAVSMPass::CaptureKey()
   for (vtkProp* prop : this->Casters)
   {
     add(static_cast<double>(reinterpret_cast<std::uintptr_t>(prop)));
-    vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop);
-    vtkMatrix4x4* own = prop3D ? prop3D->GetMatrix() : nullptr; // (computed now)
     prop->InitPathTraversal();
     while (vtkAssemblyPath* path = prop->GetNextPath())
     {
       vtkProp* part = path->GetLastNode()->GetViewProp();
       add(static_cast<double>(reinterpret_cast<std::uintptr_t>(part)));
-      // A prop alone: its own matrix (its path's copy is made once); an
-      // assembly's part: the path's, which the assembly rebuilds.
-      vtkMatrix4x4* matrix = part == prop ? own : path->GetLastNode()->GetMatrix();
+      vtkMatrix4x4* matrix = vtkFXRenderUtilities::PathMatrix(prop, path);
       if (matrix)
       {
         key.insert(key.end(), matrix->GetData(), matrix->GetData() + 16);
@@ -2096,6 +2124,7 @@ void vtkFXAVSMPass::AbandonFrame(vtkOpenGLRenderWindow* window)
   this->KeptKey.clear();
   this->Views.clear();
   this->Casters.clear();
+  this->CasterExtents.clear();
   this->CastingLights.clear();
 }
 

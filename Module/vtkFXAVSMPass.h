@@ -457,9 +457,20 @@ protected:
     bool perspective, const double nearFar[2]);
   void ComputeCasterDepthRange(LightView& view) const; // its SliceRange and ShadowedBox
   // Where `prop` is drawn: its bounds grown by its splats' reach (splatReach
-  // times their scale; below 0, their triangles'); false when that cannot
-  // be told (anywhere).
-  static bool DrawnExtent(vtkProp* prop, double splatReach, double bounds[6]);
+  // times their scale; below 0, their triangles'), as a
+  // vtkFXRenderUtilities::DrawnBoundsKind (DrawsAnywhere when that cannot
+  // be told).
+  static int DrawnExtent(vtkProp* prop, double splatReach, double bounds[6]);
+  // This frame's CasterExtents, from Casters.
+  void MeasureCasters();
+  struct CasterExtent
+  {
+    int Kind;          // GetDrawnBounds's, of Bounds
+    double Bounds[6];  // what it draws (splats' centres)
+    int ReachKind;     // DrawnExtent's, of Reached
+    double Reached[6]; // what its splats reach
+  };
+  std::vector<CasterExtent> CasterExtents;
   // The viewer's pixels (x0, y0, x1, y1, ends excluded) of a width x height
   // target where a receiver can be in some view's ShadowedBox.
   void ComputeShadowedPixels(vtkOpenGLRenderer* ren, int width, int height, int rect[4]) const;

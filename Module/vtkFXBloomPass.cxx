@@ -97,15 +97,24 @@ bool vtkFXBloomPass::HasWork(const vtkFXSceneInfo& scene)
 {
   // Where the glow can be: around the emissive props (see ComputeGlowRect).
   vtkBoundingBox emissive;
+  bool anywhere = false;
   for (vtkProp* prop : scene.EmissiveProps)
   {
     double b[6];
-    if (vtkFXRenderUtilities::GetDrawnBounds(prop, b))
+    const int kind = vtkFXRenderUtilities::GetDrawnBounds(prop, b);
+    anywhere = anywhere || kind == vtkFXRenderUtilities::DrawsAnywhere;
+    if (kind == vtkFXRenderUtilities::DrawsWithin)
     {
       emissive.AddBounds(b);
     }
   }
-  emissive.GetBounds(this->EmissiveBounds); // uninitialized when none has bounds
+  // (uninitialized, glow anywhere, when a prop's extent is unknown or none
+  // has any)
+  emissive.GetBounds(this->EmissiveBounds);
+  if (anywhere)
+  {
+    vtkMath::UninitializeBounds(this->EmissiveBounds);
+  }
   // The emission channel only when something emits: a threshold alone
   // reads the lit image.
   this->ReadsEmission = this->UseEmission && !scene.EmissiveProps.empty() &&

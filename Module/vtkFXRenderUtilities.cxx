@@ -9,7 +9,8 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
-#include "vtkDataSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -20,6 +21,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkPointGaussianMapper.h"
+#include "vtkPropAssembly.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
@@ -684,41 +686,28 @@ std::vector<vtkDataObject*> vtkFXRenderUtilities::Leaves(vtkDataObject* data)
   return leaves;
 }
 
-bool vtkFXRenderUtilities::GetDrawnBounds(vtkProp* prop, double bounds[6])
+namespace
 {
-  vtkMath::UninitializeBounds(bounds);
-  if (!prop)
-  {
-    return false;
-  }
-  vtkBoundingBox box;
-  const double* own = prop->GetBounds();
-  if (own && vtkMath::AreBoundsInitialized(own))
-  {
-    box.AddBounds(own);
-  }
-  vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop);
+// Adds to `box` the points of the point-gaussian actors of `prop` (see
+// vtkFXRenderUtilities::GetDrawnBounds).
+void AddSplatCentres(vtkProp* prop, vtkBoundingBox& box)
+{
   prop->InitPathTraversal();
   while (vtkAssemblyPath* path = prop->GetNextPath())
   {
     auto* actor = vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp());
     auto* splats = actor ? vtkPointGaussianMapper::SafeDownCast(actor->GetMapper()) : nullptr;
-    if (!splats || (actor != prop && !actor->GetUseBounds()))
+    if (!splats || (actor != prop && (!actor->GetVisibility() || !actor->GetUseBounds())))
     {
       continue;
     }
-    const double* reported = splats->GetBounds();
-    if (reported && vtkMath::AreBoundsInitialized(reported))
-    {
-      continue; // (in the prop's bounds already)
-    }
     vtkBoundingBox centres;
-    for (vtkDataObject* leaf : Leaves(splats->GetInputDataObject(0, 0)))
+    for (vtkDataObject* leaf : vtkFXRenderUtilities::Leaves(splats->GetInputDataObject(0, 0)))
     {
-      auto* data = vtkDataSet::SafeDownCast(leaf);
+      auto* data = vtkPolyData::SafeDownCast(leaf); // (VTK draws no other blocks)
       if (data && data->GetNumberOfPoints() > 0)
       {
-        centres.AddBounds(data->GetBounds());
+        centres.AddBounds(data->GetPoints()->GetBounds());
       }
     }
     if (!centres.IsValid())
@@ -727,12 +716,11 @@ bool vtkFXRenderUtilities::GetDrawnBounds(vtkProp* prop, double bounds[6])
     }
     double local[6];
     centres.GetBounds(local);
-    vtkMatrix4x4* matrix =
-      actor == prop3D ? prop3D->GetMatrix() : path->GetLastNode()->GetMatrix();
+    vtkMatrix4x4* matrix = vtkFXRenderUtilities::PathMatrix(prop, path);
     for (int i = 0; i < 8; ++i)
     {
       double corner[4] = { 0.0, 0.0, 0.0, 1.0 };
-      BoxCorner(local, i, corner);
+      vtkFXRenderUtilities::BoxCorner(local, i, corner);
       if (matrix)
       {
         matrix->MultiplyPoint(corner, corner);
@@ -744,36 +732,102 @@ bool vtkFXRenderUtilities::GetDrawnBounds(vtkProp* prop, double bounds[6])
       box.AddPoint(corner);
     }
   }
+}
+}
+
+int vtkFXRenderUtilities::GetDrawnBounds(vtkProp* prop, double bounds[6])
+{
+  vtkMath::UninitializeBounds(bounds);
+  if (auto* group = vtkPropAssembly::SafeDownCast(prop))
+  {
+    // Its parts' (VTK's vtkPropAssembly::GetBounds takes a part's
+    // uninitialized bounds for a box).
+    return GetPartsBounds(group, bounds);
+  }
+  const double* own = prop ? prop->GetBounds() : nullptr;
+  if (!own)
+  {
+    return vtkProp3D::SafeDownCast(prop) ? DrawsAnywhere : DrawsNothing;
+  }
+  vtkBoundingBox box;
+  if (vtkMath::AreBoundsInitialized(own))
+  {
+    box.AddBounds(own);
+  }
+  AddSplatCentres(prop, box);
   if (!box.IsValid())
   {
-    return false;
+    return DrawsNothing;
   }
   box.GetBounds(bounds);
-  return true;
+  return DrawsWithin;
+}
+
+int vtkFXRenderUtilities::GetPartsBounds(vtkPropAssembly* group, double bounds[6])
+{
+  vtkBoundingBox box;
+  vtkPropCollection* parts = group->GetParts();
+  vtkCollectionSimpleIterator it;
+  parts->InitTraversal(it);
+  while (vtkProp* part = parts->GetNextProp(it))
+  {
+    if (!part->GetVisibility() || !part->GetUseBounds())
+    {
+      continue;
+    }
+    double b[6];
+    const int kind = GetDrawnBounds(part, b);
+    if (kind == DrawsAnywhere)
+    {
+      vtkMath::UninitializeBounds(bounds);
+      return DrawsAnywhere;
+    }
+    if (kind == DrawsWithin)
+    {
+      box.AddBounds(b);
+    }
+  }
+  if (!box.IsValid())
+  {
+    return DrawsNothing;
+  }
+  box.GetBounds(bounds);
+  return DrawsWithin;
 }
 
 void vtkFXRenderUtilities::ComputeVisiblePropBounds(vtkRenderer* renderer, double bounds[6])
 {
+  renderer->ComputeVisiblePropBounds(bounds);
   vtkBoundingBox box;
+  if (vtkMath::AreBoundsInitialized(bounds))
+  {
+    box.AddBounds(bounds);
+  }
   vtkPropCollection* props = renderer->GetViewProps();
   vtkCollectionSimpleIterator it;
   props->InitTraversal(it);
   while (vtkProp* prop = props->GetNextProp(it))
   {
-    double b[6];
-    if (prop->GetVisibility() && prop->GetUseBounds() && GetDrawnBounds(prop, b))
+    if (prop->GetVisibility() && prop->GetUseBounds())
     {
-      box.AddBounds(b);
+      AddSplatCentres(prop, box);
     }
   }
   if (box.IsValid())
   {
     box.GetBounds(bounds);
   }
-  else
+}
+
+vtkMatrix4x4* vtkFXRenderUtilities::PathMatrix(vtkProp* prop, vtkAssemblyPath* path)
+{
+  vtkAssemblyNode* node = path->GetLastNode();
+  vtkProp3D* part = vtkProp3D::SafeDownCast(node->GetViewProp());
+  if (node->GetViewProp() == prop || !node->GetMatrix())
   {
-    vtkMath::UninitializeBounds(bounds);
+    return part ? part->GetMatrix() : nullptr;
   }
+  return node->GetMatrix();
 }
 
 int vtkFXRenderUtilities::ProjectBox(

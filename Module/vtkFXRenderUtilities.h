@@ -29,7 +29,10 @@ class vtkOpenGLRenderWindow;
 class vtkOpenGLVertexArrayObject;
 class vtkRenderWindow;
 class vtkRenderer;
+class vtkAssemblyPath;
+class vtkMatrix4x4;
 class vtkProp;
+class vtkPropAssembly;
 class vtkRenderState;
 class vtkShaderProgram;
 class vtkTextureObject;
@@ -252,24 +255,49 @@ public:
    */
   static std::vector<vtkDataObject*> Leaves(vtkDataObject* data);
 
-  /**
-   * The bounds of what `prop` draws (xmin, xmax, ymin, ymax, zmin, zmax):
-   * its GetBounds, with what VTK leaves out put back. VTK 9.1's
-   * vtkPointGaussianMapper reports no bounds for composite input, which it
-   * draws; for such an actor, or such a part of an assembly (UseBounds
-   * on), the bounds of its leaves' points are taken through the actor's
-   * or the assembly path's matrix. Splats reach past their centres by
-   * their radius: these are the centres' bounds, as VTK gives for
-   * polydata. False, with the bounds uninitialized, where nothing is known.
-   */
-  static bool GetDrawnBounds(vtkProp* prop, double bounds[6]);
+  /** What GetDrawnBounds knows of where a prop draws. */
+  enum DrawnBoundsKind
+  {
+    DrawsNothing,  // no geometry (empty data), or a 2D prop
+    DrawsWithin,   // within the bounds returned
+    DrawsAnywhere  // a 3D prop that reports no bounds
+  };
 
   /**
-   * vtkRenderer::ComputeVisiblePropBounds through GetDrawnBounds: the
-   * bounds of the visible props that use bounds, uninitialized when none
-   * has any.
+   * The bounds of what `prop` draws (xmin, xmax, ymin, ymax, zmin, zmax):
+   * its GetBounds, with what VTK leaves out put back. VTK's mappers bound
+   * cells, and vtkPointGaussianMapper draws every point, with cells or
+   * without (VTK 9.1 reports no bounds for composite input whose blocks
+   * have no vertex cells); so for every point-gaussian actor, alone or a
+   * part of an assembly (visible, UseBounds on), the bounds of its
+   * polydata's points are added, through the actor's or the assembly
+   * path's matrix (PathMatrix). Splats reach past their centres by their
+   * radius: these are the centres' bounds, as VTK gives for polydata.
+   * Returns DrawsWithin with the bounds; otherwise they are uninitialized.
+   */
+  static int GetDrawnBounds(vtkProp* prop, double bounds[6]);
+
+  /**
+   * GetDrawnBounds of a vtkPropAssembly: the union of its visible parts'
+   * that use bounds (DrawsAnywhere when one does).
+   */
+  static int GetPartsBounds(vtkPropAssembly* group, double bounds[6]);
+
+  /**
+   * The renderer's ComputeVisiblePropBounds (its event fires), with the
+   * points of the visible props' point-gaussian actors added as in
+   * GetDrawnBounds: uninitialized when nothing visible has bounds.
    */
   static void ComputeVisiblePropBounds(vtkRenderer* renderer, double bounds[6]);
+
+  /**
+   * The current matrix that places the last prop of `path`, one of the
+   * paths of `prop`: the prop's own when the path is the prop alone (its
+   * path holds a copy made once), the path's for an assembly's part (the
+   * assembly rebuilds it), and the part's own where the path holds none
+   * (a vtkPropAssembly's part). Null for a prop without a matrix.
+   */
+  static vtkMatrix4x4* PathMatrix(vtkProp* prop, vtkAssemblyPath* path);
 
   /**
    * Projects the 8 corners of the axis-aligned box `box` (xmin, xmax,

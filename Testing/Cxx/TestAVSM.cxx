@@ -57,7 +57,9 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPlaneSource.h"
 #include "vtkCellArray.h"
+#include "vtkActor2D.h"
 #include "vtkAssembly.h"
+#include "vtkPropAssembly.h"
 #include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkTexture.h"
@@ -427,13 +429,17 @@ int CheckSplatShadowBelow(
   return EXIT_SUCCESS;
 }
 
-// vtkFXRenderUtilities::GetDrawnBounds on splats of composite data (for
-// which VTK 9.1 reports no bounds): their centres' bounds through the
-// actor's matrix, and through the assembly path's for a part; a part with
-// UseBounds off and an empty cloud add nothing; ComputeVisiblePropBounds
-// takes them with the other props. Exact up to rounding (1e-12).
+// vtkFXRenderUtilities::GetDrawnBounds on splats, which VTK bounds by
+// their cells (9.1: none for composite data without vertex cells) but
+// draws at every point: the points' bounds through the actor's matrix,
+// through the assembly path's for an assembly's part and the part's own
+// in a vtkPropAssembly; blocks whose vertices hold only some points;
+// invisible parts, empty clouds and 2D props draw nothing; a 3D prop
+// without bounds draws anywhere; ComputeVisiblePropBounds takes the
+// splats with the other props. Exact up to rounding (1e-12).
 int CheckDrawnBounds()
 {
+  using RU = vtkFXRenderUtilities;
   const auto near = [](const double* a, const std::array<double, 6>& b) {
     for (int i = 0; i < 6; ++i)
     {
@@ -444,39 +450,67 @@ int CheckDrawnBounds()
     }
     return true;
   };
+  const auto text = [](const double* b) {
+    std::ostringstream os;
+    os << b[0] << " " << b[1] << " " << b[2] << " " << b[3] << " " << b[4] << " " << b[5];
+    return os.str();
+  };
   const auto cloud = [] { return Splats({ { -1.0, 0.0, 2.0 }, { 1.0, 0.5, 3.0 } }, 1.0, 0.5, true); };
   double b[6];
   // moved 5 along x, scaled 2 about its origin
   auto actor = cloud();
   actor->SetPosition(5.0, 0.0, 0.0);
   actor->SetScale(2.0);
-  FX_CHECK(vtkFXRenderUtilities::GetDrawnBounds(actor, b) && near(b, { 3, 7, 0, 1, 4, 6 }),
-    "composite splats: bounds " << b[0] << " " << b[1] << " " << b[2] << " " << b[3] << " " << b[4]
-                                << " " << b[5]);
+  FX_CHECK(RU::GetDrawnBounds(actor, b) == RU::DrawsWithin && near(b, { 3, 7, 0, 1, 4, 6 }),
+    "composite splats: bounds " << text(b));
   // a part of an assembly moved 10 along y (the part's own matrix, then
-  // the assembly's)
+  // the assembly's), and of a vtkPropAssembly (its own only)
   vtkNew<vtkAssembly> assembly;
   assembly->AddPart(actor);
   assembly->SetPosition(0.0, 10.0, 0.0);
-  FX_CHECK(vtkFXRenderUtilities::GetDrawnBounds(assembly, b) && near(b, { 3, 7, 10, 11, 4, 6 }),
-    "composite splats in an assembly: bounds " << b[0] << " " << b[1] << " " << b[2] << " "
-                                               << b[3] << " " << b[4] << " " << b[5]);
+  FX_CHECK(RU::GetDrawnBounds(assembly, b) == RU::DrawsWithin && near(b, { 3, 7, 10, 11, 4, 6 }),
+    "composite splats in an assembly: bounds " << text(b));
+  auto inPropAssembly = cloud();
+  inPropAssembly->SetPosition(5.0, 0.0, 0.0);
+  vtkNew<vtkPropAssembly> props;
+  props->AddPart(inPropAssembly);
+  FX_CHECK(RU::GetDrawnBounds(props, b) == RU::DrawsWithin && near(b, { 4, 6, 0, 0.5, 2, 3 }),
+    "composite splats in a vtkPropAssembly: bounds " << text(b));
   actor->UseBoundsOff();
-  FX_CHECK(!vtkFXRenderUtilities::GetDrawnBounds(assembly, b),
+  FX_CHECK(RU::GetDrawnBounds(assembly, b) == RU::DrawsNothing,
     "a part with UseBounds off counted in its assembly's bounds");
   actor->UseBoundsOn();
+  actor->VisibilityOff();
+  FX_CHECK(RU::GetDrawnBounds(assembly, b) == RU::DrawsNothing,
+    "an invisible part counted in its assembly's bounds");
+  actor->VisibilityOn();
   auto empty = Splats({}, 1.0, 0.5, true);
-  FX_CHECK(!vtkFXRenderUtilities::GetDrawnBounds(empty, b), "an empty cloud has bounds");
+  FX_CHECK(RU::GetDrawnBounds(empty, b) == RU::DrawsNothing, "an empty cloud has bounds");
+  vtkNew<vtkActor2D> flat;
+  FX_CHECK(RU::GetDrawnBounds(flat, b) == RU::DrawsNothing, "a 2D prop has bounds");
+  // Vertex cells on the first point only (VTK's bounds: that point), in
+  // polydata and in the composite cloud's block.
+  for (bool composite : { false, true })
+  {
+    auto partial = Splats({ { -1.0, 0.0, 2.0 }, { 1.0, 0.5, 3.0 } }, 1.0, 0.5, composite);
+    auto* mapper = vtkPointGaussianMapper::SafeDownCast(partial->GetMapper());
+    vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+    auto* blocks = vtkMultiBlockDataSet::SafeDownCast(input);
+    auto* data = vtkPolyData::SafeDownCast(blocks ? blocks->GetBlock(1) : input);
+    vtkNew<vtkCellArray> verts;
+    verts->InsertNextCell({ 0 });
+    data->SetVerts(verts);
+    FX_CHECK(RU::GetDrawnBounds(partial, b) == RU::DrawsWithin && near(b, { -1, 1, 0, 0.5, 2, 3 }),
+      (composite ? "composite " : "") << "splats with vertices at some points: bounds " << text(b));
+  }
   // with a plain prop, in a renderer
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(Quad(-10.0, 10.0, 0.0, 1.0));
   renderer->AddActor(cloud());
   renderer->AddActor(empty);
-  vtkFXRenderUtilities::ComputeVisiblePropBounds(renderer, b);
-  FX_CHECK(near(b, { -10, 10, -10, 10, 0, 3 }),
-    "visible props' bounds " << b[0] << " " << b[1] << " " << b[2] << " " << b[3] << " " << b[4]
-                             << " " << b[5]);
-  std::cout << "drawn bounds of composite splats: as expected" << std::endl;
+  RU::ComputeVisiblePropBounds(renderer, b);
+  FX_CHECK(near(b, { -10, 10, -10, 10, 0, 3 }), "visible props' bounds " << text(b));
+  std::cout << "drawn bounds of splats: as expected" << std::endl;
   return EXIT_SUCCESS;
 }
 
