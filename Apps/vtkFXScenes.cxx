@@ -120,11 +120,19 @@ vtkSmartPointer<vtkActor> MakeActor(vtkPolyData* data, double r, double g, doubl
   return actor;
 }
 
-vtkSmartPointer<vtkPolyData> WithNormals(vtkPolyData* in)
+// Point normals for a mesh that has none: smooth everywhere, or, with
+// `splitAtFeatures`, split at edges sharper than 30 degrees
+// (vtkPolyDataNormals' and ParaView's Generate Surface Normals defaults), so
+// that a CAD part's edges stay sharp: normals averaged across a 90 degree
+// edge smear its shading and tilt the tangent plane that screen-space
+// occlusion measures from (the fandisk's convex edges came out dark, where
+// the ray-traced reference, from the geometric normal, has none).
+vtkSmartPointer<vtkPolyData> WithNormals(vtkPolyData* in, bool splitAtFeatures = false)
 {
   vtkNew<vtkPolyDataNormals> normals;
   normals->SetInputData(in);
-  normals->SplittingOff();
+  normals->SetSplitting(splitAtFeatures);
+  normals->SetFeatureAngle(30.0);
   normals->ConsistencyOn();
   normals->AutoOrientNormalsOff();
   normals->Update();
@@ -948,7 +956,8 @@ bool vtkFXScenes::Populate(vtkRenderer* renderer, const std::string& input,
     if (poly)
     {
       const bool hasNormals = poly->GetPointData()->GetNormals() != nullptr;
-      renderer->AddActor(MakeActor(hasNormals ? poly.GetPointer() : WithNormals(poly).GetPointer(),
+      renderer->AddActor(
+        MakeActor(hasNormals ? poly.GetPointer() : WithNormals(poly, true).GetPointer(),
         0.85, 0.82, 0.75));
       ok = true;
     }
