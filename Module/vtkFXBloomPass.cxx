@@ -473,7 +473,7 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
   }
   const int levels =
     this->GetNumberOfLevels(static_cast<int>(full->GetWidth()), static_cast<int>(full->GetHeight()),
-      vtkFXRenderUtilities::GetImageRows(window, static_cast<int>(full->GetHeight())));
+      vtkFXRenderUtilities::GetImageRows(s->GetRenderer(), static_cast<int>(full->GetHeight())));
   if (static_cast<int>(this->Levels.size()) > levels)
   {
     while (static_cast<int>(this->Levels.size()) > levels)

@@ -934,9 +934,17 @@ void vtkFXRenderUtilities::ComputeFrustumRay(
   direction[0][2] = -1.0;
 }
 
-int vtkFXRenderUtilities::GetImageRows(vtkRenderWindow* window, int viewportRows)
+int vtkFXRenderUtilities::GetImageRows(vtkRenderer* renderer, int viewportRows)
 {
-  return viewportRows * std::max(1, window->GetTileScale()[1]);
+  vtkRenderWindow* window = renderer->GetRenderWindow();
+  if (!window || window->GetTileScale()[1] <= 1)
+  {
+    return viewportRows;
+  }
+  // (vtkWindow::GetSize counts the tiles: the scaled window's size)
+  const double* viewport = renderer->GetViewport();
+  const long rows = std::lround((viewport[3] - viewport[1]) * window->GetSize()[1]);
+  return static_cast<int>(std::max(1L, rows));
 }
 
 void vtkFXRenderUtilities::SetFrustumRayUniforms(vtkShaderProgram* program, vtkRenderer* renderer)

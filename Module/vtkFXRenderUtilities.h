@@ -230,12 +230,14 @@ public:
   static void SetFrustumRayUniforms(vtkShaderProgram* program, vtkRenderer* renderer);
 
   /**
-   * Rows of the image being made from a viewport of `viewportRows`: those,
-   * times the tiles of a scaled screenshot (vtkWindowToImageFilter renders
-   * it tile by tile, each at the window's size). For effects sized in
-   * fractions or pixels of the output (line widths, glow reach).
+   * Rows the renderer covers in the image being made, whose viewport
+   * shows `viewportRows` now: those, or in a scaled screenshot
+   * (vtkWindowToImageFilter renders it tile by tile, each tile the
+   * window's size, and a renderer may cover part of a tile) its viewport's
+   * height in the whole scaled window. For effects sized in fractions or
+   * pixels of the output (line widths, glow reach).
    */
-  static int GetImageRows(vtkRenderWindow* window, int viewportRows);
+  static int GetImageRows(vtkRenderer* renderer, int viewportRows);
 
   /**
    * Ray terms as described above: origin[3][3] and direction[3][3] are the

@@ -530,8 +530,8 @@ void vtkFXToonPass::Render(const vtkRenderState* s)
     vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   // (so that lines keep their width in the whole image of a scaled
   // screenshot)
-  this->OutputRows = vtkFXRenderUtilities::GetImageRows(
-    window, static_cast<int>(this->GBuffer->GetChannelTexture(GB::LinearDepth)->GetHeight()));
+  this->OutputRows = vtkFXRenderUtilities::GetImageRows(s->GetRenderer(),
+    static_cast<int>(this->GBuffer->GetChannelTexture(GB::LinearDepth)->GetHeight()));
   if (this->FindEdges(s, window))
   {
     this->DrawLines(s, window);

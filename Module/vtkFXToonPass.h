@@ -24,9 +24,10 @@
  *   for an edge;
  * - a crease where the two normals differ by more than CreaseAngle.
  * Lines of LineWidth pixels (at LineReferenceHeight output rows; the width
- * scales with the image's height: the viewport's, or a scaled screenshot's,
- * which vtkWindowToImageFilter renders in tiles of the viewport's size,
- * whose seams lines do not cross) are centred on those pixel
+ * scales with the height the renderer covers in the image: its viewport's,
+ * or in a scaled screenshot, which vtkWindowToImageFilter renders in tiles
+ * of the window's size (whose seams lines do not cross), its viewport's
+ * height in the whole scaled window) are centred on those pixel
  * boundaries, with a coverage ramp of one pixel (anti-aliased), in
  * LineColor. Lines are drawn over translucent props and volumes in front
  * of them.

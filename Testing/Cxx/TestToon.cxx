@@ -738,7 +738,9 @@ int CheckUnlitBackdrop(vtkRenderWindow* window)
 // A screenshot at twice the window's size (vtkWindowToImageFilter renders
 // it in 2 x 2 tiles of the window's size) draws lines as wide, relative to
 // the image, as a window of twice the size: total line coverage within 15%
-// (the tiles' seams cut a little).
+// (the tiles' seams cut a little); so does a renderer on the lower half of
+// the window, which covers part of a tile's rows (its lines were twice as
+// wide: 1033 against 490).
 int CheckScaledScreenshot(vtkRenderWindow* window)
 {
   const auto capture = [&](int scale) {
@@ -771,11 +773,29 @@ int CheckScaledScreenshot(vtkRenderWindow* window)
   const auto plain = capture(2);
   toon->FeatureLinesOn();
   const double tiled = TotalCoverage(Coverage(lined, plain));
+  // A renderer on the lower half of a 200x300 window (200x150 too): a tile
+  // of the screenshot holds 300 of its viewport's rows, not all of them.
+  vtkRenderer* renderer = window->GetRenderers()->GetFirstRenderer();
+  renderer->SetViewport(0.0, 0.0, 1.0, 0.5);
+  window->SetSize(200, 300);
+  const auto halfLined = capture(2);
+  toon->FeatureLinesOff();
+  const auto halfPlain = capture(2);
+  toon->FeatureLinesOn();
+  renderer->SetViewport(0.0, 0.0, 1.0, 1.0);
+  // (its 400x300 pixels of the 400x600 image, bottom up: the window above
+  // its viewport is never cleared and holds what earlier tiles left)
+  const std::vector<unsigned char> lowerLined(halfLined.begin(), halfLined.begin() + 3 * 400 * 300);
+  const std::vector<unsigned char> lowerPlain(halfPlain.begin(), halfPlain.begin() + 3 * 400 * 300);
+  const double halfTiled = TotalCoverage(Coverage(lowerLined, lowerPlain));
   window->SetSize(400, 300);
   std::cout << "lines at 400x300: coverage " << big << " in a window, " << tiled
-            << " in a screenshot of a 200x150 window at scale 2" << std::endl;
+            << " in a screenshot of a 200x150 window at scale 2, " << halfTiled
+            << " of a 200x150 viewport in a 200x300 window at scale 2" << std::endl;
   FX_CHECK(big > 100.0 && std::fabs(tiled / big - 1.0) < 0.15,
     "lines in a scaled screenshot: " << tiled << " for " << big);
+  FX_CHECK(std::fabs(halfTiled / big - 1.0) < 0.15,
+    "lines of a viewport in a scaled screenshot: " << halfTiled << " for " << big);
   return EXIT_SUCCESS;
 }
 }
