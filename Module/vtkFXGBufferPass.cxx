@@ -458,7 +458,7 @@ void vtkFXGBufferPass::Render(const vtkRenderState* s)
   vtkOpenGLState* state = window->GetState();
 
   int width, height;
-  vtkFXRenderUtilities::GetViewportSize(ren, width, height);
+  vtkFXRenderUtilities::GetViewportSize(s, width, height);
 
   state->PushFramebufferBindings();
   this->FrameComplete = this->UpdateTargets(window, width, height);

@@ -23,6 +23,7 @@
 #include "vtkPointGaussianMapper.h"
 #include "vtkPropAssembly.h"
 #include "vtkPropCollection.h"
+#include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -890,10 +891,20 @@ vtkFXRenderUtilities::BlendOntoScope::BlendOntoScope(vtkOpenGLRenderWindow* wind
   state->vtkglBlendFuncSeparate(srcRGB, dstRGB, srcAlpha, dstAlpha);
 }
 
-void vtkFXRenderUtilities::GetViewportSize(vtkRenderer* renderer, int& width, int& height)
+void vtkFXRenderUtilities::GetViewportSize(const vtkRenderState* s, int& width, int& height)
 {
-  int x, y;
-  renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  if (s->GetFrameBuffer())
+  {
+    int size[2];
+    s->GetWindowSize(size);
+    width = size[0];
+    height = size[1];
+  }
+  else
+  {
+    int x, y;
+    s->GetRenderer()->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  }
   width = std::max(width, 1);
   height = std::max(height, 1);
 }

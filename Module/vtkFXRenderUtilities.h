@@ -210,9 +210,12 @@ public:
   }
 
   /**
-   * Size of the renderer's viewport in pixels (its tiled size).
+   * Size in pixels of what a pass given `s` draws: the renderer's tiled
+   * viewport, or where `s` carries a framebuffer (a pass such as
+   * vtkSSAAPass draws its delegates into one of its own, and vtkCameraPass
+   * then sets the viewport to its size), that framebuffer's size.
    */
-  static void GetViewportSize(vtkRenderer* renderer, int& width, int& height);
+  static void GetViewportSize(const vtkRenderState* s, int& width, int& height);
 
   /**
    * The view-space position of the surface seen at a pixel is
