@@ -484,6 +484,17 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
   // alpha of what is under a line becomes opaque where the line covers it.
   vtkFXRenderUtilities::BlendOntoScope blend(
     window, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  // Depth-tested at their surfaces' depth (the shader's gl_FragDepth), not
+  // written: what hides a surface (an opaque prop drawn forward, a lower
+  // layer's preserved depth) hides its lines. The target's depth holds the
+  // G-buffer's surfaces (the composite copies them in).
+  vtkTextureObject* surfaceDepth = this->GBuffer->GetDepthTexture();
+  vtkOpenGLState::ScopedglDepthFunc depthFunc(window->GetState());
+  if (surfaceDepth)
+  {
+    window->GetState()->vtkglEnable(GL_DEPTH_TEST);
+    window->GetState()->vtkglDepthFunc(GL_LEQUAL);
+  }
   // gl_FragCoord counts from the framebuffer's corner, the edges from the
   // viewport's.
   int viewport[4];
@@ -491,6 +502,11 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
   program->SetUniform2i("fxOrigin", viewport);
   this->Edges->Activate();
   program->SetUniformi("fxEdges", this->Edges->GetTextureUnit());
+  if (surfaceDepth)
+  {
+    surfaceDepth->Activate();
+    program->SetUniformi("fxSurfaceDepth", surfaceDepth->GetTextureUnit());
+  }
   program->SetUniform2i("fxEdgeSize", size);
   program->SetUniformf(
     "fxHalfWidth", static_cast<float>(0.5 * this->GetEffectiveLineWidth(this->OutputRows)));
@@ -504,6 +520,10 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
   program->SetUniform3f("fxLineColor", color);
   vtkFXRenderUtilities::DrawTiles(this->LineTiles, program, window, viewport, size, this->TilesFlagged);
   this->Edges->Deactivate();
+  if (surfaceDepth)
+  {
+    surfaceDepth->Deactivate();
+  }
 }
 
 void vtkFXToonPass::Render(const vtkRenderState* s)

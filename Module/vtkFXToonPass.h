@@ -30,7 +30,9 @@
  * height in the whole scaled window) are centred on those pixel
  * boundaries, with a coverage ramp of one pixel (anti-aliased), in
  * LineColor. Lines are drawn over translucent props and volumes in front
- * of them.
+ * of them; opaque ones hide them (each line pixel is depth-tested at the
+ * depth of the surface it belongs to), also props the G-buffer does not
+ * capture (drawn forward) and a lower layer's preserved depth.
  *
  * Reads: the G-buffer's normals (bands and lines) and linear depth (lines).
  * Writes: composite code (bands); lines blended onto the image (the
@@ -44,7 +46,8 @@
  * 8x8 tile, the tiles lines can reach (CullLineTiles); then the lines, one
  * point per flagged tile, of 1 (lines under 1 px), 4 (under 3 px) or 9
  * (under 5 px) gathers of edge blocks per pixel (wider lines read texel
- * by texel up to the two nearest marks). Without image stores (or with
+ * by texel up to the two nearest marks), and 3 fetches of the G-buffer's
+ * depth per line pixel. Without image stores (or with
  * CullLineTiles off) the edges are the colour output of a pass over the
  * pixels that a mask pass (one gather per pixel) lets through, and the
  * lines cover the whole image. Where GL lacks textureGather (GLSL 4.00 or

@@ -18,13 +18,20 @@
 // floor(w/2 + 1/2), in 2x2 blocks (one textureGather each with FX_GATHER):
 // one block for lines under 1 px, four under 3 px, nine under 5 px; wider
 // lines read the marks texel by texel.
-// The result is blended over the image: colour and coverage as alpha.
+// The result is blended over the image: colour and coverage as alpha, at
+// the depth of the surface the line belongs to (depth-tested, not
+// written).
 
 uniform sampler2D fxEdges;  // (r + 2 g) / 3, see vtkFXToonEdgesFS; 0 outside
 uniform ivec2 fxEdgeSize;
 uniform ivec2 fxOrigin;     // the viewport's corner in the framebuffer
 uniform float fxHalfWidth;  // pixels
 uniform vec3 fxLineColor;
+// The G-buffer's window depth (1 where nothing was drawn): a line is drawn
+// at the depth of the nearest surface it belongs to, depth-tested against
+// the target's, so that what hides a surface hides its lines (an opaque
+// prop drawn forward, a lower layer's preserved depth).
+uniform sampler2D fxSurfaceDepth;
 
 //VTK::Output::Dec
 
@@ -77,6 +84,13 @@ vec4 fxMarkBlock(ivec2 t)
 #endif
 }
 
+// The G-buffer's window depth at texel `t`, 1 (nothing) outside it.
+float fxSurfaceDepthAt(ivec2 t)
+{
+  bool outside = any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, fxEdgeSize));
+  return outside ? 1.0 : texelFetch(fxSurfaceDepth, clamp(t, ivec2(0), fxEdgeSize - 1), 0).r;
+}
+
 // Distance from the centre to the contour: to the segment between the two
 // nearest midpoints when they are neighbours on it (at most a pixel apart:
 // a diagonal run's midpoints are 0.71 apart, a straight one's 1), so that
@@ -110,4 +124,18 @@ void main()
     discard;
   }
   gl_FragData[0] = vec4(fxLineColor, coverage);
+  // The nearest of this pixel and the two pixels the nearest marked side
+  // separates (its midpoint is half a pixel from each along one axis):
+  // on the near side of a silhouette the line is at that surface's depth,
+  // on its far side in front of what lies behind, and a pixel of the
+  // surface itself never puts its own line behind it. Less 1e-7: a 32-bit
+  // fixed-point depth read as a float and written back can come out up to
+  // 3e-8 farther than the target's copy of it (24-bit and float depths
+  // come back exact).
+  vec2 m = nearest.first;
+  vec2 across = abs(fract(m.x) - 0.5) < 0.25 ? vec2(0.5, 0.0) : vec2(0.0, 0.5);
+  float depth = min(fxSurfaceDepthAt(pixel),
+    min(fxSurfaceDepthAt(pixel + ivec2(round(m - across))),
+      fxSurfaceDepthAt(pixel + ivec2(round(m + across)))));
+  gl_FragDepth = max(depth - 1e-7, 0.0);
 }

@@ -20,7 +20,9 @@
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
 #include "vtkFXToonPass.h"
+#include "vtkImageActor.h"
 #include "vtkImageData.h"
+#include "vtkImageMapper3D.h"
 #include "vtkWindowToImageFilter.h"
 #include "vtkPlaneSource.h"
 
@@ -800,6 +802,57 @@ int CheckScaledScreenshot(vtkRenderWindow* window)
 }
 }
 
+// An opaque prop the G-buffer does not capture (a vtkImageActor, drawn
+// forward) in front of the left half of a lit sphere hides the sphere's
+// lines there, as it hides the sphere: with lines on and off, the image
+// is the same over the slice (away from its border), and lines show on
+// the sphere's uncovered half.
+int CheckLinesBehindForwardProps(vtkRenderWindow* window)
+{
+  window->SetSize(400, 300);
+  vtkFXToonPass* toon = MakeScene(window, Sphere(0.5, 0.5), false);
+  toon->BandsOff();
+  vtkNew<vtkImageData> slice;
+  slice->SetDimensions(61, 61, 1);
+  slice->SetSpacing(0.1, 0.1, 1.0);
+  slice->SetOrigin(-6.0, -3.0, 1.5);
+  slice->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* rgb = static_cast<unsigned char*>(slice->GetScalarPointer());
+  for (vtkIdType i = 0; i < 61 * 61; ++i)
+  {
+    rgb[3 * i] = 200;
+    rgb[3 * i + 1] = 40;
+    rgb[3 * i + 2] = 40;
+  }
+  vtkNew<vtkImageActor> front;
+  front->GetMapper()->SetInputData(slice);
+  window->GetRenderers()->GetFirstRenderer()->AddViewProp(front);
+  window->Render();
+  const auto lined = vtkFXScenes::Capture(window);
+  toon->FeatureLinesOff();
+  window->Render();
+  const auto plain = vtkFXScenes::Capture(window);
+  toon->FeatureLinesOn();
+  FX_CHECK(lined.size() == 3u * 400 * 300 && plain.size() == lined.size(), "no images");
+  // The slice's right border (x = 0) is the middle column.
+  size_t overSlice = 0, elsewhere = 0;
+  for (int y = 0; y < 300; ++y)
+  {
+    for (int x = 0; x < 400; ++x)
+    {
+      const size_t i = 3 * (static_cast<size_t>(y) * 400 + x);
+      const bool differs = lined[i] != plain[i] || lined[i + 1] != plain[i + 1] || lined[i + 2] != plain[i + 2];
+      overSlice += (differs && x < 195) ? 1 : 0;
+      elsewhere += (differs && x > 205) ? 1 : 0;
+    }
+  }
+  std::cout << "lines behind a forward-drawn slice: " << overSlice << " pixels changed over it, "
+            << elsewhere << " on the uncovered half" << std::endl;
+  FX_CHECK(overSlice == 0 && elsewhere > 100,
+    "lines over a slice in front: " << overSlice << " pixels, " << elsewhere << " elsewhere");
+  return EXIT_SUCCESS;
+}
+
 // A lit floor (40 x 40, z = 0) seen from 2, 5 and 15 degrees above it in
 // perspective: its depth changes fast across pixels near the horizon, but
 // it is one plane, so the silhouette test (positions against the tangent
@@ -921,6 +974,7 @@ int TestToon(int, char*[])
   FX_CHECK(CheckScaledScreenshot(window) == EXIT_SUCCESS, "scaled screenshot");
   FX_CHECK(CheckOffsetViewport(window) == EXIT_SUCCESS, "offset viewport");
   FX_CHECK(CheckGrazingFloor(window) == EXIT_SUCCESS, "floor at grazing angles");
+  FX_CHECK(CheckLinesBehindForwardProps(window) == EXIT_SUCCESS, "lines behind forward props");
   FX_CHECK(CheckLineColor(window) == EXIT_SUCCESS, "line colour");
 
   // What a configuration needs and no more: bands alone read no linear
