@@ -40,6 +40,7 @@
 #include <array>
 #include <functional>
 #include <map>
+#include <numeric>
 
 namespace
 {
@@ -595,8 +596,9 @@ int CheckTileCulling(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
-// A renderer whose viewport is the right half of a 402x301 window draws
-// the lines a 201x301 window draws: the same bytes in that half (the
+// A renderer whose viewport is the right half of a 402x301 window, or the
+// upper half of a 201x602 one, draws the lines a 201x301 window draws: the
+// same bytes in that half (the
 // edges texture starts at the viewport's corner, gl_FragCoord at the
 // window's; the flagged tiles' points are placed in the viewport).
 int CheckOffsetViewport(vtkRenderWindow* window)
@@ -629,6 +631,22 @@ int CheckOffsetViewport(vtkRenderWindow* window)
   std::cout << "lines in a viewport at x = 201: " << differing
             << " bytes differ from a window of the viewport's size" << std::endl;
   FX_CHECK(differing == 0, differing << " bytes differ in an offset viewport");
+  // The same in the upper half of a 201x602 window (offset in y).
+  vtkNew<vtkFXToonPass> raised;
+  window->SetSize(201, 602);
+  const auto tall = RenderBunny(window, raised, [](vtkRenderer* renderer) {
+    renderer->SetViewport(0.0, 0.5, 1.0, 1.0);
+    renderer->ResetCamera();
+  });
+  FX_CHECK(tall.size() == 3u * 201 * 602, "no image");
+  // (rows bottom up: the viewport's are 301..601)
+  const size_t upper = 3u * 201 * 301;
+  const size_t differingUp = static_cast<size_t>(std::inner_product(small.begin(), small.end(),
+    tall.begin() + upper, size_t(0), std::plus<size_t>(),
+    [](unsigned char a, unsigned char b) { return a != b ? size_t(1) : size_t(0); }));
+  std::cout << "lines in a viewport at y = 301: " << differingUp
+            << " bytes differ from a window of the viewport's size" << std::endl;
+  FX_CHECK(differingUp == 0, differingUp << " bytes differ in a viewport offset in y");
   window->SetSize(400, 300);
   return EXIT_SUCCESS;
 }
