@@ -119,6 +119,11 @@ bool vtkFXBloomPass::HasWork(const vtkFXSceneInfo& scene)
   // reads the lit image.
   this->ReadsEmission = this->UseEmission && !scene.EmissiveProps.empty() &&
     this->Superclass::HasWork(scene); // (the channel comes with the G-buffer)
+  // Opaque props drawn forward and the layers below can hide emissive
+  // surfaces, whose emission must then not glow: the prefilter compares
+  // depths, in the HDR target (GetNeedsHDRTarget).
+  this->MasksHiddenEmission =
+    this->ReadsEmission && (!scene.ForwardOpaqueProps.empty() || scene.KeepsLowerDepth);
   // A threshold reads the lit image, whatever drew it (translucent props
   // and volumes too, with no opaque prop).
   const bool source = this->ReadsEmission || this->Threshold >= 0.0;
@@ -240,17 +245,26 @@ vtkShaderProgram* vtkFXBloomPass::ReadyProgram(
   return vtkFXRenderUtilities::ReadyQuad(this->Quads[which], window, fs);
 }
 
-bool vtkFXBloomPass::Prefilter(
-  vtkOpenGLRenderWindow* window, vtkTextureObject* color, vtkTextureObject* emission)
+bool vtkFXBloomPass::Prefilter(vtkOpenGLRenderWindow* window, vtkTextureObject* color,
+  vtkTextureObject* emission, vtkTextureObject* targetDepth)
 {
-  const int width = static_cast<int>(color->GetWidth());
-  const int height = static_cast<int>(color->GetHeight());
+  vtkTextureObject* surfaceDepth = this->GBuffer ? this->GBuffer->GetDepthTexture() : nullptr;
+  vtkTextureObject* full = color ? color : emission;
+  const int width = static_cast<int>(full->GetWidth());
+  const int height = static_cast<int>(full->GetHeight());
+  const bool mask = emission && targetDepth && surfaceDepth &&
+    static_cast<int>(targetDepth->GetWidth()) == width &&
+    static_cast<int>(targetDepth->GetHeight()) == height &&
+    static_cast<int>(surfaceDepth->GetWidth()) == width &&
+    static_cast<int>(surfaceDepth->GetHeight()) == height;
   vtkFXRenderUtilities::EnsureTexture(
     this->Prefiltered, window, width, height, vtkFXRenderUtilities::RGBA16F);
   SetFilterAndMirror(this->Prefiltered);
   std::string fs = vtkFXBloomPrefilterFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
-    std::string("//VTK::System::Dec\n#define FX_EMISSION ") + (emission ? "1" : "0") + "\n",
+    std::string("//VTK::System::Dec\n#define FX_EMISSION ") + (emission ? "1" : "0") +
+      "\n#define FX_THRESHOLD " + (color ? "1" : "0") + "\n#define FX_MASK " +
+      (mask ? "1" : "0") + "\n",
     false);
   vtkFXRenderUtilities::RenderTargetScope target(window, this->PrefilterTarget, this->Prefiltered);
   vtkShaderProgram* program = target.IsComplete()
@@ -260,20 +274,31 @@ bool vtkFXBloomPass::Prefilter(
   {
     return false;
   }
-  color->Activate();
-  program->SetUniformi("fxColor", color->GetTextureUnit());
-  if (emission)
+  std::vector<vtkTextureObject*> bound;
+  const auto bind = [&](const char* name, vtkTextureObject* texture) {
+    texture->Activate();
+    program->SetUniformi(name, texture->GetTextureUnit());
+    bound.push_back(texture);
+  };
+  if (color)
   {
-    emission->Activate();
-    program->SetUniformi("fxEmission", emission->GetTextureUnit());
+    bind("fxColor", color);
+    program->SetUniformf("fxThreshold", static_cast<float>(this->Threshold));
+    program->SetUniformf("fxKnee", static_cast<float>(this->Knee * this->Threshold));
   }
-  program->SetUniformf("fxThreshold", static_cast<float>(this->Threshold));
-  program->SetUniformf("fxKnee", static_cast<float>(this->Knee * this->Threshold));
-  this->Quads[PrefilterProgram].Helper->Render();
-  color->Deactivate();
   if (emission)
   {
-    emission->Deactivate();
+    bind("fxEmission", emission);
+  }
+  if (mask)
+  {
+    bind("fxSurfaceDepth", surfaceDepth);
+    bind("fxTargetDepth", targetDepth);
+  }
+  this->Quads[PrefilterProgram].Helper->Render();
+  for (vtkTextureObject* texture : bound)
+  {
+    texture->Deactivate();
   }
   return true;
 }
@@ -285,7 +310,8 @@ void vtkFXBloomPass::ReleasePrefilter(vtkWindow* window)
   vtkFXRenderUtilities::Release(this->PrefilterTarget, window);
 }
 
-bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject* color, int levels)
+bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject* color,
+  vtkTextureObject* targetDepth, int levels)
 {
   vtkTextureObject* emission =
     this->ReadsEmission && this->GBuffer ? this->GBuffer->GetChannelTexture(GB::Emission) : nullptr;
@@ -294,17 +320,20 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
   {
     return false;
   }
-  // With a threshold the first step reads the prefiltered image as it
-  // reads any level; otherwise the emission channel, bilinearly.
-  if (threshold && !this->Prefilter(window, color, emission))
+  // With a threshold, or emission to mask, the first step reads the
+  // prefiltered image as it reads any level; otherwise the emission
+  // channel, bilinearly.
+  const bool prefiltered = threshold || (emission && targetDepth);
+  if (prefiltered &&
+    !this->Prefilter(window, threshold ? color : nullptr, emission, targetDepth))
   {
     return false;
   }
-  if (!threshold)
+  if (!prefiltered)
   {
     this->ReleasePrefilter(window);
   }
-  vtkTextureObject* full = threshold ? this->Prefiltered.GetPointer() : emission;
+  vtkTextureObject* full = prefiltered ? this->Prefiltered.GetPointer() : emission;
   int width = static_cast<int>(full->GetWidth());
   int height = static_cast<int>(full->GetHeight());
   for (int k = 0; k < levels; ++k)
@@ -319,7 +348,7 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
 
     std::string fs = vtkFXBloomDownsampleFS;
     const bool first = k == 0;
-    const bool readsEmission = first && !threshold;
+    const bool readsEmission = first && !prefiltered;
     vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
       std::string("//VTK::System::Dec\n#define FX_FIRST ") + (readsEmission ? "1" : "0") +
         "\n#define FX_BOX " + (first ? "1" : "0") + "\n#define FX_KARIS " +
@@ -496,7 +525,12 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
     // No step up: an earlier frame's upsampled glow must not linger.
     vtkFXRenderUtilities::Release(this->Levels[0]->Up, window);
   }
-  if (this->Downsample(window, color, levels) && this->Upsample(window, levels))
+  // Emission of surfaces something drawn in front hides must not glow:
+  // where the target's depth, which holds what hides them, is nearer than
+  // the G-buffer's.
+  vtkTextureObject* targetDepth =
+    this->MasksHiddenEmission && target ? target->GetDepthAttachmentAsTextureObject() : nullptr;
+  if (this->Downsample(window, color, targetDepth, levels) && this->Upsample(window, levels))
   {
     this->AddGlow(window);
   }

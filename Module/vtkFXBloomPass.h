@@ -19,9 +19,11 @@
  * the image's borders, so light near a border or an odd edge weighs what
  * it weighs elsewhere (TestBloom: within 0.3%).
  *
- * The glow reaches about Radius x the image's height (the viewport's, or
- * a scaled screenshot's, which vtkWindowToImageFilter renders in tiles of
- * the viewport's size; the glow does not cross the tiles' seams): the pyramid has
+ * The glow reaches about Radius x the height the renderer covers in the
+ * image (its viewport's, or in a scaled screenshot, which
+ * vtkWindowToImageFilter renders in tiles of the window's size, its
+ * viewport's height in the whole scaled window; the glow does not cross the
+ * tiles' seams): the pyramid has
  * the levels below full resolution up to the one whose blur
  * (GetLevelSigma) is nearest that reach (at least 1, at most 10, fewer
  * when a level would be under 2 pixels).
@@ -30,8 +32,13 @@
  * above 65504 (the largest half float) as 65504; with FireflySuppression
  * on, such a pixel adds about what one pixel of value 1 adds.
  *
+ * Emission hidden by what is drawn in front of its surface (opaque props
+ * the G-buffer does not capture, drawn forward; the depth of the layers
+ * below) does not glow: where such props or layers are in the frame, the
+ * prefilter compares the G-buffer's depth with the target's.
+ *
  * Stage PostProcess; vtkFXPipelinePass keeps its HDR target while it runs
- * with a threshold (GetNeedsHDRTarget).
+ * with a threshold, or with emission that may be hidden (GetNeedsHDRTarget).
  * Work: when a visible prop is emissive (vtkFXSceneInfo::EmissiveProps) or
  * a threshold is set; otherwise the pass, its textures and the emission
  * channel are left out and the image is exactly the one without bloom. The
@@ -165,7 +172,10 @@ public:
    * glow, so the result is the same and the HDR target's copy in and
    * write-back are saved.
    */
-  bool GetNeedsHDRTarget() override { return this->Threshold >= 0.0; }
+  bool GetNeedsHDRTarget() override
+  {
+    return this->Threshold >= 0.0 || this->MasksHiddenEmission;
+  }
   unsigned int GetRequiredChannels() override;
 
   void Render(const vtkRenderState* s) override;
@@ -176,9 +186,17 @@ protected:
   ~vtkFXBloomPass() override;
 
   struct Level;
-  bool Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject* color, int levels);
-  /** With a threshold: the glow's source per full-resolution texel, into Prefiltered. */
-  bool Prefilter(vtkOpenGLRenderWindow* window, vtkTextureObject* color, vtkTextureObject* emission);
+  // (`targetDepth`: the depth of the target the glow goes onto, where
+  // the emission of hidden surfaces must be left out; else nullptr)
+  bool Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject* color,
+    vtkTextureObject* targetDepth, int levels);
+  /**
+   * With a threshold, or emission to mask by depth: the glow's source per
+   * full-resolution texel, into Prefiltered (`color` with a threshold,
+   * `targetDepth` to mask, else nullptr).
+   */
+  bool Prefilter(vtkOpenGLRenderWindow* window, vtkTextureObject* color,
+    vtkTextureObject* emission, vtkTextureObject* targetDepth);
   void ReleasePrefilter(vtkWindow* window);
   bool Upsample(vtkOpenGLRenderWindow* window, int levels);
   void AddGlow(vtkOpenGLRenderWindow* window); // adds GetGlowTexture()
@@ -193,6 +211,7 @@ protected:
   double Knee = 0.5;
   bool FireflySuppression = true;
   bool ReadsEmission = true; // this frame: UseEmission and some prop emits (HasWork)
+  bool MasksHiddenEmission = false; // this frame: something may hide an emitter (HasWork)
   bool WarnedNoLitImage = false; // a threshold without an HDR target (said once)
 
   std::vector<std::unique_ptr<Level>> Levels;

@@ -239,6 +239,8 @@ vtkFXSceneInfo vtkFXPipelinePass::AnalyzeScene(const vtkRenderState* s) const
       scene.TranslucentViewProps.push_back(prop);
     }
   }
+  scene.KeepsLowerDepth =
+    s->GetRenderer()->GetPreserveDepthBuffer() || !s->GetRenderer()->GetErase();
   // The lights pass ran before the analysis: read what VTK decided.
   vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   if (ren && ren->GetLightingCount() > 0)

@@ -1,6 +1,7 @@
 //VTK::System::Dec
 // vtkFXBloomPrefilterFS: what glows, per full-resolution texel, when the
-// bloom has a threshold: the lit HDR colour's part above the threshold,
+// bloom has a threshold or emission to mask by depth (FX_MASK): the lit
+// HDR colour's part above the threshold (FX_THRESHOLD),
 // with a quadratic soft knee (the curve of Unity's and Unreal's bloom
 // prefilters): for brightness b (largest component), threshold t and
 // knee k,
@@ -21,10 +22,17 @@
 
 in vec2 texCoord;
 
-uniform sampler2D fxColor;    // the lit HDR image
+uniform sampler2D fxColor;    // FX_THRESHOLD: the lit HDR image
 uniform sampler2D fxEmission; // FX_EMISSION (finite: vtkFXGBufferPass's fxFiniteEmission)
 uniform float fxThreshold;
 uniform float fxKnee;         // knee x threshold
+// FX_MASK: the G-buffer's window depth and the target's. Where the
+// target's is nearer, something drawn in front (an opaque prop drawn
+// forward, a lower layer's preserved depth) hides the surface: its
+// emission is not seen and does not glow. (1e-7: a 32-bit fixed-point
+// depth read as a float and written back may differ by 3e-8.)
+uniform sampler2D fxSurfaceDepth;
+uniform sampler2D fxTargetDepth;
 
 //VTK::Output::Dec
 
@@ -50,12 +58,20 @@ void main()
     discard; // never: keeps the quad's texture coordinates in the program
   }
   ivec2 texel = ivec2(gl_FragCoord.xy);
-  vec3 lit = fxFinite(texelFetch(fxColor, texel, 0).rgb);
+  vec3 emission = vec3(0.0);
 #if FX_EMISSION
-  vec3 emission = texelFetch(fxEmission, texel, 0).rgb;
+  emission = texelFetch(fxEmission, texel, 0).rgb;
+#if FX_MASK
+  bool hidden =
+    texelFetch(fxSurfaceDepth, texel, 0).r > texelFetch(fxTargetDepth, texel, 0).r + 1e-7;
+  emission = hidden ? vec3(0.0) : emission;
+#endif
+#endif
+#if FX_THRESHOLD
+  vec3 lit = fxFinite(texelFetch(fxColor, texel, 0).rgb);
   vec3 glow = emission + fxAboveThreshold(max(lit - emission, 0.0));
 #else
-  vec3 glow = fxAboveThreshold(lit);
+  vec3 glow = emission;
 #endif
   gl_FragData[0] = vec4(min(glow, 65504.0), 1.0);
 }

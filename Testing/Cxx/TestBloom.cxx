@@ -22,6 +22,9 @@
 
 #include "vtkActorCollection.h"
 #include "vtkCamera.h"
+#include "vtkImageActor.h"
+#include "vtkImageData.h"
+#include "vtkImageMapper3D.h"
 #include "vtkInformation.h"
 #include "vtkLineSource.h"
 #include "vtkLight.h"
@@ -530,6 +533,59 @@ int CheckThresholdWithoutOpaqueProps(vtkRenderWindow* window)
 
 // A NaN knee is refused with an error (it would make the threshold's
 // weights NaN); the knee set before stays.
+// An emitter behind an opaque prop the G-buffer does not capture (a
+// vtkImageActor slice, drawn forward): hidden, nothing may glow (the slice
+// fills the view); half hidden (the slice covers x < 0), the glow is half
+// the whole sphere's (0.45 to 0.55: its half-disc, less the pixels on the
+// slice's edge).
+vtkSmartPointer<vtkImageActor> Slice(double xMax)
+{
+  vtkNew<vtkImageData> slice;
+  const int columns = static_cast<int>(std::lround((xMax + 3.0) / 0.1)) + 1;
+  slice->SetDimensions(columns, 61, 1);
+  slice->SetSpacing(0.1, 0.1, 1.0);
+  slice->SetOrigin(-3.0, -3.0, 0.5);
+  slice->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* rgb = static_cast<unsigned char*>(slice->GetScalarPointer());
+  std::fill(rgb, rgb + 3 * columns * 61, static_cast<unsigned char>(60));
+  auto front = vtkSmartPointer<vtkImageActor>::New();
+  front->GetMapper()->SetInputData(slice);
+  return front;
+}
+
+int CheckHiddenEmitter(vtkRenderWindow* window)
+{
+  const double emission[3] = { 4.0, 3.0, 2.0 };
+  {
+    vtkNew<vtkFXPipelinePass> pipeline;
+    vtkNew<vtkFXBloomPass> bloom;
+    std::vector<unsigned char> without, with;
+    RenderWithoutAndWith(window, emission, pipeline, bloom, without, with,
+      [](vtkRenderer* renderer) { renderer->AddViewProp(Slice(3.0)); });
+    const int difference = vtkFXScenes::MaxDifference(without, with);
+    std::cout << "an emitter behind a forward-drawn slice: largest change by bloom " << difference
+              << ", image sum " << ImageSum(without) << " -> " << ImageSum(with) << std::endl;
+    FX_CHECK(difference == 0, "a hidden emitter glows: " << difference << " levels");
+  }
+  double totals[2];
+  for (int half = 0; half < 2; ++half)
+  {
+    vtkNew<vtkFXPipelinePass> pipeline;
+    vtkNew<vtkFXBloomPass> bloom;
+    bloom->FireflySuppressionOff();
+    std::vector<unsigned char> without, with;
+    RenderWithoutAndWith(window, emission, pipeline, bloom, without, with, [half](vtkRenderer* renderer) {
+      renderer->AddViewProp(Slice(half ? 0.0 : -2.9)); // (a sliver at the border, else)
+    });
+    totals[half] = GlowTotal(bloom);
+  }
+  std::cout << "an emitter half behind a forward-drawn slice: glow " << totals[1] << " of "
+            << totals[0] << " (" << totals[1] / totals[0] << ")" << std::endl;
+  FX_CHECK(totals[0] > 0.0 && totals[1] / totals[0] > 0.45 && totals[1] / totals[0] < 0.55,
+    "an emitter half hidden: glow " << totals[1] << " of " << totals[0]);
+  return EXIT_SUCCESS;
+}
+
 int CheckBadParameters()
 {
   vtkNew<vtkFXBloomPass> bloom;
@@ -558,6 +614,7 @@ int TestBloom(int, char*[])
   FX_CHECK(CheckThresholdOddSize(window) == EXIT_SUCCESS, "threshold, odd size");
   FX_CHECK(CheckEmissionAndThreshold(window) == EXIT_SUCCESS, "emission and threshold");
   FX_CHECK(CheckThresholdWithoutOpaqueProps(window) == EXIT_SUCCESS, "threshold, no opaque prop");
+  FX_CHECK(CheckHiddenEmitter(window) == EXIT_SUCCESS, "hidden emitter");
   FX_CHECK(CheckBadParameters() == EXIT_SUCCESS, "bad parameters");
   // A screenshot at scale 2 of a 200x150 viewport is 300 rows high: the
   // glow reaches as far in it as in a 400x300 viewport.
