@@ -8,6 +8,7 @@
 
 #include "vtkBoundingBox.h"
 #include "vtkCamera.h"
+#include "vtkActor2D.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -122,8 +123,10 @@ bool vtkFXBloomPass::HasWork(const vtkFXSceneInfo& scene)
   // Opaque props drawn forward and the layers below can hide emissive
   // surfaces, whose emission must then not glow: the prefilter compares
   // depths, in the HDR target (GetNeedsHDRTarget).
-  this->MasksHiddenEmission =
-    this->ReadsEmission && (!scene.ForwardOpaqueProps.empty() || scene.KeepsLowerDepth);
+  // (2D props among them are drawn in the overlay, after the glow)
+  const bool forward3D = std::any_of(scene.ForwardOpaqueProps.begin(),
+    scene.ForwardOpaqueProps.end(), [](vtkProp* prop) { return !vtkActor2D::SafeDownCast(prop); });
+  this->MasksHiddenEmission = this->ReadsEmission && (forward3D || scene.KeepsLowerDepth);
   // A threshold reads the lit image, whatever drew it (translucent props
   // and volumes too, with no opaque prop).
   const bool source = this->ReadsEmission || this->Threshold >= 0.0;
@@ -252,7 +255,8 @@ bool vtkFXBloomPass::Prefilter(vtkOpenGLRenderWindow* window, vtkTextureObject* 
   vtkTextureObject* full = color ? color : emission;
   const int width = static_cast<int>(full->GetWidth());
   const int height = static_cast<int>(full->GetHeight());
-  const bool mask = emission && targetDepth && surfaceDepth &&
+  // (a multisampled depth cannot be read as a plain texture: no mask)
+  const bool mask = emission && targetDepth && surfaceDepth && targetDepth->GetSamples() <= 1 &&
     static_cast<int>(targetDepth->GetWidth()) == width &&
     static_cast<int>(targetDepth->GetHeight()) == height &&
     static_cast<int>(surfaceDepth->GetWidth()) == width &&

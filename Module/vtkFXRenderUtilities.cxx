@@ -893,7 +893,8 @@ vtkFXRenderUtilities::BlendOntoScope::BlendOntoScope(vtkOpenGLRenderWindow* wind
 
 void vtkFXRenderUtilities::GetViewportSize(const vtkRenderState* s, int& width, int& height)
 {
-  if (s->GetFrameBuffer())
+  // (as vtkCameraPass tells the two apart)
+  if (vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
   {
     int size[2];
     s->GetWindowSize(size);
@@ -952,9 +953,19 @@ int vtkFXRenderUtilities::GetImageRows(vtkRenderer* renderer, int viewportRows)
   {
     return viewportRows;
   }
-  // (vtkWindow::GetSize counts the tiles: the scaled window's size)
+  // The viewport's height in the scaled window (vtkWindow::GetSize counts
+  // the tiles), in the units of `viewportRows`: those of this tile's part
+  // of the viewport (more than the window's pixels inside a pass such as
+  // vtkSSAAPass, which renders into a larger framebuffer).
+  int tiledWidth, tiledHeight, x, y;
+  renderer->GetTiledSizeAndOrigin(&tiledWidth, &tiledHeight, &x, &y);
+  if (tiledHeight <= 0)
+  {
+    return viewportRows;
+  }
   const double* viewport = renderer->GetViewport();
-  const long rows = std::lround((viewport[3] - viewport[1]) * window->GetSize()[1]);
+  const double scaledRows = (viewport[3] - viewport[1]) * window->GetSize()[1];
+  const long rows = std::lround(viewportRows * scaledRows / tiledHeight);
   return static_cast<int>(std::max(1L, rows));
 }
 

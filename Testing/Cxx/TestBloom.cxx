@@ -38,6 +38,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+#include "vtkTextActor.h"
 #include "vtkOpenGLState.h"
 #include "vtkFXOpenGL.h"
 
@@ -566,6 +567,22 @@ int CheckHiddenEmitter(vtkRenderWindow* window)
     std::cout << "an emitter behind a forward-drawn slice: largest change by bloom " << difference
               << ", image sum " << ImageSum(without) << " -> " << ImageSum(with) << std::endl;
     FX_CHECK(difference == 0, "a hidden emitter glows: " << difference << " levels");
+    FX_CHECK(pipeline->GetHDRTargetBytesPerPixel() > 0, "the mask ran without the HDR target");
+  }
+  // A 2D prop (drawn in the overlay, after the glow) hides nothing: no
+  // HDR target for it.
+  {
+    vtkNew<vtkFXPipelinePass> pipeline;
+    vtkNew<vtkFXBloomPass> bloom;
+    std::vector<unsigned char> without, with;
+    RenderWithoutAndWith(window, emission, pipeline, bloom, without, with, [](vtkRenderer* renderer) {
+      vtkNew<vtkTextActor> label;
+      label->SetInput("label");
+      renderer->AddViewProp(label);
+    });
+    FX_CHECK(pipeline->GetHDRTargetBytesPerPixel() == 0 && vtkFXScenes::MaxDifference(without, with) > 0,
+      "an emitter beside a 2D prop: HDR target " << pipeline->GetHDRTargetBytesPerPixel()
+                                                 << " bytes per pixel");
   }
   double totals[2];
   for (int half = 0; half < 2; ++half)

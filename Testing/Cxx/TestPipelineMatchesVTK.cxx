@@ -64,6 +64,7 @@ Result RenderAndCompare(vtkRenderWindow* window, const std::string& input, bool 
   vtkNew<vtkFXPipelinePass> pipeline;
   if (supersampled)
   {
+    ssaa->GetDelegatePass()->ReleaseGraphicsResources(window);
     ssaa->SetDelegatePass(pipeline);
   }
   else

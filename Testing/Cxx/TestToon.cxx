@@ -34,6 +34,7 @@
 #include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
 #include "vtkRendererCollection.h"
+#include "vtkSSAAPass.h"
 #include "vtkSphereSource.h"
 
 #include <algorithm>
@@ -816,6 +817,25 @@ int CheckScaledScreenshot(vtkRenderWindow* window)
     "lines in a scaled screenshot: " << tiled << " for " << big);
   FX_CHECK(std::fabs(halfTiled / big - 1.0) < 0.15,
     "lines of a viewport in a scaled screenshot: " << halfTiled << " for " << big);
+  // The same through vtkSSAAPass, which renders the pipeline into a
+  // framebuffer larger than the window (the lines are as wide relative to
+  // it).
+  vtkNew<vtkSSAAPass> ssaa;
+  ssaa->SetDelegatePass(renderer->GetPass());
+  renderer->SetPass(ssaa);
+  const double bigSSAA = TotalCoverage(LineCoverage(window, toon));
+  window->SetSize(200, 150);
+  const auto ssaaLined = capture(2);
+  toon->FeatureLinesOff();
+  const auto ssaaPlain = capture(2);
+  toon->FeatureLinesOn();
+  window->SetSize(400, 300);
+  renderer->SetPass(ssaa->GetDelegatePass());
+  const double tiledSSAA = TotalCoverage(Coverage(ssaaLined, ssaaPlain));
+  std::cout << "through vtkSSAAPass: coverage " << bigSSAA << " in a 400x300 window, " << tiledSSAA
+            << " in a screenshot of a 200x150 window at scale 2" << std::endl;
+  FX_CHECK(bigSSAA > 100.0 && std::fabs(tiledSSAA / bigSSAA - 1.0) < 0.15,
+    "lines in a scaled screenshot through vtkSSAAPass: " << tiledSSAA << " for " << bigSSAA);
   return EXIT_SUCCESS;
 }
 }
