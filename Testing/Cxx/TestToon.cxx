@@ -786,30 +786,33 @@ int CheckScaledScreenshot(vtkRenderWindow* window)
   };
   vtkFXToonPass* toon = MakeScene(window, Sphere(0.5, 0.5), false);
   toon->BandsOff();
+  // Line coverage of a screenshot at scale 2 of a window of `width` x
+  // `height`, over its first `bytes` (its rows bottom up; 0: all of it).
+  const auto screenshotCoverage = [&](int width, int height, size_t bytes) {
+    window->SetSize(width, height);
+    auto lined = capture(2);
+    toon->FeatureLinesOff();
+    auto plain = capture(2);
+    toon->FeatureLinesOn();
+    window->SetSize(400, 300);
+    if (bytes > 0)
+    {
+      lined.resize(bytes);
+      plain.resize(bytes);
+    }
+    return TotalCoverage(Coverage(lined, plain));
+  };
   window->SetSize(400, 300);
   const double big = TotalCoverage(LineCoverage(window, toon));
-  window->SetSize(200, 150);
-  const auto lined = capture(2);
-  toon->FeatureLinesOff();
-  const auto plain = capture(2);
-  toon->FeatureLinesOn();
-  const double tiled = TotalCoverage(Coverage(lined, plain));
+  const double tiled = screenshotCoverage(200, 150, 0);
   // A renderer on the lower half of a 200x300 window (200x150 too): a tile
   // of the screenshot holds 300 of its viewport's rows, not all of them.
+  // (its 400x300 pixels of the 400x600 image: the window above its
+  // viewport is never cleared and holds what earlier tiles left)
   vtkRenderer* renderer = window->GetRenderers()->GetFirstRenderer();
   renderer->SetViewport(0.0, 0.0, 1.0, 0.5);
-  window->SetSize(200, 300);
-  const auto halfLined = capture(2);
-  toon->FeatureLinesOff();
-  const auto halfPlain = capture(2);
-  toon->FeatureLinesOn();
+  const double halfTiled = screenshotCoverage(200, 300, 3 * 400 * 300);
   renderer->SetViewport(0.0, 0.0, 1.0, 1.0);
-  // (its 400x300 pixels of the 400x600 image, bottom up: the window above
-  // its viewport is never cleared and holds what earlier tiles left)
-  const std::vector<unsigned char> lowerLined(halfLined.begin(), halfLined.begin() + 3 * 400 * 300);
-  const std::vector<unsigned char> lowerPlain(halfPlain.begin(), halfPlain.begin() + 3 * 400 * 300);
-  const double halfTiled = TotalCoverage(Coverage(lowerLined, lowerPlain));
-  window->SetSize(400, 300);
   std::cout << "lines at 400x300: coverage " << big << " in a window, " << tiled
             << " in a screenshot of a 200x150 window at scale 2, " << halfTiled
             << " of a 200x150 viewport in a 200x300 window at scale 2" << std::endl;
@@ -824,14 +827,8 @@ int CheckScaledScreenshot(vtkRenderWindow* window)
   ssaa->SetDelegatePass(renderer->GetPass());
   renderer->SetPass(ssaa);
   const double bigSSAA = TotalCoverage(LineCoverage(window, toon));
-  window->SetSize(200, 150);
-  const auto ssaaLined = capture(2);
-  toon->FeatureLinesOff();
-  const auto ssaaPlain = capture(2);
-  toon->FeatureLinesOn();
-  window->SetSize(400, 300);
+  const double tiledSSAA = screenshotCoverage(200, 150, 0);
   renderer->SetPass(ssaa->GetDelegatePass());
-  const double tiledSSAA = TotalCoverage(Coverage(ssaaLined, ssaaPlain));
   std::cout << "through vtkSSAAPass: coverage " << bigSSAA << " in a 400x300 window, " << tiledSSAA
             << " in a screenshot of a 200x150 window at scale 2" << std::endl;
   FX_CHECK(bigSSAA > 100.0 && std::fabs(tiledSSAA / bigSSAA - 1.0) < 0.15,
