@@ -22,9 +22,6 @@
 
 #include "vtkActorCollection.h"
 #include "vtkCamera.h"
-#include "vtkImageActor.h"
-#include "vtkImageData.h"
-#include "vtkImageMapper3D.h"
 #include "vtkInformation.h"
 #include "vtkLineSource.h"
 #include "vtkLight.h"
@@ -541,17 +538,8 @@ int CheckThresholdWithoutOpaqueProps(vtkRenderWindow* window)
 // slice's edge).
 vtkSmartPointer<vtkImageActor> Slice(double xMax)
 {
-  vtkNew<vtkImageData> slice;
-  const int columns = static_cast<int>(std::lround((xMax + 3.0) / 0.1)) + 1;
-  slice->SetDimensions(columns, 61, 1);
-  slice->SetSpacing(0.1, 0.1, 1.0);
-  slice->SetOrigin(-3.0, -3.0, 0.5);
-  slice->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  auto* rgb = static_cast<unsigned char*>(slice->GetScalarPointer());
-  std::fill(rgb, rgb + 3 * columns * 61, static_cast<unsigned char>(60));
-  auto front = vtkSmartPointer<vtkImageActor>::New();
-  front->GetMapper()->SetInputData(slice);
-  return front;
+  const unsigned char grey[3] = { 60, 60, 60 };
+  return vtkFXTest::UniformSlice(-3.0, xMax, -3.0, 3.0, 0.5, grey);
 }
 
 int CheckHiddenEmitter(vtkRenderWindow* window)

@@ -20,9 +20,7 @@
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
 #include "vtkFXToonPass.h"
-#include "vtkImageActor.h"
 #include "vtkImageData.h"
-#include "vtkImageMapper3D.h"
 #include "vtkWindowToImageFilter.h"
 #include "vtkPlaneSource.h"
 
@@ -847,27 +845,11 @@ int CheckLinesBehindForwardProps(vtkRenderWindow* window)
   window->SetSize(400, 300);
   vtkFXToonPass* toon = MakeScene(window, Sphere(0.5, 0.5), false);
   toon->BandsOff();
-  vtkNew<vtkImageData> slice;
-  slice->SetDimensions(61, 61, 1);
-  slice->SetSpacing(0.1, 0.1, 1.0);
-  slice->SetOrigin(-6.0, -3.0, 1.5);
-  slice->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  auto* rgb = static_cast<unsigned char*>(slice->GetScalarPointer());
-  for (vtkIdType i = 0; i < 61 * 61; ++i)
-  {
-    rgb[3 * i] = 200;
-    rgb[3 * i + 1] = 40;
-    rgb[3 * i + 2] = 40;
-  }
-  vtkNew<vtkImageActor> front;
-  front->GetMapper()->SetInputData(slice);
-  window->GetRenderers()->GetFirstRenderer()->AddViewProp(front);
-  window->Render();
-  const auto lined = vtkFXScenes::Capture(window);
-  toon->FeatureLinesOff();
-  window->Render();
-  const auto plain = vtkFXScenes::Capture(window);
-  toon->FeatureLinesOn();
+  const unsigned char red[3] = { 200, 40, 40 };
+  window->GetRenderers()->GetFirstRenderer()->AddViewProp(
+    vtkFXTest::UniformSlice(-6.0, 0.0, -3.0, 3.0, 1.5, red));
+  std::vector<unsigned char> plain, lined;
+  LineCoverage(window, toon, &plain, &lined);
   FX_CHECK(lined.size() == 3u * 400 * 300 && plain.size() == lined.size(), "no images");
   // The slice's right border (x = 0) is the middle column.
   size_t overSlice = 0, elsewhere = 0;

@@ -10,6 +10,9 @@
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
+#include "vtkImageActor.h"
+#include "vtkImageData.h"
+#include "vtkImageMapper3D.h"
 #include "vtkLightsPass.h"
 #include "vtkNew.h"
 #include "vtkOpaquePass.h"
@@ -174,6 +177,29 @@ inline std::string Argument(int argc, char* argv[], const char* flag)
     }
   }
   return std::string();
+}
+
+// An opaque image slice of one colour `rgb` over x0..x1, y0..y1 at height
+// z (pixels 0.1 apart): a vtkImageActor, which the G-buffer does not
+// capture and the pipeline draws forward.
+inline vtkSmartPointer<vtkImageActor> UniformSlice(
+  double x0, double x1, double y0, double y1, double z, const unsigned char rgb[3])
+{
+  const int columns = static_cast<int>(std::lround((x1 - x0) / 0.1)) + 1;
+  const int rows = static_cast<int>(std::lround((y1 - y0) / 0.1)) + 1;
+  vtkNew<vtkImageData> slice;
+  slice->SetDimensions(columns, rows, 1);
+  slice->SetSpacing(0.1, 0.1, 1.0);
+  slice->SetOrigin(x0, y0, z);
+  slice->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* pixels = static_cast<unsigned char*>(slice->GetScalarPointer());
+  for (int i = 0; i < columns * rows; ++i)
+  {
+    std::copy(rgb, rgb + 3, pixels + 3 * i);
+  }
+  auto actor = vtkSmartPointer<vtkImageActor>::New();
+  actor->GetMapper()->SetInputData(slice);
+  return actor;
 }
 
 // Scales the renderer's actors by `scale` and moves them by `offset` along
