@@ -13,7 +13,7 @@
 // Methods: no occlusion; vtkFX's default first (vtkFXPipelinePass's
 // Medium preset for the falloff), then its hemisphere and horizon (GTAO)
 // estimators at several sample counts, half and full resolution, blur
-// radii 4, 2 and none, with and without the depth-aware upsample; VTK's
+// radii 4, 3, 2 and none, with and without the depth-aware upsample; VTK's
 // vtkSSAOPass at kernel sizes 16/32/64/128, with and without its blur. All
 // use the radius 0.1 x the diagonal of the data's bounds. The AO part of the
 // time is the median frame time minus that of the same renderer without
@@ -230,6 +230,7 @@ std::vector<Method> MakeMethods(int falloff)
   {
     fx(vtkFXSSAOPass::Horizon, samples, true, 4);
   }
+  fx(vtkFXSSAOPass::Horizon, 16, true, 3);
   fx(vtkFXSSAOPass::Horizon, 16, true, 2);
   fx(vtkFXSSAOPass::Horizon, 16, true, 2, true);
   fx(vtkFXSSAOPass::Horizon, 16, true, 4, true);

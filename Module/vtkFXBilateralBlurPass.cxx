@@ -5,6 +5,7 @@
 #include "vtkFXJointUpsample.h"
 #include "vtkFXNormalCoding.h"
 #include "vtkFXRenderUtilities.h"
+#include "vtkFXViewPosition.h"
 
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -96,6 +97,7 @@ bool vtkFXBilateralBlurPass::RunStage(int mode, vtkRenderer* renderer,
     false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXJointUpsample::Dec", vtkFXJointUpsample, false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXViewPosition::Dec", vtkFXViewPosition, false);
 
   vtkOpenGLRenderWindow* window =
     vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
@@ -153,6 +155,7 @@ bool vtkFXBilateralBlurPass::RunStage(int mode, vtkRenderer* renderer,
     program->SetUniform1fv("fxTapWeights", 17, this->TapWeights().data());
   }
   program->SetUniformf("fxDepthSigma", static_cast<float>(this->DepthSigma));
+  vtkFXRenderUtilities::SetFrustumRayUniforms(program, renderer);
   this->Quads[mode].Helper->Render();
   input->Deactivate();
   depth->Deactivate();

@@ -146,17 +146,19 @@ std::string vtkFXSSAOPass::GetCompositeCode(int hook)
       // edge keeps each side's occlusion: detail score on vtkfx-bench ao's
       // scenes +0.02 to +0.11 against one bilinear read, PSNR the same or
       // better, 1.6 ms more composite time at 1280x720 on the bunny, two
-      // gathers for four texels); the composite reads
-      // fxPixelDepth where a depth channel exists.
+      // gathers for four texels), judged against the pixel's tangent plane
+      // with vtkFXBilateralBlurPass's default tolerance, so that a crease
+      // keeps each side's occlusion too; the composite reads fxPixelDepth
+      // and position where a depth channel exists.
       const std::string read = this->UpsamplesByDepth(this->CompositeSource())
         ? "\n#if FX_GATHER\n"
           "      float ao = fxPixelDepth > 0.0 ? fxJointUpsampleGathered(@occlusion, "
           "textureSize(@occlusion, 0), @step, ivec2(texCoord * vec2(@fullSize)), fxPixelDepth, "
-          "0.05) : 1.0;\n"
+          "0.02, n, position, @fullSize) : 1.0;\n"
           "#else\n"
           "      float ao = fxPixelDepth > 0.0 ? fxJointUpsample(@occlusion, true, @occlusion, 1, "
           "textureSize(@occlusion, 0), @step, ivec2(texCoord * vec2(@fullSize)), fxPixelDepth, "
-          "0.05).r : 1.0;\n"
+          "0.02, n, position, @fullSize).r : 1.0;\n"
           "#endif\n"
         : "      float ao = texture(@occlusion, texCoord * @scale + @offset).r;\n";
       return "    if (@written != 0)\n"

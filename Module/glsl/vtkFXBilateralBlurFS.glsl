@@ -7,10 +7,16 @@
 // and Durand 2004; upsampling: Kopf et al. 2007), as SSAO write-ups of the
 // time blur their occlusion (e.g. the SSAO article on gamerendering.com,
 // 2009, over 17 taps): a tap counts with a Gaussian of its distance times
-//   1 / (1 + ((d - d0) / (sigma d0))^2)   (depth relative to depth: the same
-//                                          at every scene scale; a Cauchy
-//                                          weight, as selective as a Gaussian
-//                                          near 0 and cheaper than exp)
+//   1 / (1 + ((d - e) / (sigma d0))^2)    (d against the depth e that the
+//                                          pixel's tangent plane has at the
+//                                          tap, fxPlaneDepthAt: a surface at a
+//                                          grazing angle blurs as fully as
+//                                          one facing the eye, and a crease's
+//                                          sides stay apart; relative to the
+//                                          depth: the same at every scene
+//                                          scale; a Cauchy weight, as
+//                                          selective as a Gaussian near 0
+//                                          and cheaper than exp)
 //   max(0, n . n0)^p                      (no bleeding across creases; p is
 //                                          a compile-time integer, FX_NORMAL_POWER)
 // With FX_BOX the distance weight is a box whose two end taps weigh 1/2:
@@ -29,7 +35,9 @@
 // Inputs that carry their own guide need no guide stage, and every tap is
 // a single fetch (a software rasteriser pays per fetch):
 // FX_PACKED: one value whose linear depth rides in .g (vtkFXSSAOPass's
-//            output), weighted by depth only;
+//            output), weighted by depth only (the depth against the
+//            pixel's tangent plane, whose normal comes from the G-buffer,
+//            keeps a crease's sides apart with no normal per tap);
 // FX_PACKED_NORMALS: three values with their normal and depth
 //            (vtkFXDirectionalOcclusionPass's packing: R = two values, 12
 //            bits each, G = the third, B = the octahedral normal, 12 bits
@@ -60,6 +68,8 @@ uniform float fxTapWeights[17];
 uniform float fxDepthSigma;  // fraction of the depth
 
 //VTK::FXNormalCoding::Dec
+
+//VTK::FXViewPosition::Dec
 
 //VTK::FXJointUpsample::Dec
 
@@ -104,8 +114,9 @@ vec4 fxBlurOutput(vec4 value, vec4 center, float d0)
 #endif
 }
 
-// Weight of a tap whose guide (normal, depth) is g, for a pixel (n0, d0).
-float fxGuideWeight(float d0, vec3 n0, vec4 g)
+// Weight of a tap whose guide (normal, depth) is g, for a pixel (n0, d0)
+// that expects the tap at depth `expected` (d0, or on its tangent plane).
+float fxGuideWeight(float d0, float expected, vec3 n0, vec4 g)
 {
   if (!(g.w > 0.0))
   {
@@ -114,7 +125,7 @@ float fxGuideWeight(float d0, vec3 n0, vec4 g)
   // (the tolerance kept a normal float: at depths below about 1e-34 world
   // units, past what the occlusion passes serve but not what a blur of
   // another input may see, the product underflows, and 0 / 0 is NaN)
-  float r = (g.w - d0) / max(fxDepthSigma * d0, 1e-37);
+  float r = (g.w - expected) / max(fxDepthSigma * d0, 1e-37);
   // c^FX_NORMAL_POWER (0..32) by squaring, unrolled at compile time (the
   // bit tests are constant and fold away): a loop here, nested in the
   // taps' loop, cost llvmpipe a quarter of a directional occlusion frame
@@ -153,7 +164,20 @@ void main()
     gl_FragData[0] = fxBlurOutput(value0, center, d0);
     return;
   }
+  // The pixel's tangent plane, against which its taps' depths are judged
+  // (input that carries depth alone: the normal from the G-buffer).
+#if FX_PACKED
+  vec3 n0 = fxDecodeNormal(texelFetch(fxNormal, fxGuideTexel(p), 0).rg);
+#else
   vec3 n0 = g0.xyz;
+#endif
+  // Input texel q holds G-buffer texel q x step (never past the G-buffer's
+  // edge: the input is its size divided by step, rounded up), so taps are
+  // step G-buffer texels apart.
+  vec2 ndc = (vec2(fxGuideTexel(p)) + 0.5) / vec2(fxGBufferSize) * 2.0 - 1.0;
+  vec3 planeA, planeB;
+  fxPlaneDepthRatio(n0, fxViewPosition(ndc, d0), ndc, 2.0 * float(fxStep) / vec2(fxGBufferSize),
+    planeA, planeB);
   // Taps (i, j): i along the pass's direction, j across it (the 2D
   // filter's rows; one row, j = 0, for the separable passes).
   ivec2 along = FX_MODE == 1 ? ivec2(0, 1) : ivec2(1, 0);
@@ -177,7 +201,8 @@ void main()
       }
       vec4 tap, guide;
       fxReadTap(q, n0, tap, guide);
-      float w = fxTapWeights[abs(i)] * rowWeight * fxGuideWeight(d0, n0, guide);
+      float expected = fxPlaneDepthAt(planeA, planeB, vec2(q - p), d0);
+      float w = fxTapWeights[abs(i)] * rowWeight * fxGuideWeight(d0, expected, n0, guide);
       sum += w * tap;
       total += w;
     }
@@ -190,11 +215,15 @@ void main()
     gl_FragData[0] = texelFetch(fxInput, clamp(p / fxStep, ivec2(0), fxInputSize - 1), 0);
     return;
   }
+  // The pixel's tangent plane, as the blur judged its taps.
+  vec3 n0 = fxDecodeNormal(texelFetch(fxNormal, p, 0).rg);
+  vec3 p0 = fxViewPosition((vec2(p) + 0.5) / vec2(fxGBufferSize) * 2.0 - 1.0, d0);
 #if FX_PACKED || FX_PACKED_NORMALS
-  gl_FragData[0] = fxJointUpsample(
-    fxInput, true, fxInput, FX_DEPTH_COMPONENT, fxInputSize, fxStep, p, d0, fxDepthSigma);
+  gl_FragData[0] = fxJointUpsample(fxInput, true, fxInput, FX_DEPTH_COMPONENT, fxInputSize,
+    fxStep, p, d0, fxDepthSigma, n0, p0, fxGBufferSize);
 #else
-  gl_FragData[0] = fxJointUpsample(fxInput, false, fxGuide, 3, fxInputSize, fxStep, p, d0, fxDepthSigma);
+  gl_FragData[0] = fxJointUpsample(fxInput, false, fxGuide, 3, fxInputSize, fxStep, p, d0,
+    fxDepthSigma, n0, p0, fxGBufferSize);
 #endif
 #endif
 }

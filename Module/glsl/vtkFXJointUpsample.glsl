@@ -1,23 +1,44 @@
 // Joint-bilateral upsampling (Kopf, Cohen, Lischinski, Uyttendaele 2007):
 // the value at a full-resolution pixel of linear depth d0 is the bilinear
 // blend of the 4 nearest low-resolution texels, each weighted also by
-// 1 / (1 + ((d - d0) / (sigma d0))^2), its depth agreement (relative to the
-// depth: scale-free). The texels' linear depths are component
-// `depthComponent` of `depths`, or, when `depthInValue` (a constant at every
-// call, so the branch compiles away), of the values themselves, as the
-// occlusion passes write them, saving a fetch per texel; with no agreeing
-// texel (a feature
-// thinner than a low-resolution texel) the texel closest in depth wins.
-// Used by vtkFXBilateralBlurFS.
+// 1 / (1 + ((d - e) / (sigma d0))^2), its depth d's agreement with the
+// depth e the pixel's tangent plane (normal n0 through p0) has there
+// (fxPlaneDepthAt of vtkFXViewPosition.glsl: a crease keeps each side's
+// value; relative to the depth: scale-free). With n0 = 0, or a plane that
+// does not reach the texel, e = d0. The texels' linear depths are
+// component `depthComponent` of `depths`, or, when `depthInValue` (a
+// constant at every call, so the branch compiles away), of the values
+// themselves, as the occlusion passes write them, saving a fetch per
+// texel; with no agreeing texel (a feature thinner than a low-resolution
+// texel) the texel closest in depth wins. Low-resolution texel i holds the
+// value of full-resolution texel i * step of fullSize.
+// Used by vtkFXBilateralBlurFS and the occlusion passes' composite code,
+// after vtkFXViewPosition.glsl.
 #ifndef FX_JOINT_UPSAMPLE // (the composite may receive it from more than one effect)
 #define FX_JOINT_UPSAMPLE
-vec4 fxJointUpsample(sampler2D lowResolution, bool depthInValue, sampler2D depths, int depthComponent,
-  ivec2 lowSize, int step, ivec2 pixel, float d0, float depthSigma)
+// The offset from full-resolution pixel `pixel` to the texel that
+// low-resolution texel q (clamped to lowSize) holds.
+vec2 fxLowTexelOffset(ivec2 q, ivec2 lowSize, int step, ivec2 fullSize, ivec2 pixel)
 {
-  // Low-resolution texel i holds the value of full-resolution texel i * step.
+  return vec2(min(clamp(q, ivec2(0), lowSize - 1) * step, fullSize - 1) - pixel);
+}
+
+// The coefficients of fxPlaneDepthAt for a full-resolution pixel.
+void fxPixelPlane(vec3 n0, vec3 p0, ivec2 pixel, ivec2 fullSize, out vec3 a, out vec3 b)
+{
+  fxPlaneDepthRatio(n0, p0, (vec2(pixel) + 0.5) / vec2(fullSize) * 2.0 - 1.0,
+    2.0 / vec2(fullSize), a, b);
+}
+
+vec4 fxJointUpsample(sampler2D lowResolution, bool depthInValue, sampler2D depths, int depthComponent,
+  ivec2 lowSize, int step, ivec2 pixel, float d0, float depthSigma, vec3 n0, vec3 p0,
+  ivec2 fullSize)
+{
   vec2 x = vec2(pixel) / float(step);
   ivec2 base = ivec2(floor(x));
   vec2 f = x - vec2(base);
+  vec3 planeA, planeB;
+  fxPixelPlane(n0, p0, pixel, fullSize, planeA, planeB);
   vec4 sum = vec4(0.0);
   float total = 0.0;
   vec4 nearest = vec4(1.0);
@@ -30,7 +51,9 @@ vec4 fxJointUpsample(sampler2D lowResolution, bool depthInValue, sampler2D depth
       vec4 v = texelFetch(lowResolution, q, 0);
       float d = depthInValue ? v[depthComponent] : texelFetch(depths, q, 0)[depthComponent];
       float bilinear = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
-      float r = (d - d0) / max(depthSigma * d0, 1e-37); // (see vtkFXBilateralBlurFS)
+      float e = fxPlaneDepthAt(
+        planeA, planeB, fxLowTexelOffset(base + ivec2(i, j), lowSize, step, fullSize, pixel), d0);
+      float r = (d - e) / max(depthSigma * d0, 1e-37); // (see vtkFXBilateralBlurFS)
       float w = d > 0.0 ? bilinear / (1.0 + r * r) : 0.0;
       sum += w * v;
       total += w;
@@ -52,8 +75,8 @@ vec4 fxJointUpsample(sampler2D lowResolution, bool depthInValue, sampler2D depth
 // (a software rasteriser pays per fetch; used where textureGather reads
 // any component, FX_GATHER). With no agreeing texel, the one closest in
 // depth, or 1 (open) where all four are background.
-float fxJointUpsampleGathered(
-  sampler2D valueAndDepth, ivec2 lowSize, int step, ivec2 pixel, float d0, float depthSigma)
+float fxJointUpsampleGathered(sampler2D valueAndDepth, ivec2 lowSize, int step, ivec2 pixel,
+  float d0, float depthSigma, vec3 n0, vec3 p0, ivec2 fullSize)
 {
   vec2 x = vec2(pixel) / float(step);
   ivec2 base = ivec2(floor(x));
@@ -64,7 +87,14 @@ float fxJointUpsampleGathered(
   vec4 v = textureGather(valueAndDepth, at, 0);
   vec4 d = textureGather(valueAndDepth, at, 1);
   vec4 bilinear = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
-  vec4 r = (d - d0) / max(depthSigma * d0, 1e-37);
+  vec3 planeA, planeB;
+  fxPixelPlane(n0, p0, pixel, fullSize, planeA, planeB);
+  vec4 e = vec4(
+    fxPlaneDepthAt(planeA, planeB, fxLowTexelOffset(base + ivec2(0, 1), lowSize, step, fullSize, pixel), d0),
+    fxPlaneDepthAt(planeA, planeB, fxLowTexelOffset(base + ivec2(1, 1), lowSize, step, fullSize, pixel), d0),
+    fxPlaneDepthAt(planeA, planeB, fxLowTexelOffset(base + ivec2(1, 0), lowSize, step, fullSize, pixel), d0),
+    fxPlaneDepthAt(planeA, planeB, fxLowTexelOffset(base, lowSize, step, fullSize, pixel), d0));
+  vec4 r = (d - e) / max(depthSigma * d0, 1e-37);
   bvec4 covered = greaterThan(d, vec4(0.0));
   vec4 w = mix(vec4(0.0), bilinear / (1.0 + r * r), covered);
   float total = dot(w, vec4(1.0));

@@ -20,3 +20,36 @@ vec3 fxViewPosition(vec2 ndc, float depth)
   fxRay(ndc, origin, direction);
   return origin + depth * direction;
 }
+
+// Linear depths at which the rays through a pixel's neighbours meet the
+// plane through p0 with normal n0 (a receiver's tangent plane). The
+// bilateral filters compare a neighbour's depth with this rather than with
+// the receiver's own depth: on a surface seen at a grazing angle the depth
+// changes fast from pixel to pixel while the plane predicts it, and across
+// a crease, where depth is continuous, the neighbour leaves the plane (as
+// the slope-adjusted depth edges of Intel's XeGTAO denoiser do, from the
+// depth's screen-space slope). Ray origin and direction are affine in ndc,
+// so the depth at the neighbour offset by (dx, dy) pixels from the one at
+// `ndc`, pixels being `ndcStep` apart, is dot(a, v) / dot(b, v) with
+// v = (1, dx, dy): fxPlaneDepthRatio computes a and b once per pixel,
+// fxPlaneDepthAt evaluates them per neighbour.
+void fxPlaneDepthRatio(vec3 n0, vec3 p0, vec2 ndc, vec2 ndcStep, out vec3 a, out vec3 b)
+{
+  vec3 origin, direction;
+  fxRay(ndc, origin, direction);
+  a = vec3(dot(n0, p0 - origin), -dot(n0, fxRayOrigin[1]) * ndcStep.x,
+    -dot(n0, fxRayOrigin[2]) * ndcStep.y);
+  b = vec3(dot(n0, direction), dot(n0, fxRayDirection[1]) * ndcStep.x,
+    dot(n0, fxRayDirection[2]) * ndcStep.y);
+}
+
+// The plane's depth at offset (dx, dy), or `fallback` where the plane is
+// not in front of the eye there (ray parallel to it, plane behind, or a
+// normal that is not one: a 0 normal gives the fallback everywhere).
+float fxPlaneDepthAt(vec3 a, vec3 b, vec2 offset, float fallback)
+{
+  vec3 v = vec3(1.0, offset);
+  float facing = dot(b, v);
+  float t = dot(a, v) / facing;
+  return abs(facing) > 1e-8 && t > 0.0 && t < 3.0e38 ? t : fallback;
+}
