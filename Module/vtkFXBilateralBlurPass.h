@@ -86,16 +86,19 @@ public:
 
   /**
    * Depth tolerance as a fraction of the pixel's depth (0.0001..1, default
-   * 0.02): taps whose depth differs by this much from the pixel's tangent
-   * plane weigh 1/2 (the Cauchy weight 1 / (1 + r^2) of the relative
+   * 0.02, DefaultDepthSigma, which vtkFXSSAOPass's composite upsample uses
+   * too): taps whose depth differs by this much from the pixel's tangent
+   * plane (its own depth where the G-buffer has no normal for it) weigh 1/2 (the Cauchy weight 1 / (1 + r^2) of the relative
    * difference r in units of it). Judged against the plane, a surface seen
-   * at a grazing angle blurs as fully as one facing the eye, and the two
-   * sides of a crease, where depth is continuous, stay apart. 0.02 against
-   * the 0.05 of a test against the pixel's own depth: detail score (vtkfx-bench ao,
-   * Medium preset) bunny 0.62 from 0.55, fandisk 0.67 from 0.54, corner
-   * 0.53 from 0.51, 1crn 0.63 from 0.64, PSNR within 0.4 dB.
+   * at a grazing angle blurs much as one facing the eye (up to the
+   * normals' precision and curvature), and the two sides of a crease, where
+   * depth is continuous, stay apart. 0.02 against the 0.05 of a test
+   * against the pixel's own depth: detail score (vtkfx-bench ao, Medium
+   * preset) bunny 0.62 from 0.54, fandisk 0.67 from 0.53, corner 0.53 from
+   * 0.52, 1crn 0.63 from 0.64, PSNR within 0.4 dB.
    */
   vtkFXSetClampMacro(DepthSigma, double, 1e-4, 1.0);
+  static constexpr double DefaultDepthSigma = 0.02;
   vtkGetMacro(DepthSigma, double);
 
   /**
@@ -174,7 +177,7 @@ protected:
 
   int Radius = 4;
   int Kernel = Gaussian;
-  double DepthSigma = 0.02;
+  double DepthSigma = DefaultDepthSigma;
   int NormalPower = 8;
   int NumberOfComponents = 1;
   bool Upsample = true;

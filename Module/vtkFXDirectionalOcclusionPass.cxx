@@ -185,7 +185,7 @@ std::string vtkFXDirectionalOcclusionPass::ChannelsReadCode()
   const bool byDepth = this->UpsamplesByDepth(this->CompositeSource());
   const std::string read = byDepth
     ? "  vec3 stored = fxJointUpsample(@occlusion, true, @occlusion, 3, textureSize(@occlusion, "
-      "0), @step, ivec2(texCoord * vec2(@fullSize)), fxPixelDepth, 0.05, vec3(0.0), vec3(0.0), "
+      "0), @step, ivec2(texCoord * vec2(@fullSize)), fxPixelDepth, 0.05, vec3(0.0), "
       "@fullSize).rgb;\n"
     : this->GetInput("denoised").Texture
     ? "  vec3 stored = texture(@occlusion, texCoord * @scale + @offset).rgb;\n"

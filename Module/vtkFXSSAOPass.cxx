@@ -1,5 +1,6 @@
 #include "vtkFXSSAOPass.h"
 
+#include "vtkFXBilateralBlurPass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXJointUpsample.h"
 #include "vtkFXNormalCoding.h"
@@ -149,16 +150,22 @@ std::string vtkFXSSAOPass::GetCompositeCode(int hook)
       // gathers for four texels), judged against the pixel's tangent plane
       // with vtkFXBilateralBlurPass's default tolerance, so that a crease
       // keeps each side's occlusion too; the composite reads fxPixelDepth
-      // and position where a depth channel exists.
+      // where a depth channel exists. The plane is the geometric one: the
+      // composite's n, unless shading normals (normal textures, bumps)
+      // perturb it, when the depth alone is judged (n0 = 0).
+      const bool shadingNormals =
+        this->GBuffer && this->GBuffer->GetChannelTexture(vtkFXGBufferPass::GeometricNormal);
+      const std::string plane = std::string(shadingNormals ? "vec3(0.0)" : "n") + ", @fullSize";
+      const std::string sigma = std::to_string(vtkFXBilateralBlurPass::DefaultDepthSigma) + ", ";
       const std::string read = this->UpsamplesByDepth(this->CompositeSource())
         ? "\n#if FX_GATHER\n"
           "      float ao = fxPixelDepth > 0.0 ? fxJointUpsampleGathered(@occlusion, "
-          "textureSize(@occlusion, 0), @step, ivec2(texCoord * vec2(@fullSize)), fxPixelDepth, "
-          "0.02, n, position, @fullSize) : 1.0;\n"
+          "textureSize(@occlusion, 0), @step, ivec2(texCoord * vec2(@fullSize)), fxPixelDepth, " +
+          sigma + plane + ") : 1.0;\n"
           "#else\n"
           "      float ao = fxPixelDepth > 0.0 ? fxJointUpsample(@occlusion, true, @occlusion, 1, "
-          "textureSize(@occlusion, 0), @step, ivec2(texCoord * vec2(@fullSize)), fxPixelDepth, "
-          "0.02, n, position, @fullSize).r : 1.0;\n"
+          "textureSize(@occlusion, 0), @step, ivec2(texCoord * vec2(@fullSize)), fxPixelDepth, " +
+          sigma + plane + ").r : 1.0;\n"
           "#endif\n"
         : "      float ao = texture(@occlusion, texCoord * @scale + @offset).r;\n";
       return "    if (@written != 0)\n"

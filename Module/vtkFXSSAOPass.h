@@ -166,9 +166,11 @@ public:
    * How the composite reads a reduced-resolution occlusion that carries its
    * depth (this pass's, blurred or not): on (default), a joint-bilateral
    * upsample (four texels weighted by their depth's agreement with the
-   * pixel's, vtkFXJointUpsample.glsl, tolerance 0.05 of the depth), so
-   * occlusion does not bleed across depth edges; off, one bilinear read.
-   * (vtkFXDirectionalOcclusionPass's three channels too, once blurred.)
+   * pixel's tangent plane, vtkFXJointUpsample.glsl, tolerance
+   * vtkFXBilateralBlurPass::DefaultDepthSigma of the depth), so occlusion
+   * does not bleed across depth edges or creases; off, one bilinear read.
+   * (vtkFXDirectionalOcclusionPass's three channels too, once blurred,
+   * judged against the pixel's own depth at 0.05.)
    */
   vtkSetMacro(DepthAwareUpsample, bool);
   vtkGetMacro(DepthAwareUpsample, bool);

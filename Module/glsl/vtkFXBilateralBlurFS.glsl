@@ -114,6 +114,14 @@ vec4 fxBlurOutput(vec4 value, vec4 center, float d0)
 #endif
 }
 
+// The normal of a G-buffer texel's tangent plane, or 0 (judge depth
+// against the pixel's own) where VTK does not light the surface: its code
+// decodes to no normal.
+vec3 fxPlaneNormal(vec2 code)
+{
+  return fxIsUnlit(code) ? vec3(0.0) : fxDecodeNormal(code);
+}
+
 // Weight of a tap whose guide (normal, depth) is g, for a pixel (n0, d0)
 // that expects the tap at depth `expected` (d0, or on its tangent plane).
 float fxGuideWeight(float d0, float expected, vec3 n0, vec4 g)
@@ -167,17 +175,16 @@ void main()
   // The pixel's tangent plane, against which its taps' depths are judged
   // (input that carries depth alone: the normal from the G-buffer).
 #if FX_PACKED
-  vec3 n0 = fxDecodeNormal(texelFetch(fxNormal, fxGuideTexel(p), 0).rg);
+  vec3 n0 = fxPlaneNormal(texelFetch(fxNormal, fxGuideTexel(p), 0).rg);
 #else
   vec3 n0 = g0.xyz;
 #endif
   // Input texel q holds G-buffer texel q x step (never past the G-buffer's
   // edge: the input is its size divided by step, rounded up), so taps are
   // step G-buffer texels apart.
-  vec2 ndc = (vec2(fxGuideTexel(p)) + 0.5) / vec2(fxGBufferSize) * 2.0 - 1.0;
   vec3 planeA, planeB;
-  fxPlaneDepthRatio(n0, fxViewPosition(ndc, d0), ndc, 2.0 * float(fxStep) / vec2(fxGBufferSize),
-    planeA, planeB);
+  fxPlaneDepthRatio(n0, d0, fxTexelNdc(fxGuideTexel(p), fxGBufferSize),
+    2.0 * float(fxStep) / vec2(fxGBufferSize), planeA, planeB);
   // Taps (i, j): i along the pass's direction, j across it (the 2D
   // filter's rows; one row, j = 0, for the separable passes).
   ivec2 along = FX_MODE == 1 ? ivec2(0, 1) : ivec2(1, 0);
@@ -216,14 +223,13 @@ void main()
     return;
   }
   // The pixel's tangent plane, as the blur judged its taps.
-  vec3 n0 = fxDecodeNormal(texelFetch(fxNormal, p, 0).rg);
-  vec3 p0 = fxViewPosition((vec2(p) + 0.5) / vec2(fxGBufferSize) * 2.0 - 1.0, d0);
+  vec3 n0 = fxPlaneNormal(texelFetch(fxNormal, p, 0).rg);
 #if FX_PACKED || FX_PACKED_NORMALS
   gl_FragData[0] = fxJointUpsample(fxInput, true, fxInput, FX_DEPTH_COMPONENT, fxInputSize,
-    fxStep, p, d0, fxDepthSigma, n0, p0, fxGBufferSize);
+    fxStep, p, d0, fxDepthSigma, n0, fxGBufferSize);
 #else
   gl_FragData[0] = fxJointUpsample(fxInput, false, fxGuide, 3, fxInputSize, fxStep, p, d0,
-    fxDepthSigma, n0, p0, fxGBufferSize);
+    fxDepthSigma, n0, fxGBufferSize);
 #endif
 #endif
 }

@@ -2,7 +2,7 @@
 // the value at a full-resolution pixel of linear depth d0 is the bilinear
 // blend of the 4 nearest low-resolution texels, each weighted also by
 // 1 / (1 + ((d - e) / (sigma d0))^2), its depth d's agreement with the
-// depth e the pixel's tangent plane (normal n0 through p0) has there
+// depth e the pixel's tangent plane (normal n0) has there
 // (fxPlaneDepthAt of vtkFXViewPosition.glsl: a crease keeps each side's
 // value; relative to the depth: scale-free). With n0 = 0, or a plane that
 // does not reach the texel, e = d0. The texels' linear depths are
@@ -10,7 +10,7 @@
 // constant at every call, so the branch compiles away), of the values
 // themselves, as the occlusion passes write them, saving a fetch per
 // texel; with no agreeing texel (a feature thinner than a low-resolution
-// texel) the texel closest in depth wins. Low-resolution texel i holds the
+// texel) the texel closest to that depth wins. Low-resolution texel i holds the
 // value of full-resolution texel i * step of fullSize.
 // Used by vtkFXBilateralBlurFS and the occlusion passes' composite code,
 // after vtkFXViewPosition.glsl.
@@ -24,21 +24,19 @@ vec2 fxLowTexelOffset(ivec2 q, ivec2 lowSize, int step, ivec2 fullSize, ivec2 pi
 }
 
 // The coefficients of fxPlaneDepthAt for a full-resolution pixel.
-void fxPixelPlane(vec3 n0, vec3 p0, ivec2 pixel, ivec2 fullSize, out vec3 a, out vec3 b)
+void fxPixelPlane(vec3 n0, float d0, ivec2 pixel, ivec2 fullSize, out vec3 a, out vec3 b)
 {
-  fxPlaneDepthRatio(n0, p0, (vec2(pixel) + 0.5) / vec2(fullSize) * 2.0 - 1.0,
-    2.0 / vec2(fullSize), a, b);
+  fxPlaneDepthRatio(n0, d0, fxTexelNdc(pixel, fullSize), 2.0 / vec2(fullSize), a, b);
 }
 
 vec4 fxJointUpsample(sampler2D lowResolution, bool depthInValue, sampler2D depths, int depthComponent,
-  ivec2 lowSize, int step, ivec2 pixel, float d0, float depthSigma, vec3 n0, vec3 p0,
-  ivec2 fullSize)
+  ivec2 lowSize, int step, ivec2 pixel, float d0, float depthSigma, vec3 n0, ivec2 fullSize)
 {
   vec2 x = vec2(pixel) / float(step);
   ivec2 base = ivec2(floor(x));
   vec2 f = x - vec2(base);
   vec3 planeA, planeB;
-  fxPixelPlane(n0, p0, pixel, fullSize, planeA, planeB);
+  fxPixelPlane(n0, d0, pixel, fullSize, planeA, planeB);
   vec4 sum = vec4(0.0);
   float total = 0.0;
   vec4 nearest = vec4(1.0);
@@ -57,7 +55,7 @@ vec4 fxJointUpsample(sampler2D lowResolution, bool depthInValue, sampler2D depth
       float w = d > 0.0 ? bilinear / (1.0 + r * r) : 0.0;
       sum += w * v;
       total += w;
-      float gap = d > 0.0 ? abs(d - d0) : 1e30; // background never stands in
+      float gap = d > 0.0 ? abs(d - e) : 1e30; // background never stands in
       if (gap < nearestGap)
       {
         nearestGap = gap;
@@ -76,7 +74,7 @@ vec4 fxJointUpsample(sampler2D lowResolution, bool depthInValue, sampler2D depth
 // any component, FX_GATHER). With no agreeing texel, the one closest in
 // depth, or 1 (open) where all four are background.
 float fxJointUpsampleGathered(sampler2D valueAndDepth, ivec2 lowSize, int step, ivec2 pixel,
-  float d0, float depthSigma, vec3 n0, vec3 p0, ivec2 fullSize)
+  float d0, float depthSigma, vec3 n0, ivec2 fullSize)
 {
   vec2 x = vec2(pixel) / float(step);
   ivec2 base = ivec2(floor(x));
@@ -88,7 +86,7 @@ float fxJointUpsampleGathered(sampler2D valueAndDepth, ivec2 lowSize, int step, 
   vec4 d = textureGather(valueAndDepth, at, 1);
   vec4 bilinear = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
   vec3 planeA, planeB;
-  fxPixelPlane(n0, p0, pixel, fullSize, planeA, planeB);
+  fxPixelPlane(n0, d0, pixel, fullSize, planeA, planeB);
   vec4 e = vec4(
     fxPlaneDepthAt(planeA, planeB, fxLowTexelOffset(base + ivec2(0, 1), lowSize, step, fullSize, pixel), d0),
     fxPlaneDepthAt(planeA, planeB, fxLowTexelOffset(base + ivec2(1, 1), lowSize, step, fullSize, pixel), d0),
@@ -99,7 +97,7 @@ float fxJointUpsampleGathered(sampler2D valueAndDepth, ivec2 lowSize, int step, 
   vec4 w = mix(vec4(0.0), bilinear / (1.0 + r * r), covered);
   float total = dot(w, vec4(1.0));
   // (the fetches' order among equal gaps: (0, 0), (1, 0), (0, 1), (1, 1))
-  vec4 gap = mix(vec4(1e30), abs(d - d0), covered);
+  vec4 gap = mix(vec4(1e30), abs(d - e), covered);
   float nearest = 1.0;
   float nearestGap = 1e30;
   if (gap.w < nearestGap) { nearestGap = gap.w; nearest = v.w; }

@@ -68,7 +68,7 @@ const float fxPi = 3.14159265358979;
 // so that the surface there is at origin + depth * direction.
 void fxTexelRay(ivec2 texel, out vec3 origin, out vec3 direction)
 {
-  fxRay((vec2(texel) + 0.5) / vec2(fxGBufferSize) * 2.0 - 1.0, origin, direction);
+  fxRay(fxTexelNdc(texel, fxGBufferSize), origin, direction);
 }
 
 //VTK::FXExtension::Dec
@@ -397,8 +397,7 @@ void main()
 #endif
     return;
   }
-  vec2 ndc = (vec2(texel) + 0.5) / vec2(fxGBufferSize) * 2.0 - 1.0;
-  vec3 p = fxViewPosition(ndc, depth);
+  vec3 p = fxViewPosition(fxTexelNdc(texel, fxGBufferSize), depth);
   vec3 n = fxDecodeNormal(code);
 
   int tileEntry = (pixel.x & (FX_TILE - 1)) + FX_TILE * (pixel.y & (FX_TILE - 1));

@@ -8,6 +8,13 @@
 uniform vec3 fxRayOrigin[3];
 uniform vec3 fxRayDirection[3];
 
+// Normalized device coordinates of the centre of texel `texel` of an image
+// of `size` texels.
+vec2 fxTexelNdc(ivec2 texel, ivec2 size)
+{
+  return (vec2(texel) + 0.5) / vec2(size) * 2.0 - 1.0;
+}
+
 void fxRay(vec2 ndc, out vec3 origin, out vec3 direction)
 {
   origin = fxRayOrigin[0] + ndc.x * fxRayOrigin[1] + ndc.y * fxRayOrigin[2];
@@ -22,7 +29,8 @@ vec3 fxViewPosition(vec2 ndc, float depth)
 }
 
 // Linear depths at which the rays through a pixel's neighbours meet the
-// plane through p0 with normal n0 (a receiver's tangent plane). The
+// plane with normal n0 through the surface the pixel sees at depth d0 (a
+// receiver's tangent plane). The
 // bilateral filters compare a neighbour's depth with this rather than with
 // the receiver's own depth: on a surface seen at a grazing angle the depth
 // changes fast from pixel to pixel while the plane predicts it, and across
@@ -32,15 +40,16 @@ vec3 fxViewPosition(vec2 ndc, float depth)
 // so the depth at the neighbour offset by (dx, dy) pixels from the one at
 // `ndc`, pixels being `ndcStep` apart, is dot(a, v) / dot(b, v) with
 // v = (1, dx, dy): fxPlaneDepthRatio computes a and b once per pixel,
-// fxPlaneDepthAt evaluates them per neighbour.
-void fxPlaneDepthRatio(vec3 n0, vec3 p0, vec2 ndc, vec2 ndcStep, out vec3 a, out vec3 b)
+// fxPlaneDepthAt evaluates them per neighbour. (The pixel's own point is
+// origin + d0 direction, so a.x = d0 b.x, and the plane gives back d0 at
+// the pixel exactly.)
+void fxPlaneDepthRatio(vec3 n0, float d0, vec2 ndc, vec2 ndcStep, out vec3 a, out vec3 b)
 {
   vec3 origin, direction;
   fxRay(ndc, origin, direction);
-  a = vec3(dot(n0, p0 - origin), -dot(n0, fxRayOrigin[1]) * ndcStep.x,
-    -dot(n0, fxRayOrigin[2]) * ndcStep.y);
   b = vec3(dot(n0, direction), dot(n0, fxRayDirection[1]) * ndcStep.x,
     dot(n0, fxRayDirection[2]) * ndcStep.y);
+  a = vec3(d0 * b.x, -dot(n0, fxRayOrigin[1]) * ndcStep.x, -dot(n0, fxRayOrigin[2]) * ndcStep.y);
 }
 
 // The plane's depth at offset (dx, dy), or `fallback` where the plane is

@@ -146,7 +146,7 @@ struct TangentPlanes
     }
   }
 
-  // fxPlaneDepth: the depth at blurred texel (qx, qy) of the tangent plane
+  // fxPlaneDepthAt: the depth at blurred texel (qx, qy) of the tangent plane
   // of texel (x, y) at depth d0, or d0 where the plane misses.
   double ExpectedDepth(int x, int y, double d0, int qx, int qy) const
   {
