@@ -10,8 +10,8 @@
 //   1 / (1 + ((d - e) / (sigma d0))^2)    (d against the depth e that the
 //                                          pixel's tangent plane has at the
 //                                          tap, fxPlaneDepthAt: a surface at a
-//                                          grazing angle blurs as fully as
-//                                          one facing the eye, and a crease's
+//                                          grazing angle blurs much as one
+//                                          facing the eye, and a crease's
 //                                          sides stay apart; relative to the
 //                                          depth: the same at every scene
 //                                          scale; a Cauchy weight, as

@@ -45,8 +45,7 @@ vec3 fxViewPosition(vec2 ndc, float depth)
 // the pixel exactly.)
 void fxPlaneDepthRatio(vec3 n0, float d0, vec2 ndc, vec2 ndcStep, out vec3 a, out vec3 b)
 {
-  vec3 origin, direction;
-  fxRay(ndc, origin, direction);
+  vec3 direction = fxRayDirection[0] + ndc.x * fxRayDirection[1] + ndc.y * fxRayDirection[2];
   b = vec3(dot(n0, direction), dot(n0, fxRayDirection[1]) * ndcStep.x,
     dot(n0, fxRayDirection[2]) * ndcStep.y);
   a = vec3(d0 * b.x, -dot(n0, fxRayOrigin[1]) * ndcStep.x, -dot(n0, fxRayOrigin[2]) * ndcStep.y);
