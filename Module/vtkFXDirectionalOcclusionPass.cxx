@@ -1,5 +1,6 @@
 #include "vtkFXDirectionalOcclusionPass.h"
 
+#include "vtkFXBilateralBlurPass.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXJointUpsample.h"
@@ -181,19 +182,21 @@ std::string vtkFXDirectionalOcclusionPass::ChannelsReadCode()
   // read the nearest texel and unpack it. The horizon method's channels
   // are stored as (v + 0.5) / 2 (vtkFXSSAOFS.glsl): decoded here, for
   // every reader.
-  // Blurred and at half resolution: upsampled by depth (DepthAwareUpsample).
+  // Blurred and at half resolution: upsampled by depth (DepthAwareUpsample)
+  // against the tangent plane of the geometric normal g, as the blur judged
+  // its taps.
   const bool byDepth = this->UpsamplesByDepth(this->CompositeSource());
   const std::string read = byDepth
     ? "  vec3 stored = fxJointUpsample(@occlusion, true, @occlusion, 3, textureSize(@occlusion, "
-      "0), @step, ivec2(texCoord * vec2(@fullSize)), fxPixelDepth, 0.05, vec3(0.0), "
-      "@fullSize).rgb;\n"
+      "0), @step, ivec2(texCoord * vec2(@fullSize)), fxPixelDepth, " +
+      std::to_string(vtkFXBilateralBlurPass::DefaultDepthSigma) + ", g, @fullSize).rgb;\n"
     : this->GetInput("denoised").Texture
     ? "  vec3 stored = texture(@occlusion, texCoord * @scale + @offset).rgb;\n"
     : "  ivec2 size = textureSize(@occlusion, 0);\n"
       "  ivec2 t = clamp(ivec2((texCoord * @scale + @offset) * vec2(size)), ivec2(0), size - 1);\n"
       "  vec4 texel = texelFetch(@occlusion, t, 0);\n"
       "  vec3 stored = vec3(fxUnpack12(texel.r), texel.g);\n";
-  return std::string(byDepth ? vtkFXJointUpsample : "") + "vec3 @channels(float fxPixelDepth)\n{\n" + read +
+  return std::string(byDepth ? vtkFXJointUpsample : "") + "vec3 @channels(float fxPixelDepth, vec3 g)\n{\n" + read +
     (this->GetEffectiveMethod() == Horizon ? "  return 2.0 * stored - 0.5;\n}\n"
                                            : "  return stored;\n}\n");
 }
@@ -243,26 +246,25 @@ std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
     case Ambient:
     {
       const bool horizon = this->GetEffectiveMethod() == Horizon;
-      if (this->ShowChannels)
-      {
-        return "    if (@written != 0)\n"
-               "    {\n"
-               "      ambientVisibility *= clamp(@channels(fxPixelDepth), 0.0, 1.0);\n"
-               "    }";
-      }
-      // The seed's resolve: the channels weighted by the shading normal n's
-      // squared clamped cosines with the basis of the geometric normal g.
-      // Without a GeometricNormal channel no prop perturbs its normal: g = n
-      // and the weights are 1/3 (the channels' mean).
+      // g: the geometric normal. Without a GeometricNormal channel no prop
+      // perturbs its normal: g = n.
       std::string code = "    if (@written != 0)\n"
                          "    {\n"
-                         "      vec3 channels = @channels(fxPixelDepth);\n"
                          "      vec3 g = n;\n";
       if (geometric)
       {
         code += "      vec2 encoded = texture(@geometric, texCoord).rg;\n"
                 "      if (!fxIsUnlit(encoded)) { g = fxDecodeNormal(encoded); }\n";
       }
+      code += "      vec3 channels = @channels(fxPixelDepth, g);\n";
+      if (this->ShowChannels)
+      {
+        return code + "      ambientVisibility *= clamp(channels, 0.0, 1.0);\n"
+                      "    }";
+      }
+      // The seed's resolve: the channels weighted by the shading normal n's
+      // squared clamped cosines with the basis of g (without shading
+      // normals the weights are 1/3: the channels' mean).
       code += std::string("      float resolved = dot(") +
         (horizon ? "fxResolveWeightsLinear" : "fxResolveWeights") +
         "(g, n), channels);\n"

@@ -170,7 +170,7 @@ public:
    * vtkFXBilateralBlurPass::DefaultDepthSigma of the depth), so occlusion
    * does not bleed across depth edges or creases; off, one bilinear read.
    * (vtkFXDirectionalOcclusionPass's three channels too, once blurred,
-   * judged against the pixel's own depth at 0.05.)
+   * against the plane of the geometric normal.)
    */
   vtkSetMacro(DepthAwareUpsample, bool);
   vtkGetMacro(DepthAwareUpsample, bool);
