@@ -7,9 +7,10 @@
 // and Durand 2004; upsampling: Kopf et al. 2007), as SSAO write-ups of the
 // time blur their occlusion (e.g. the SSAO article on gamerendering.com,
 // 2009, over 17 taps): a tap counts with a Gaussian of its distance times
-//   1 / (1 + ((d - e) / (sigma d0))^2)    (d against the depth e that the
+//   1 / (1 + (gap / (sigma d0))^2)        (d against the depth e that the
 //                                          pixel's tangent plane has at the
-//                                          tap, fxPlaneDepthAt: a surface at a
+//                                          tap, fxPlaneDepthAt, or against
+//                                          d0, the nearer, fxPlaneGap: a surface at a
 //                                          grazing angle blurs much as one
 //                                          facing the eye, and a crease's
 //                                          sides stay apart; relative to the
@@ -133,7 +134,7 @@ float fxGuideWeight(float d0, float expected, vec3 n0, vec4 g)
   // (the tolerance kept a normal float: at depths below about 1e-34 world
   // units, past what the occlusion passes serve but not what a blur of
   // another input may see, the product underflows, and 0 / 0 is NaN)
-  float r = (g.w - expected) / max(fxDepthSigma * d0, 1e-37);
+  float r = fxPlaneGap(g.w, expected, d0) / max(fxDepthSigma * d0, 1e-37);
   // c^FX_NORMAL_POWER (0..32) by squaring, unrolled at compile time (the
   // bit tests are constant and fold away): a loop here, nested in the
   // taps' loop, cost llvmpipe a quarter of a directional occlusion frame

@@ -51,6 +51,22 @@ void fxPlaneDepthRatio(vec3 n0, float d0, vec2 ndc, vec2 ndcStep, out vec3 a, ou
   a = vec3(d0 * b.x, -dot(n0, fxRayOrigin[1]) * ndcStep.x, -dot(n0, fxRayOrigin[2]) * ndcStep.y);
 }
 
+// How far depth d is from agreeing with a pixel at depth d0 whose tangent
+// plane has depth e there: the nearer of the two. The plane keeps a
+// crease's sides apart and follows a surface seen at a grazing angle; the
+// pixel's own depth keeps a curved surface's neighbours at its silhouette,
+// where the tangent plane runs along the view rays and leaves them (alone
+// there, the raw estimate of a pixel on the corner's sphere outline showed
+// as a dark dot).
+float fxPlaneGap(float d, float e, float d0)
+{
+  return min(abs(d - e), abs(d - d0));
+}
+vec4 fxPlaneGap(vec4 d, vec4 e, float d0)
+{
+  return min(abs(d - e), abs(d - d0));
+}
+
 // The plane's depth at offset (dx, dy), or `fallback` where the plane is
 // not in front of the eye there (ray parallel to it, plane behind, or a
 // normal that is not one: a 0 normal gives the fallback everywhere).

@@ -166,7 +166,8 @@ struct TangentPlanes
 // The full 2D joint-bilateral filter, on the CPU in double precision, as
 // vtkFXBilateralBlurFS defines it, over a (value, depth) image of w x h:
 // a Gaussian of sigma radius / 2 per axis and the Cauchy weight of the
-// tap's depth difference from the pixel's tangent plane relative to
+// tap's depth difference from the pixel's tangent plane or its own depth,
+// the nearer (fxPlaneGap), relative to
 // depthSigma x the pixel's depth; background (depth not above 0) passes
 // through and never contributes.
 std::vector<float> JointBilateral2D(const std::vector<float>& in, int w, int h, int radius,
@@ -201,7 +202,9 @@ std::vector<float> JointBilateral2D(const std::vector<float>& in, int w, int h, 
             continue;
           }
           const double expected = planes.ExpectedDepth(x, y, d0, qx, qy);
-          const double r = (in[q + 1] - expected) / std::max(depthSigma * d0, 1e-37);
+          const double gap =
+            std::min(std::fabs(in[q + 1] - expected), std::fabs(in[q + 1] - d0));
+          const double r = gap / std::max(depthSigma * d0, 1e-37);
           const double weight = gauss(i) * gauss(j) / (1.0 + r * r);
           sum += weight * in[q];
           total += weight;
