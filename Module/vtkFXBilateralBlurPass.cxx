@@ -208,9 +208,9 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   }
   const bool packed = (this->NumberOfComponents == 1 && source.DepthComponent == 1) ||
     (this->NumberOfComponents == 3 && source.Packing == 1);
-  // Intermediate stages keep full precision and values above 1 (the
-  // horizon-based occlusion averages to 1 only after the blur); a depth
-  // alongside needs 32 bits (16-bit floats end at 65504 world units).
+  // Intermediate stages keep full precision and values above 1 (inputs
+  // other than the occlusion passes may hold them); a depth alongside
+  // needs 32 bits (16-bit floats end at 65504 world units).
   const int stageFormat = !packed ? vtkFXRenderUtilities::RGBA16F
     : this->NumberOfComponents == 1 ? vtkFXRenderUtilities::RG32F
                                     : vtkFXRenderUtilities::RGBA32F;

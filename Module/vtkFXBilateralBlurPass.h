@@ -72,9 +72,10 @@ public:
    * Box: 1, and 1/2 at i = +-Radius: the taps then hold every phase of a
    * pattern of period 2 x Radius once (up to the depth weights), so a blur
    * of radius 2 removes most of vtkFXSSAOPass's 4 x 4 noise tile while
-   * smoothing much less than the default Gaussian of radius 4. On a tilted
-   * open plane it leaves 4 to 6 times less of the tile than a Gaussian of
-   * radius 2 (TestSSAO). The High ambient-occlusion preset uses it.
+   * smoothing much less than the default Gaussian of radius 4. On the
+   * occluded floor and wall of a crease it leaves 0.65 of what a Gaussian
+   * of radius 2 leaves of the tile's pattern, the crease's own curvature
+   * included (TestSSAO). The High ambient-occlusion preset uses it.
    */
   enum Kernel
   {

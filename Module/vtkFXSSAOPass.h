@@ -121,17 +121,20 @@ public:
    * Estimator (default Horizon). Measured with vtkfx-bench ao (640x480, half
    * resolution, blur radius 4, against the ray-traced reference of the same
    * falloff; see vtkFXPipelinePass::SetAmbientOcclusionQuality):
-   * - Binary: Horizon with 16 fetches is 2.5 to 4.3 dB ahead of the best
+   * - Binary: Horizon with 16 fetches is 2.3 to 4.3 dB ahead of the best
    *   vtkSSAOPass setting on the four bench scenes (README); Hemisphere
    *   with 8 (samples at distance R) is more accurate on scene:corner, but
    *   behind Horizon on the other three.
    * - CubeRoot: Horizon with 8 fetches is 1.0 to 5.1 dB ahead of Hemisphere
    *   with 8; more horizon steps move away from this definition (they find
    *   higher horizons, which its falloff discounts).
-   * Horizon's raw per-pixel values are unclamped (they exceed 1 on tilted
-   * open surfaces and average to the visibility over the noise tile): blur
-   * it, and the composite clamps the result; after the blur an open plane
-   * reads 0.92 or more, seen from 70 to 4 degrees above it (TestSSAO). On the crease of a floor and a wall (TestSSAO,
+   * Horizon divides its slices' visible arcs by their open arcs (GTAO
+   * divides by the number of slices, right only on average over the noise
+   * tile's directions), so an open surface reads 1 at every pixel before
+   * any blur: a plane seen from 70 to 4 degrees above it reads 0.98 or
+   * more raw (TestSSAO). Its steps land on the texels of the output's grid
+   * (every second one at half resolution), each measured within its
+   * slice after a slide along the receiver's tangent plane. On the crease of a floor and a wall (TestSSAO,
    * which states the measured errors and its bounds), the Binary horizon
    * estimate is biased open by a few hundredths; the Hemisphere estimate
    * follows the exact visibility within about 0.02 in every band.

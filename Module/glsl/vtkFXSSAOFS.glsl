@@ -204,6 +204,21 @@ float fxLobeSide(float h, vec2 trig, float u, float w)
 }
 #endif
 
+#if FX_CHANNELS != 3
+// One slice's cosine-weighted visible arc between the horizon angles h0 <=
+// 0 <= h1 (from the view direction), around the normal projected into the
+// slice at angle normalAngle, each side kept within the normal's
+// hemisphere (XeGTAO's closed form).
+float fxSliceArcs(float h0, float h1, float normalAngle, float cosNormal, float sinNormal)
+{
+  h0 = normalAngle + clamp(h0 - normalAngle, -0.5 * fxPi, 0.5 * fxPi);
+  h1 = normalAngle + clamp(h1 - normalAngle, -0.5 * fxPi, 0.5 * fxPi);
+  float arc0 = (cosNormal + 2.0 * h0 * sinNormal - cos(2.0 * h0 - normalAngle)) / 4.0;
+  float arc1 = (cosNormal + 2.0 * h1 * sinNormal - cos(2.0 * h1 - normalAngle)) / 4.0;
+  return arc0 + arc1;
+}
+#endif
+
 fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec4 tile)
 {
 #if FX_CHANNELS == 3
@@ -260,6 +275,7 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
   vec3 direction = vec3(tile.xy, 0.0);
   float stepJitter = tile.z;
   float visibility = 0.0;
+  float openArcs = 0.0;
   // The next slices' directions by rotating the first (no trigonometry per
   // slice).
   const float sliceStep = fxPi / float(FX_SLICES);
@@ -278,6 +294,16 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
     float cosNormal = clamp(dot(projectedNormal, view) / max(projectedLength, 1e-8), -1.0, 1.0);
     float normalSign = sign(dot(orthoDirection, projectedNormal));
     float normalAngle = normalSign * fxFastAcos(cosNormal);
+    // The direction within the tangent plane that crosses the slice plane
+    // at unit speed (its part along `axis` is 1): axis minus its part
+    // along n, over what is left of it along axis. Near a slice that sees
+    // the receiver edge-on (n within 1.8 degrees of axis) it has no such
+    // direction; the bound leaves the slide partial there, where the
+    // one-channel estimate weighs the slice by projectedLength, near 0
+    // (directional occlusion's lobes weigh it by their basis vectors: a
+    // sliver of false occlusion at such pixels).
+    float axisNormal = dot(axis, n);
+    vec3 slide = (axis - axisNormal * n) / max(1.0 - axisNormal * axisNormal, 1e-3);
     // sin(normalAngle) without trigonometry; cos(normalAngle -+ pi/2).
     float sinNormal = normalSign * sqrt(max(1.0 - cosNormal * cosNormal, 0.0));
     float lowest0 = -sinNormal;
@@ -287,10 +313,19 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
     {
       // Quadratic spacing: more samples near the pixel, as in XeGTAO.
       float s = min(1.0, (float(step) + 0.5 + stepJitter) / float(FX_STEPS));
-      vec2 offset = direction.xy * (s * s * radiusTexels);
+      // On the grid of texels the output stands for (every fxStep-th
+      // one): at half resolution the steps then read only the even rows
+      // and columns of the depth image, half its cache lines (the pass
+      // about 10% faster at 1280x720 on llvmpipe; PSNR within 0.1 dB, the
+      // detail score up to 0.03 higher on the bench scenes, README). Each
+      // sample is still the surface point its texel shows (its ray); only
+      // the steps' lengths round, and a step shorter than half a grid
+      // texel lands on the pixel and is skipped (at half resolution,
+      // occluders within about 2 pixels count from the next step on).
+      vec2 gridOffset = direction.xy * (s * s * radiusTexels / float(fxStep));
       for (int side = 0; side < 2; ++side)
       {
-        ivec2 q = texel + ivec2(round(side == 0 ? offset : -offset));
+        ivec2 q = texel + fxStep * ivec2(round(side == 0 ? gridOffset : -gridOffset));
         if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, fxGBufferSize)) || q == texel)
         {
           continue;
@@ -304,18 +339,24 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
         fxTexelRay(q, o, d);
         vec3 delta = (o + sampleDepth * d - p) * inverseRadius;
         float distanceSquared = dot(delta, delta);
-        // The texel is off the slice by up to half a texel: measure its
-        // elevation within the slice plane, or a flat receiver's own
-        // texels would rise above its tangent line. With `axis`
-        // perpendicular to `view`, removing delta's part along `axis`
-        // leaves its part along `view` unchanged: only the length shrinks.
-        float offSlice = dot(delta, axis);
-        float c = dot(delta, view) * inversesqrt(max(distanceSquared - offSlice * offSlice, 1e-30));
+        // The texel is off the slice by up to fxStep / sqrt 2 texels: slide it
+        // into the slice plane along the receiver's tangent plane, which
+        // keeps its height above that plane, so a flat receiver's own
+        // texels land on its tangent line (the lowest horizon) whatever
+        // the plane's tilt. (Removing delta's part along `axis` instead
+        // moved them off the plane: a grey speckle over open tilted floors
+        // and walls once the steps were on the half-resolution grid.)
+        vec3 inSlice = delta - dot(delta, axis) * slide;
+        float c = dot(inSlice, view) * inversesqrt(max(dot(inSlice, inSlice), 1e-30));
 #if FX_FALLOFF == 0
         float weight = distanceSquared < 1.0 ? 1.0 : 0.0;
 #else
         float weight = clamp(sqrt(distanceSquared) * falloffMul + falloffAdd, 0.0, 1.0);
 #endif
+        // A texel rounded onto the grid can lie on the slice's other side
+        // of the pixel (a short step across the slice's direction): its
+        // elevation would be measured against the wrong horizon.
+        weight = dot(inSlice, orthoDirection) * (side == 0 ? 1.0 : -1.0) > 0.0 ? weight : 0.0;
         if (side == 0)
         {
           horizon0 = max(horizon0, mix(lowest0, c, weight));
@@ -345,16 +386,23 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
         fxLobeSide(h.w, vec2(cos2h.w, sin2h.w), u, w);
     }
 #endif
-    h0 = normalAngle + clamp(h0 - normalAngle, -0.5 * fxPi, 0.5 * fxPi);
-    h1 = normalAngle + clamp(h1 - normalAngle, -0.5 * fxPi, 0.5 * fxPi);
-    float arc0 = (cosNormal + 2.0 * h0 * sinNormal - cos(2.0 * h0 - normalAngle)) / 4.0;
-    float arc1 = (cosNormal + 2.0 * h1 * sinNormal - cos(2.0 * h1 - normalAngle)) / 4.0;
-    visibility += projectedLength * (arc0 + arc1);
+#if FX_CHANNELS != 3
+    visibility += projectedLength * fxSliceArcs(h0, h1, normalAngle, cosNormal, sinNormal);
+    // The open arcs: the horizons at the tangent line (the lowest ones),
+    // measured as the visible ones are, so that a slice where nothing
+    // rises above that line gives exactly its open value.
+    openArcs += projectedLength * fxSliceArcs(-fxFastAcos(clamp(lowest1, -1.0, 1.0)),
+      fxFastAcos(clamp(lowest0, -1.0, 1.0)), normalAngle, cosNormal, sinNormal);
+#endif
   }
-  // Two slices see a tilted receiver's open hemisphere as 0.77 to 1.2
-  // depending on their direction; only the average over directions (the
-  // noise tile, then the blur) is 1. Clamping here would bias it low: the
-  // consumer clamps the blurred result instead.
+  // The slices' visible arcs over their open arcs. GTAO divides by the
+  // number of slices instead, which is right on average over directions
+  // only: two slices saw a tilted receiver's open hemisphere as 0.77 to
+  // 1.2 depending on their direction, a pattern the noise tile and the
+  // blur had to average away (and could not everywhere). The ratio is 1
+  // wherever nothing occludes; elsewhere it is a ratio estimator (its
+  // denominator varies with the slices' directions), which measured
+  // within 0.1 dB of the division on the bench scenes.
 #if FX_CHANNELS == 3
   // Each lobe's visible part of its open integral. The lobes are
   // unclamped (negative below their basis vector's tangent plane), so a
@@ -364,7 +412,8 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
   vec3 lobes = visibleLobes / max(openLobes, vec3(1e-8));
   return clamp((lobes + 0.5) * 0.5, 0.0, 1.0);
 #else
-  return max(visibility / float(FX_SLICES), 0.0);
+  // (no open arc at all: a receiver every slice sees edge-on)
+  return openArcs > 1e-6 ? clamp(visibility / openArcs, 0.0, 1.0) : 1.0;
 #endif
 }
 #endif

@@ -14,10 +14,10 @@
 //   fetches) and 0.02, 0.085 and 0.11 (CubeRoot, 8 fetches);
 //   every estimate darkens toward the crease band after band (bands of 20
 //   pixels or more);
-// - the horizon-based estimator keeps a flat plane at 0.92 or more;
-// - every value of every float read-back texture is finite, >= 0 and at
-//   most 1 (hemisphere) or pi/2 (horizon, before averaging over slices), at full
-//   and half resolution, blurred or not;
+// - the horizon-based estimator reads a flat plane as open (0.99 or more)
+//   before any blur, with no pattern of the noise tile left;
+// - every value of every float read-back texture is finite and in [0, 1],
+//   at full and half resolution, blurred or not;
 // - the blur with Separable off is the full 2D joint-bilateral filter (the
 //   CPU's, within 1e-5), and the separable blur equals it where depth is
 //   constant, approximates it at depth edges (section 6).
@@ -34,6 +34,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCubeSource.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPlaneSource.h"
@@ -87,25 +88,29 @@ void ViewPlane(Setup& s, double elevation)
   s.Renderer->ResetCameraClippingRange();
 }
 
-// Lowest occlusion (values above 1 count as 1) over the pixels of that
-// plane more than `margin` from its border; `inside` counts them.
-// Mean |v(x) - v(x + 2)| over horizontal and vertical pairs of texels that
-// both show a surface, in a (value, depth) image of w x h: what a pattern
-// of period 4 leaves (its two halves differ) and a smooth image does not.
+// Mean |v(x) - (v(x - 2) + v(x + 2)) / 2| along rows and columns, over the
+// texels that show a surface with both of those neighbours, in a (value,
+// depth) image of w x h: what a pattern of period 4 leaves (its two halves
+// differ) and a smooth image does not.
 double TileResidual(const std::vector<float>& values, int w, int h)
 {
+  // (against the mean of the texels 2 away on either side, not the texel 2
+  // away alone: a smooth gradient of the occlusion, as at a crease, then
+  // drops out, and the half-period difference of the tile stays)
   double sum = 0.0;
   int count = 0;
-  for (int y = 0; y + 2 < h; ++y)
+  auto at = [&](int x, int y) { return 2 * (static_cast<size_t>(y) * w + x); };
+  for (int y = 2; y + 2 < h; ++y)
   {
-    for (int x = 0; x + 2 < w; ++x)
+    for (int x = 2; x + 2 < w; ++x)
     {
-      const size_t i = 2 * (static_cast<size_t>(y) * w + x);
-      for (size_t j : { i + 4, i + 4 * static_cast<size_t>(w) })
+      const size_t i = at(x, y);
+      const size_t pairs[2][2] = { { at(x - 2, y), at(x + 2, y) }, { at(x, y - 2), at(x, y + 2) } };
+      for (const auto& pair : pairs)
       {
-        if (values[i + 1] > 0.0f && values[j + 1] > 0.0f)
+        if (values[i + 1] > 0.0f && values[pair[0] + 1] > 0.0f && values[pair[1] + 1] > 0.0f)
         {
-          sum += std::fabs(values[i] - values[j]);
+          sum += std::fabs(values[i] - 0.5 * (values[pair[0]] + values[pair[1]]));
           ++count;
         }
       }
@@ -216,6 +221,34 @@ std::vector<float> JointBilateral2D(const std::vector<float>& in, int w, int h, 
   return out;
 }
 
+// `values` (value, depth) with the depth set to 0 (left out of
+// ValueDifference) at the texels whose window of `radius` texels in `guide`
+// holds a depth other than `depth` (relative 1e-4) or lies partly outside.
+std::vector<float> OnDepthOnly(std::vector<float> values, const std::vector<float>& guide,
+  int w, int h, int radius, double depth)
+{
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      bool flat = x >= radius && y >= radius && x + radius < w && y + radius < h;
+      for (int j = -radius; flat && j <= radius; ++j)
+      {
+        for (int i = -radius; flat && i <= radius; ++i)
+        {
+          const float d = guide[2 * (static_cast<size_t>(y + j) * w + x + i) + 1];
+          flat = std::fabs(d - depth) <= 1e-4 * depth;
+        }
+      }
+      if (!flat)
+      {
+        values[2 * (static_cast<size_t>(y) * w + x) + 1] = 0.0f;
+      }
+    }
+  }
+  return values;
+}
+
 // Largest and root-mean-square difference of the values (not the depths)
 // of two (value, depth) images over the texels with a surface.
 std::array<double, 2> ValueDifference(const std::vector<float>& a, const std::vector<float>& b)
@@ -245,6 +278,8 @@ void AddCreaseAndFloatingPlane(Setup& s)
   s.Renderer->ResetCameraClippingRange();
 }
 
+// Lowest occlusion (values above 1 count as 1) over the pixels of that
+// plane more than `margin` from its border; `inside` counts them.
 float LowestOnPlane(const std::vector<float>& ao,
   const std::vector<std::array<double, 4>>& world, double margin, int& inside)
 {
@@ -344,11 +379,8 @@ int TestSSAO(int, char*[])
       FX_CHECK(!values.empty(), "blurred occlusion read back");
       for (size_t i = 0; i < values.size(); i += 2)
       {
-        // (Horizon values exceed 1 on tilted open surfaces until averaged
-        // over slice directions: an open slice integrates to
-        // cos n + n sin n <= pi/2 for a normal at angle n from the view.)
         FX_CHECK(std::isfinite(values[i]) && values[i] >= 0.0f &&
-            values[i] <= (horizon ? 1.58f : 1.0f) && std::isfinite(values[i + 1]) &&
+            values[i] <= 1.0f && std::isfinite(values[i + 1]) &&
             values[i + 1] >= 0.0f,
           "blurred occlusion and depth at texel " << i / 2);
       }
@@ -360,7 +392,7 @@ int TestSSAO(int, char*[])
       "the blur upsampled to full resolution");
     // (The upsampled output is R8, in range by construction; the blurred
     // float result was checked above.)
-    if (CheckRange(ssao->GetOutputTexture(), "crease, raw", horizon ? 1.58f : 1.0f) != EXIT_SUCCESS)
+    if (CheckRange(ssao->GetOutputTexture(), "crease, raw") != EXIT_SUCCESS)
     {
       return EXIT_FAILURE;
     }
@@ -433,17 +465,17 @@ int TestSSAO(int, char*[])
     {
       // Horizons integrate visibility within R exactly for a height field,
       // up to 4 steps per side (16 fetches, at jittered distances) finding
-      // the wall's top: measured 0.033 mean (full and half resolution),
-      // 0.058 worst pixel, 0.047 worst bin (a bias toward open: the steps
-      // sample the wall below its top).
+      // the wall's top: measured 0.035 / 0.032 mean (full / half
+      // resolution), 0.061 / 0.064 worst pixel, 0.048 worst bin (a bias
+      // toward open: the steps sample the wall below its top).
       FX_CHECK(meanError <= 0.04 && worstError <= 0.08 && worstBin <= 0.055,
         "the horizon estimate follows the closed form");
     }
     else
     {
       // CubeRoot: XeGTAO's fade approximates that falloff; with 8 fetches
-      // (2 steps per side) measured 0.014 / 0.012 mean (full / half
-      // resolution), 0.090 / 0.065 worst pixel, 0.071 / 0.050 worst bin.
+      // (2 steps per side) measured 0.013 / 0.012 mean (full / half
+      // resolution), 0.089 / 0.063 worst pixel, 0.072 / 0.051 worst bin.
       FX_CHECK(meanError <= 0.02 && worstError <= 0.11 && worstBin <= 0.085,
         "the horizon estimate stays near the closed form");
     }
@@ -491,7 +523,7 @@ int TestSSAO(int, char*[])
               << ", radius " << extreme << ": effective " << ssao->GetEffectiveRadius() << std::endl;
     FX_CHECK(ssao->GetEffectiveRadius() >= 1e-30 && ssao->GetEffectiveRadius() <= 1e30,
       "radius " << ssao->GetEffectiveRadius() << " used");
-    FX_CHECK(CheckRange(ssao->GetOutputTexture(), "extreme radius, raw", horizon ? 1.58f : 1.0f) ==
+    FX_CHECK(CheckRange(ssao->GetOutputTexture(), "extreme radius, raw") ==
         EXIT_SUCCESS, "");
   }
 
@@ -514,49 +546,54 @@ int TestSSAO(int, char*[])
     FX_CHECK(largest <= 1, "an occlusion texture nobody wrote was read");
   }
 
-  // 3. The horizon-based estimator (GTAO, the default), for each falloff:
-  // a flat plane seen from 70 to 4 degrees reads at least 0.92 (see below). Its raw per-pixel values average to
-  // the visibility only over slice directions (they exceed 1 on tilted open
-  // surfaces, by design): the blurred output is what is checked, and what
-  // the composite clamps to [0, 1].
+  // 3. The horizon-based estimator (GTAO, the default), for each falloff,
+  // at full and half resolution: a flat plane seen from 70 to 4 degrees is
+  // unoccluded in the raw estimate, as in the hemisphere's (each slice's
+  // visible arcs over its open ones, both measured alike: 1 where nothing
+  // occludes; measured 0.99999), without the noise tile's pattern that
+  // dividing by the number of slices left (0.77 to 1.2 between directions
+  // on a tilted plane, still 0.93 after the blur).
   for (int falloff : falloffs)
+  for (bool half : { false, true })
   for (double elevation : { 70.0, 50.0, 30.0, 20.0, 10.0, 4.0 })
   {
-    const bool grazing = elevation == 20.0; // where the noise tile is checked too
     Setup s = MakeSetup(window);
     ViewPlane(s, elevation);
-    s.Pipeline->GetSSAOPass()->SetMethod(vtkFXSSAOPass::Horizon);
-    s.Pipeline->GetSSAOPass()->SetFalloff(falloff);
-    s.Pipeline->GetSSAOPass()->SetRadius(radius);
+    vtkFXSSAOPass* ssao = s.Pipeline->GetSSAOPass();
+    ssao->SetMethod(vtkFXSSAOPass::Horizon);
+    ssao->SetFalloff(falloff);
+    ssao->SetRadius(radius);
+    ssao->SetHalfResolution(half);
     window->Render();
-    const auto ao = OcclusionAtPixels(s.Pipeline->GetOcclusionBlurPass()->GetOutputTexture());
+    vtkTextureObject* raw = ssao->GetOutputTexture();
+    const auto ao = OcclusionAtPixels(raw);
     const auto world = WorldPositions(s.Renderer, s.Pipeline->GetGBufferPass());
     for (float v : ao)
     {
-      FX_CHECK(std::isfinite(v) && v >= 0.0f, "finite, non-negative horizon visibility");
+      FX_CHECK(std::isfinite(v) && v >= 0.0f && v <= 1.0f, "finite horizon visibility in [0, 1]");
     }
     int inside = 0;
     const float lowest = LowestOnPlane(ao, world, radius, inside);
-    std::cout << falloffName(falloff) << " horizon, plane at " << elevation << " degrees: lowest (clamped) "
-              << lowest << " over " << inside << " pixels" << std::endl;
-    // Two slices per pixel see a tilted open plane as 0.77 to 1.2; the
-    // depth-aware blur averages that unevenly on a receding plane: 0.92 is
-    // what the horizon-based mode guarantees from 70 to 4 degrees (stated
-    // in vtkFXSSAOPass.h; measured 0.953 at 20 degrees, 0.929 at 10, 0.933
-    // at 4, in the blur's 8-bit steps).
-    FX_CHECK(inside > 1000 && lowest >= 0.92f, "a flat plane is nearly unoccluded (horizon-based)");
-    if (!grazing)
-    {
-      continue;
-    }
+    const double pattern = TileResidual(vtkFXTest::Download(raw, 2),
+      static_cast<int>(raw->GetWidth()), static_cast<int>(raw->GetHeight()));
+    std::cout << falloffName(falloff) << " horizon, plane at " << elevation << " degrees ("
+              << (half ? "half" : "full") << " resolution): lowest raw " << lowest << " over " << inside
+              << " pixels; tile pattern (mean |v(x) - (v(x - 2) + v(x + 2)) / 2|) " << pattern << std::endl;
+    FX_CHECK(inside > 1000 && lowest >= 0.99f, "a flat plane is unoccluded (horizon-based)");
+    FX_CHECK(pattern < 1e-4, "no noise-tile pattern on an open plane (horizon-based)");
+  }
 
-    // Left at half resolution, the 4x4 noise tile shows as values that
-    // differ between texels 2 apart (half its period). The box kernel of
-    // radius 2 holds each tile entry once, up to the depth weights, and
-    // should leave less of it than the Gaussian of the same radius.
+  // 4. Where occluders leave the tile's pattern in the raw estimate (the
+  // crease's floor and wall), the box kernel of radius 2, which holds each
+  // tile entry once up to the depth weights, leaves less of it than the
+  // Gaussian of the same radius (measured 0.65 of it: the crease's own
+  // curvature and the depth weights are in both figures).
+  {
     double tileResidual[2] = { 0.0, 0.0 };
     for (int kernel : { vtkFXBilateralBlurPass::Gaussian, vtkFXBilateralBlurPass::Box })
     {
+      Setup s = MakeSetup(window);
+      CreaseOcclusion(s, vtkFXSSAOPass::Horizon, vtkFXSSAOPass::Binary, radius);
       s.Pipeline->GetOcclusionBlurPass()->SetKernel(kernel);
       s.Pipeline->GetOcclusionBlurPass()->SetRadius(2);
       s.Pipeline->GetOcclusionBlurPass()->UpsampleOff();
@@ -565,11 +602,9 @@ int TestSSAO(int, char*[])
       tileResidual[kernel] = TileResidual(vtkFXTest::Download(half, 2),
         static_cast<int>(half->GetWidth()), static_cast<int>(half->GetHeight()));
     }
-    s.Pipeline->GetOcclusionBlurPass()->SetKernel(vtkFXBilateralBlurPass::Gaussian);
-    s.Pipeline->GetOcclusionBlurPass()->SetRadius(4);
-    std::cout << "  noise tile left by a blur of radius 2 (mean |v(x) - v(x + 2)|): Gaussian "
+    std::cout << "crease: noise tile left by a blur of radius 2 (mean |v(x) - (v(x - 2) + v(x + 2)) / 2|): Gaussian "
               << tileResidual[0] << ", box " << tileResidual[1] << std::endl;
-    FX_CHECK(tileResidual[1] < 0.5 * tileResidual[0], "the box kernel cancels the noise tile");
+    FX_CHECK(tileResidual[1] < 0.75 * tileResidual[0], "the box kernel cancels the noise tile");
   }
 
   // 5. The pass skips the pixels without a surface (SkipBackground: by the
@@ -647,15 +682,16 @@ int TestSSAO(int, char*[])
   // (Separable off), half resolution, radius 4, the horizon estimator's
   // noisy raw occlusion as input. The 2D pass must be that filter: the
   // CPU's double-precision sum of the same raw texels within 1e-5 (float
-  // sums of 81 terms of at most pi / 2 round at about 1e-6). On a
+  // sums of 81 terms of at most 1 round at about 1e-6). On a
   // rectangle facing the camera, with background around it, depth is
   // constant and the surface mask a product of a row mask and a column
   // mask, so the two passes compute exactly the 2D filter (their weights
-  // factor): 1e-5 there too. Where depth changes (a crease and a plane
+  // factor): 1e-5 there too, at the texels whose window lies on the
+  // rectangle (a block standing on it gives the occlusion to smooth). Where depth changes (a crease and a plane
   // floating over it), the two passes weigh a tap off the pixel's row
   // against the tap in its row, not the pixel: they differ from the 2D
-  // filter there (measured: 0.031 at most, 0.0011 RMS over the image, where
-  // the blur removes noise of 0.044 RMS; asserted: 0.005 RMS). The CPU
+  // filter there (measured: 0.035 at most, 0.0012 RMS over the image, where
+  // the blur removes noise of 0.042 RMS; asserted: 0.005 RMS). The CPU
   // judges each tap against the pixel's tangent plane from the G-buffer's
   // normals and the camera's frustum rays, as the shader does.
   for (bool facing : { true, false })
@@ -671,6 +707,16 @@ int TestSSAO(int, char*[])
       {
         const double o[3] = { -1.5, -0.9, 0 }, p1[3] = { 1.5, -0.9, 0 }, p2[3] = { -1.5, 0.9, 0 };
         s.Renderer->AddActor(Plane(o, p1, p2));
+        // A block on the plane, whose occlusion gives the blur something
+        // to smooth (an open plane's horizon estimate is 1 everywhere).
+        vtkNew<vtkCubeSource> block;
+        block->SetCenter(0.0, 0.0, 0.15);
+        block->SetXLength(0.3), block->SetYLength(0.3), block->SetZLength(0.3);
+        vtkNew<vtkPolyDataMapper> blockMapper;
+        blockMapper->SetInputConnection(block->GetOutputPort());
+        vtkNew<vtkActor> blockActor;
+        blockActor->SetMapper(blockMapper);
+        s.Renderer->AddActor(blockActor);
         vtkCamera* camera = s.Renderer->GetActiveCamera();
         camera->SetFocalPoint(0, 0, 0);
         camera->SetPosition(0, 0, 6);
@@ -701,16 +747,30 @@ int TestSSAO(int, char*[])
     FX_CHECK(!raw[0].empty() && raw[0] == raw[1], "the raw occlusion changed between renders");
     const auto exact = JointBilateral2D(raw[1], w, h, 4, 0.02, *planes);
     const auto full = ValueDifference(blurred[1], exact);
-    const auto separable = ValueDifference(blurred[0], exact);
-    const auto input = ValueDifference(raw[1], exact);
+    // (facing: at the plane's texels whose whole window lies on the
+    // plane, where the two passes are the 2D filter)
+    const double planeDepth = 6.0; // (the camera's distance to the facing plane)
+    const auto onPlane = OnDepthOnly(raw[1], raw[1], w, h, 4, planeDepth);
+    if (facing)
+    {
+      size_t kept = 0;
+      for (size_t i = 1; i < onPlane.size(); i += 2)
+      {
+        kept += onPlane[i] > 0.0f ? 1 : 0;
+      }
+      FX_CHECK(kept > 1000, "texels whose window lies on the facing plane: " << kept);
+    }
+    const auto separable = ValueDifference(
+      facing ? OnDepthOnly(blurred[0], raw[1], w, h, 4, planeDepth) : blurred[0], exact);
+    const auto input = ValueDifference(facing ? onPlane : raw[1], exact);
     std::cout << (facing ? "rectangle facing the camera" : "crease and floating plane")
               << ": against the CPU's 2D joint-bilateral filter, the 2D pass differs by at most "
               << full[0] << ", the separable blur by at most " << separable[0] << " (RMS "
               << separable[1] << "), the unblurred input by RMS " << input[1] << std::endl;
     FX_CHECK(full[0] <= 1e-5, "the 2D pass is not the 2D joint-bilateral filter");
-    // (the blur must move the values well past the tolerances: on the
-    // plane, the horizon's noise tile is faint, 4e-4 RMS)
-    FX_CHECK(input[1] > (facing ? 2e-4 : 0.01), "the input has no noise for the blur to remove");
+    // (the blur must move the values well past the tolerances: measured
+    // 0.019 RMS around the block, 0.042 over the crease)
+    FX_CHECK(input[1] > 0.005, "the input has no noise for the blur to remove");
     if (facing)
     {
       FX_CHECK(separable[0] <= 1e-5, "the separable blur differs from the 2D filter on a plane "
