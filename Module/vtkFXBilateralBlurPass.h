@@ -73,9 +73,9 @@ public:
    * pattern of period 2 x Radius once (up to the depth weights), so a blur
    * of radius 2 removes most of vtkFXSSAOPass's 4 x 4 noise tile while
    * smoothing much less than the default Gaussian of radius 4. On the
-   * occluded floor and wall of a crease it leaves 0.65 of what a Gaussian
-   * of radius 2 leaves of the tile's pattern, the crease's own curvature
-   * included (TestSSAO). The High ambient-occlusion preset uses it.
+   * occluded floor and wall of a crease it leaves 0.56 of what a Gaussian
+   * of radius 2 leaves of the tile's pattern, measured in the difference
+   * from the crease's closed form (TestSSAO). The High ambient-occlusion preset uses it.
    */
   enum Kernel
   {

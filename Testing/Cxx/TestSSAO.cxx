@@ -586,8 +586,8 @@ int TestSSAO(int, char*[])
   // 4. Where occluders leave the tile's pattern in the raw estimate (the
   // crease's floor and wall), the box kernel of radius 2, which holds each
   // tile entry once up to the depth weights, leaves less of it than the
-  // Gaussian of the same radius (measured 0.65 of it: the crease's own
-  // curvature and the depth weights are in both figures).
+  // Gaussian of the same radius (measured 0.56 of it, in the difference
+  // from the closed form; the depth weights are in both figures).
   {
     double tileResidual[2] = { 0.0, 0.0 };
     for (int kernel : { vtkFXBilateralBlurPass::Gaussian, vtkFXBilateralBlurPass::Box })
@@ -599,12 +599,38 @@ int TestSSAO(int, char*[])
       s.Pipeline->GetOcclusionBlurPass()->UpsampleOff();
       window->Render();
       vtkTextureObject* half = s.Pipeline->GetOcclusionBlurPass()->GetOutputTexture();
-      tileResidual[kernel] = TileResidual(vtkFXTest::Download(half, 2),
-        static_cast<int>(half->GetWidth()), static_cast<int>(half->GetHeight()));
+      const int w = static_cast<int>(half->GetWidth());
+      const int h = static_cast<int>(half->GetHeight());
+      // Less the closed form at each texel's point (its G-buffer pixel's),
+      // so that the crease's own curvature drops out; texels off the
+      // floor and the wall are left out.
+      auto values = vtkFXTest::Download(half, 2);
+      const auto world = WorldPositions(s.Renderer, s.Pipeline->GetGBufferPass());
+      for (int y = 0; y < h; ++y)
+      {
+        for (int x = 0; x < w; ++x)
+        {
+          const size_t i = 2 * (static_cast<size_t>(y) * w + x);
+          const auto& p = world[static_cast<size_t>(std::min(2 * y, Height - 1)) * Width +
+            std::min(2 * x, Width - 1)];
+          const bool onFloor = std::fabs(p[1]) < 1e-4, onWall = std::fabs(p[2]) < 1e-4;
+          if (p[3] > 0.0 && (onFloor || onWall))
+          {
+            values[i] -= static_cast<float>(
+              CreaseOcclusionAt(onFloor ? p[2] : p[1], radius, vtkFXSSAOPass::Binary));
+          }
+          else
+          {
+            values[i + 1] = 0.0f;
+          }
+        }
+      }
+      tileResidual[kernel] = TileResidual(values, w, h);
     }
-    std::cout << "crease: noise tile left by a blur of radius 2 (mean |v(x) - (v(x - 2) + v(x + 2)) / 2|): Gaussian "
+    std::cout << "crease: noise tile left by a blur of radius 2 (mean |r(x) - (r(x - 2) + "
+                 "r(x + 2)) / 2| of r, the blurred estimate less the closed form): Gaussian "
               << tileResidual[0] << ", box " << tileResidual[1] << std::endl;
-    FX_CHECK(tileResidual[1] < 0.75 * tileResidual[0], "the box kernel cancels the noise tile");
+    FX_CHECK(tileResidual[1] < 0.7 * tileResidual[0], "the box kernel cancels the noise tile");
   }
 
   // 5. The pass skips the pixels without a surface (SkipBackground: by the
