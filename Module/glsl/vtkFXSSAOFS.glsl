@@ -315,9 +315,10 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
       float s = min(1.0, (float(step) + 0.5 + stepJitter) / float(FX_STEPS));
       // On the grid of texels the output stands for (every fxStep-th
       // one): at half resolution the steps then read only the even rows
-      // and columns of the depth image, half its cache lines (the pass
-      // about 10% faster at 1280x720 on llvmpipe; PSNR within 0.1 dB, the
-      // detail score up to 0.03 higher on the bench scenes, README). Each
+      // and columns of the depth image, half its cache lines (alone, 1.5
+      // ms off the pass at 1280x720 on llvmpipe, which the slide below
+      // and the open arcs spend again; PSNR within 0.1 dB, the detail
+      // score up to 0.03 higher on the bench scenes, README). Each
       // sample is still the surface point its texel shows (its ray); only
       // the steps' lengths round, and a step shorter than half a grid
       // texel lands on the pixel and is skipped (at half resolution,
