@@ -16,6 +16,7 @@
 // prints the time ratios (to VTK, and to vtkFX without effects) and the
 // pipeline's per-pass GPU times per scene.
 #include "vtkFXArguments.h"
+#include "vtkFXHeap.h"
 #include "vtkFXBench.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
@@ -182,6 +183,8 @@ void Usage(std::ostream& os)
 
 int main(int argc, char* argv[])
 {
+  // (before any window: see vtkFXHeap.h)
+  const bool keptHeap = vtkFXHeap::KeepFreedMemory();
   Options o;
   for (int i = 1; i < argc; ++i)
   {
@@ -257,6 +260,8 @@ int main(int argc, char* argv[])
     }
   }
   vtksys::SystemTools::MakeDirectory(o.Out);
+  std::cout << "heap: " << (keptHeap ? "freed memory kept in the process (vtkFXHeap.h)"
+                                     : "the allocator's own setting") << "\n";
   const std::string data = vtkFXScenes::DataDirectory();
   if (o.Effect == "ao" || o.Effect == "do")
   {

@@ -8,6 +8,7 @@
 //                [--ao-quality low|medium|high] [--ao-falloff binary|cuberoot]
 //                [--do-method hemisphere|horizon]
 #include "vtkFXArguments.h"
+#include "vtkFXHeap.h"
 #include "vtkFXScenes.h"
 
 #include "vtkFXAVSMPass.h"
@@ -332,6 +333,8 @@ std::string JsonString(const std::string& s)
 
 int main(int argc, char* argv[])
 {
+  // (before any window: see vtkFXHeap.h)
+  const bool keptHeap = vtkFXHeap::KeepFreedMemory();
   Arguments args;
   std::string error;
   if (!Parse(argc, argv, args, error))
@@ -475,7 +478,7 @@ int main(int argc, char* argv[])
   {
     std::cout << ", G-buffer " << pipeline->GetGBufferBytesPerPixel() << " bytes/pixel";
   }
-  std::cout << "\n";
+  std::cout << (keptHeap ? "" : ", the allocator's own heap setting (see vtkFXHeap.h)") << "\n";
   if (!args.PlainVTK)
   {
     std::cout << "passes:";
@@ -547,7 +550,8 @@ int main(int argc, char* argv[])
     json << "{\n  \"input\": " << JsonString(args.Input) << ",\n  \"width\": " << args.Width
          << ",\n  \"height\": " << args.Height << ",\n  \"mode\": "
          << (args.PlainVTK ? "\"plain-vtk\"" : "\"vtkfx\"") << ",\n  \"frames\": " << frameMs.size()
-         << ",\n  \"frame_ms_median\": " << frameMedian << ",\n  \"passes_ran\": [";
+         << ",\n  \"frame_ms_median\": " << frameMedian
+         << ",\n  \"heap_kept\": " << (keptHeap ? "true" : "false") << ",\n  \"passes_ran\": [";
     for (size_t i = 0; i < passesThatRan.size(); ++i)
     {
       json << (i ? ", " : "") << JsonString(passesThatRan[i]);
