@@ -16,8 +16,8 @@
 // prints the time ratios (to VTK, and to vtkFX without effects) and the
 // pipeline's per-pass GPU times per scene.
 #include "vtkFXArguments.h"
-#include "vtkFXHeap.h"
 #include "vtkFXBench.h"
+#include "vtkFXHeap.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
 #include "vtkFXToonPass.h"
@@ -177,13 +177,13 @@ void Usage(std::ostream& os)
         "          map (default: scene:particles, scene:cloud and scene:isoshadow, 1280x720)\n"
         "lights:   frame time with 1 to 1024 point lights, vtkFX against VTK's forward\n"
         "          render (VTK up to --max-vtk-lights, default 256; default INPUT\n"
-        "          scene:spheres, 1280x720)\n";
+        "          scene:spheres, 1280x720)\n"
+     << vtkFXHeap::UsageNote;
 }
 }
 
 int main(int argc, char* argv[])
 {
-  // (before any window: see vtkFXHeap.h)
   const bool keptHeap = vtkFXHeap::KeepFreedMemory();
   Options o;
   for (int i = 1; i < argc; ++i)
@@ -260,8 +260,7 @@ int main(int argc, char* argv[])
     }
   }
   vtksys::SystemTools::MakeDirectory(o.Out);
-  std::cout << "heap: " << (keptHeap ? "freed memory kept in the process (vtkFXHeap.h)"
-                                     : "the allocator's own setting") << "\n";
+  std::cout << vtkFXHeap::Describe(keptHeap) << "\n";
   const std::string data = vtkFXScenes::DataDirectory();
   if (o.Effect == "ao" || o.Effect == "do")
   {

@@ -88,7 +88,7 @@ void Usage(std::ostream& os)
   {
     os << " " << name;
   }
-  os << "\n";
+  os << "\n" << vtkFXHeap::UsageNote;
 }
 
 // The index of `text` among `names`, or -1.
@@ -333,7 +333,6 @@ std::string JsonString(const std::string& s)
 
 int main(int argc, char* argv[])
 {
-  // (before any window: see vtkFXHeap.h)
   const bool keptHeap = vtkFXHeap::KeepFreedMemory();
   Arguments args;
   std::string error;
@@ -478,7 +477,7 @@ int main(int argc, char* argv[])
   {
     std::cout << ", G-buffer " << pipeline->GetGBufferBytesPerPixel() << " bytes/pixel";
   }
-  std::cout << (keptHeap ? "" : ", the allocator's own heap setting (see vtkFXHeap.h)") << "\n";
+  std::cout << "\n" << vtkFXHeap::Describe(keptHeap) << "\n";
   if (!args.PlainVTK)
   {
     std::cout << "passes:";
