@@ -8,10 +8,10 @@
 // the free of a large mmapped block raises it), and the next frame faults
 // the same pages in again, each one zeroed by the kernel. Under a
 // hypervisor a fault is expensive: on the development machine (a VM,
-// llvmpipe, 1280x720, the bunny) plain VTK's first 13 frames took 70-75 ms
-// and the rest 33 ms; vtkFX's directional occlusion took 100-110 ms a frame
-// for as long as it ran, and 54-60 ms with the heap kept (its G-buffer
-// draw 60 -> 20 ms). Both VTK's own frames and vtkFX's run in the same
+// llvmpipe, 1280x720, the bunny) plain VTK's first 13 frames took 68-89 ms
+// and the rest 32-40 ms; vtkFX's directional occlusion took 95-112 ms a frame
+// for as long as it ran, and 54-65 ms with the heap kept (its G-buffer
+// draw 56-67 -> 17-25 ms). Both VTK's own frames and vtkFX's run in the same
 // process, so the ratios the benchmarks print compare like with like
 // either way.
 //
