@@ -76,10 +76,27 @@ enum Buffer
   NumberOfBuffers = 4
 };
 const GLsizeiptr NodeBytes = 16;
-// FXAVSMCounter: the fragment count at byte 0, the longest list at byte
-// 64 (a cache line of its own, see vtkFXAVSMLists.glsl).
-const GLsizeiptr CounterBytes = 68;
-const GLintptr LongestListOffset = 64;
+// FXAVSMCounter: the node counters' fragment counts, 64 bytes apart (each
+// on a cache line of its own, see vtkFXAVSMLists.glsl), then the longest
+// list.
+const int NodeCounters = 8; // fxAVSMNodeCounters
+const int CounterStrideWords = 16;
+const GLintptr LongestListOffset = NodeCounters * CounterStrideWords * 4;
+const GLsizeiptr CounterBytes = LongestListOffset + 4;
+
+// log2 of the side of the tiles that pick a fragment's node counter: 64
+// pixels (llvmpipe's tiles), smaller in an atlas of fewer than four tiles
+// per counter, so that a small shadow map still spreads its fragments over
+// all counters (a 64^2 map in one tile would take eight slots a fragment).
+int CounterTileShift(const int atlas[2])
+{
+  int shift = 6;
+  while (shift > 0 && (atlas[0] >> shift) * (atlas[1] >> shift) < 4 * NodeCounters)
+  {
+    --shift;
+  }
+  return shift;
+}
 const vtkIdType MaximumCapacity = vtkIdType(1) << 27; // 2 GiB of nodes
 const int MaximumListPerTexel = 64; // segments one texel's resolve inserts in order
 
@@ -972,6 +989,10 @@ void vtkFXAVSMPass::BindBuffers(vtkShaderProgram* program)
   {
     program->SetUniformi("fxAVSMWalk", static_cast<int>(this->LongestList));
   }
+  if (program->IsUniformUsed("fxAVSMCounterTileShift"))
+  {
+    program->SetUniformi("fxAVSMCounterTileShift", CounterTileShift(this->AtlasSize));
+  }
 }
 
 bool vtkFXAVSMPass::PreReplaceShaderValues(
@@ -1227,31 +1248,40 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
     GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 
-  GLuint counter[2] = { 0, 0 }; // fragments, longest list
+  GLuint counters[CounterBytes / 4] = {};
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CounterBuffer]);
-  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4, &counter[0]);
-  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, LongestListOffset, 4, &counter[1]);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, CounterBytes, counters);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  const GLuint counted = counter[0];
+  vtkIdType counted = 0;
+  vtkIdType busiest = 0;
+  for (int k = 0; k < NodeCounters; ++k)
+  {
+    counted += counters[k * CounterStrideWords];
+    busiest = std::max<vtkIdType>(busiest, counters[k * CounterStrideWords]);
+  }
   this->CapturedFragments = counted;
+  // Counter k hands out slots k, k + N, k + 2N, ... (N counters): the
+  // slots asked for span N times the busiest one's count.
+  this->UsedSlots = NodeCounters * busiest;
   // llvmpipe stops a shader's loops after some 65535 iterations in all:
   // the exact look-up's walks (four bilinear taps per casting light) stay
   // within 30000 steps (a deep shadow of more surfaces than that on one
   // texel is dark enough anyway).
-  this->LongestList = std::min<vtkIdType>(
-    counter[1], 30000 / (4 * std::max(1, this->GetNumberOfCastingLights())));
-  if (counted > this->Capacity)
+  this->LongestList = std::min<vtkIdType>(counters[LongestListOffset / 4],
+    30000 / (4 * std::max(1, this->GetNumberOfCastingLights())));
+  if (this->UsedSlots > this->Capacity)
   {
     if (!this->WarnedOverflow)
     {
-      vtkWarningMacro("AVSM capture: " << counted << " fragments for a buffer of "
+      vtkWarningMacro("AVSM capture: " << counted << " fragments took "
+                                       << this->UsedSlots << " list slots of a buffer of "
                                        << this->Capacity
                                        << "; the extra ones are left out of this frame and "
                                           "the buffer grows for the next.");
       this->WarnedOverflow = true;
     }
     const vtkIdType grown =
-      std::min(this->CapacityLimit, vtkIdType(counted) + vtkIdType(counted) / 4);
+      std::min(this->CapacityLimit, this->UsedSlots + this->UsedSlots / 4);
     this->StoredFragments = this->Capacity; // what this frame's lists hold
     if (grown <= this->Capacity)
     {
@@ -1874,7 +1904,7 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
   {
     this->StoredFragments = this->Capacity;
     this->Capture(s, window);
-    this->StoredFragments = std::min<vtkIdType>(this->StoredFragments, this->CapturedFragments);
+    this->StoredFragments = std::min<vtkIdType>(this->StoredFragments, this->UsedSlots);
     phase(0);
     if (!this->Exact)
     {
@@ -1931,7 +1961,7 @@ void vtkFXAVSMPass::Render(const vtkRenderState* s)
   this->FrameReady = true;
   // Lists that dropped fragments (the buffer grows for the next frame) are
   // made again.
-  if (this->CapturedFragments <= this->StoredFragments)
+  if (this->UsedSlots <= this->StoredFragments)
   {
     this->KeptKey = key;
   }
@@ -2165,6 +2195,6 @@ void vtkFXAVSMPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InitialNodesPerTexel: " << this->InitialNodesPerTexel << "\n";
   os << indent << "ReuseShadowMaps: " << this->ReuseShadowMaps
      << " (last frame reused them: " << this->ReusedShadowMaps << ")\n";
-  os << indent << "CapturedFragments: " << this->CapturedFragments << " (capacity "
-     << this->Capacity << ")\n";
+  os << indent << "CapturedFragments: " << this->CapturedFragments << " in "
+     << this->UsedSlots << " list slots (capacity " << this->Capacity << ")\n";
 }

@@ -352,7 +352,9 @@ public:
   /**
    * Bytes per shadow-map texel the curves keep between frames (8 x nodes;
    * 0 in Exact mode), and, of the last capture, the list bytes per texel
-   * (16 per fragment stored, plus 8 for the head and count).
+   * (16 per list slot the fragments took, plus 8 for the head and count;
+   * the slots span a few percent more than the fragments: see
+   * vtkFXAVSMLists.glsl's node counters).
    */
   int GetCurveBytesPerTexel() const { return this->Exact ? 0 : 8 * this->Nodes(); }
   double GetListBytesPerTexel() const;
@@ -523,7 +525,8 @@ protected:
   bool ReceiversAnywhere = false; // one of them may be drawn anywhere
   int LookUpPixels[4] = { 0, 0, 0, 0 };
   vtkIdType CapacityLimit = 0;
-  vtkIdType StoredFragments = 0; // nodes this frame's lists hold
+  vtkIdType UsedSlots = 0;       // list slots the capture asked for (vtkFXAVSMLists.glsl)
+  vtkIdType StoredFragments = 0; // slots this frame's lists hold (up to the capacity)
   bool WarnedOverflow = false;
   // The last error reported: each is said once, again only after a frame
   // without one (an error per frame would flood the output window).

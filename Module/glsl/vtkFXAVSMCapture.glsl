@@ -51,7 +51,7 @@
     if (fxAlpha > 0.0 && fxShare > 0.0)
     {
       float fxTau = fxAlpha >= 1.0 ? 1e4 : min(-log(1.0 - fxAlpha) * fxShare, 1e4);
-      uint fxIndex = atomicAdd(fxAVSMNodeCount, 1u);
+      uint fxIndex = fxAVSMNewSlot(ivec2(gl_FragCoord.xy));
       if (fxIndex < uint(fxAVSMCapacity))
       {
         ivec2 fxTexel = clamp(ivec2(gl_FragCoord.xy), ivec2(0), fxAVSMAtlas - 1);

@@ -37,14 +37,37 @@ layout(std430) buffer FXAVSMNodes
 {
   fxAVSMNode fxAVSMNodes[];
 };
+// A fragment takes its node's slot from one of fxAVSMNodeCounters
+// counters, each on a cache line of its own (16 words apart), chosen by
+// the fragment's 64 x 64-pixel tile (smaller in small shadow maps:
+// fxAVSMCounterTileShift): llvmpipe rasterises a tile per thread
+// and hands out tiles in raster order, so neighbouring tiles, the ones its
+// threads run at the same time, use different counters. With one counter
+// the threads fought over its cache line at every fragment (the capture of
+// scene:particles at 1024^2, the bench's seven settings, took 30-38 ms,
+// 20-27 with eight counters, in back-to-back runs). Counter k
+// hands out slots k, k + 8, k + 16, ...: the slots asked for span eight
+// times the busiest counter's count (vtkFXAVSMPass reads them all back).
+const uint fxAVSMNodeCounters = 8u;
 layout(std430) buffer FXAVSMCounter
 {
-  uint fxAVSMNodeCount; // every fragment counts, stored or not
-  // (the longest list on a cache line of its own: every fragment reads it
-  // while others add to the count)
-  uint fxAVSMCounterPadding[15];
+  uint fxAVSMNodeCounts[16u * fxAVSMNodeCounters]; // counter k at word 16 k: its fragments, stored or not
+  // (the longest list on a cache line of its own too: every fragment reads
+  // it while others count)
   uint fxAVSMLongestList; // the longest list stored
 };
+
+// The slot of a new node for the fragment at window position `pixel`, or
+// 0xFFFFFFFF, past any capacity, once its counter has run past what 32
+// bits index (rather than wrapping round onto slots in use).
+uniform int fxAVSMCounterTileShift; // log2 of the tiles' side: 6, less in small atlases
+uint fxAVSMNewSlot(ivec2 pixel)
+{
+  ivec2 tile = pixel >> fxAVSMCounterTileShift;
+  uint k = uint(tile.x + 3 * tile.y) % fxAVSMNodeCounters;
+  uint taken = atomicAdd(fxAVSMNodeCounts[16u * k], 1u);
+  return taken < 0xFFFFFFFFu / fxAVSMNodeCounters ? taken * fxAVSMNodeCounters + k : 0xFFFFFFFFu;
+}
 layout(std430) buffer FXAVSMCounts
 {
   uint fxAVSMCounts[]; // nodes stored per texel
