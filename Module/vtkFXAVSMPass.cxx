@@ -993,6 +993,10 @@ void vtkFXAVSMPass::BindBuffers(vtkShaderProgram* program)
   {
     program->SetUniformi("fxAVSMCounterTileShift", CounterTileShift(this->AtlasSize));
   }
+  if (program->IsUniformUsed("fxAVSMCountersInUse"))
+  {
+    program->SetUniformi("fxAVSMCountersInUse", this->CountersInUse);
+  }
 }
 
 bool vtkFXAVSMPass::PreReplaceShaderValues(
@@ -1252,17 +1256,18 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CounterBuffer]);
   glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, CounterBytes, counters);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  const int n = this->CountersInUse;
   vtkIdType counted = 0;
-  vtkIdType busiest = 0;
-  for (int k = 0; k < NodeCounters; ++k)
+  this->UsedSlots = 0;
+  for (int k = 0; k < n; ++k)
   {
-    counted += counters[k * CounterStrideWords];
-    busiest = std::max<vtkIdType>(busiest, counters[k * CounterStrideWords]);
+    // Counter k hands out slots k, k + n, k + 2n, ...
+    const vtkIdType taken = counters[k * CounterStrideWords];
+    counted += taken;
+    this->UsedSlots = std::max(this->UsedSlots, taken > 0 ? n * (taken - 1) + k + 1 : 0);
   }
   this->CapturedFragments = counted;
-  // Counter k hands out slots k, k + N, k + 2N, ... (N counters): the
-  // slots asked for span N times the busiest one's count.
-  this->UsedSlots = NodeCounters * busiest;
+  this->ChooseNodeCounters();
   // llvmpipe stops a shader's loops after some 65535 iterations in all:
   // the exact look-up's walks (four bilinear taps per casting light) stay
   // within 30000 steps (a deep shadow of more surfaces than that on one
@@ -1313,6 +1318,24 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
     }
     glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  }
+}
+
+void vtkFXAVSMPass::ChooseNodeCounters()
+{
+  // Fragments crowded into few tiles crowd into few counters, and the
+  // slots then span up to eight times the fragments (one tile of a 64
+  // x 64-pixel shadow map, a small caster in a large map): such captures
+  // go back to one counter, and eight are tried again after a while.
+  const int retryAfter = 64; // captures
+  if (this->CountersInUse > 1 && this->UsedSlots > 2 * this->CapturedFragments + 64)
+  {
+    this->CountersInUse = 1;
+    this->CapturesSinceCountersChosen = 0;
+  }
+  else if (this->CountersInUse == 1 && ++this->CapturesSinceCountersChosen >= retryAfter)
+  {
+    this->CountersInUse = NodeCounters;
   }
 }
 
@@ -2196,5 +2219,6 @@ void vtkFXAVSMPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ReuseShadowMaps: " << this->ReuseShadowMaps
      << " (last frame reused them: " << this->ReusedShadowMaps << ")\n";
   os << indent << "CapturedFragments: " << this->CapturedFragments << " in "
-     << this->UsedSlots << " list slots (capacity " << this->Capacity << ")\n";
+     << this->UsedSlots << " list slots (capacity " << this->Capacity << "; "
+     << this->CountersInUse << " node counters)\n";
 }

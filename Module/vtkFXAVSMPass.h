@@ -241,11 +241,15 @@ public:
   ///@{
   /**
    * Of the last frame: fragments captured (counted, stored or not), the
-   * buffer's capacity in fragments, the casting lights, the index of the
-   * k-th (brightest first) among the lights that are on (-1: none), and
-   * the views of all of them.
+   * list slots they asked for (each fragment takes a slot from one of
+   * several counters, see vtkFXAVSMLists.glsl: the slots span a few
+   * percent more than the fragments, at most twice as many), the buffer's
+   * capacity in slots (a fragment each), the casting lights, the index of
+   * the k-th (brightest first) among the lights that are on (-1: none),
+   * and the views of all of them.
    */
   vtkGetMacro(CapturedFragments, vtkIdType);
+  vtkGetMacro(UsedSlots, vtkIdType);
   vtkGetMacro(Capacity, vtkIdType);
   /**
    * The longest list of the last capture, in fragments (what the exact
@@ -484,6 +488,8 @@ protected:
   void Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
   // Both return false when their target could not be allocated.
   bool Resolve(vtkOpenGLRenderWindow* window);
+  // Eight node counters or one for the next capture, from this one's spread.
+  void ChooseNodeCounters();
   bool LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window);
   void ComputeViewToLight(vtkOpenGLRenderer* ren);
   std::string CurveDefines(bool exact) const;
@@ -526,6 +532,8 @@ protected:
   int LookUpPixels[4] = { 0, 0, 0, 0 };
   vtkIdType CapacityLimit = 0;
   vtkIdType UsedSlots = 0;       // list slots the capture asked for (vtkFXAVSMLists.glsl)
+  int CountersInUse = 8;         // node counters the next capture uses (ChooseNodeCounters)
+  int CapturesSinceCountersChosen = 0;
   vtkIdType StoredFragments = 0; // slots this frame's lists hold (up to the capacity)
   bool WarnedOverflow = false;
   // The last error reported: each is said once, again only after a frame

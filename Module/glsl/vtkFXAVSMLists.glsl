@@ -45,9 +45,12 @@ layout(std430) buffer FXAVSMNodes
 // threads run at the same time, use different counters. With one counter
 // the threads fought over its cache line at every fragment (the capture of
 // scene:particles at 1024^2, the bench's seven settings, took 30-38 ms,
-// 20-27 with eight counters, in back-to-back runs). Counter k
-// hands out slots k, k + 8, k + 16, ...: the slots asked for span eight
-// times the busiest counter's count (vtkFXAVSMPass reads them all back).
+// 20-27 with eight counters, in back-to-back runs). With n counters in use,
+// counter k hands out slots k, k + n, k + 2n, ...: the slots asked for
+// span about n times the busiest counter's count (vtkFXAVSMPass reads them
+// all back, and goes back to one counter for captures whose fragments
+// crowd into a few tiles, where the span would reach n times the
+// fragments).
 const uint fxAVSMNodeCounters = 8u;
 layout(std430) buffer FXAVSMCounter
 {
@@ -61,12 +64,14 @@ layout(std430) buffer FXAVSMCounter
 // 0xFFFFFFFF, past any capacity, once its counter has run past what 32
 // bits index (rather than wrapping round onto slots in use).
 uniform int fxAVSMCounterTileShift; // log2 of the tiles' side: 6, less in small atlases
+uniform int fxAVSMCountersInUse;    // 1..fxAVSMNodeCounters (vtkFXAVSMPass::ChooseNodeCounters)
 uint fxAVSMNewSlot(ivec2 pixel)
 {
+  uint n = uint(clamp(fxAVSMCountersInUse, 1, int(fxAVSMNodeCounters)));
   ivec2 tile = pixel >> fxAVSMCounterTileShift;
-  uint k = uint(tile.x + 3 * tile.y) % fxAVSMNodeCounters;
+  uint k = uint(tile.x + 3 * tile.y) % n;
   uint taken = atomicAdd(fxAVSMNodeCounts[16u * k], 1u);
-  return taken < 0xFFFFFFFFu / fxAVSMNodeCounters ? taken * fxAVSMNodeCounters + k : 0xFFFFFFFFu;
+  return taken < 0xFFFFFFFFu / n ? taken * n + k : 0xFFFFFFFFu;
 }
 layout(std430) buffer FXAVSMCounts
 {

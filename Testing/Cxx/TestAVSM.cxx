@@ -1605,7 +1605,7 @@ int TestAVSM(int, char*[])
         avsm->GetCapacity() * 16 <= blockBytes,
       "a list buffer of " << avsm->GetCapacity() << " fragments for a storage block of "
                           << blockBytes << " bytes");
-    if (avsm->GetCapturedFragments() > avsm->GetCapacityLimit())
+    if (avsm->GetUsedSlots() > avsm->GetCapacityLimit())
     {
       FX_CHECK(warnings == 1, warnings << " warnings for fragments beyond the limit, not 1");
     }
@@ -1682,7 +1682,13 @@ int TestAVSM(int, char*[])
       FX_CHECK(std::isfinite(t) && t >= 0.0f && t <= 1.0f, "after overflow, visibility " << t);
     }
     const auto v = Visibility(window, avsm, slabs, true, 1);
-    FX_CHECK(avsm->GetCapturedFragments() <= avsm->GetCapacity(), "still overflowing");
+    FX_CHECK(avsm->GetUsedSlots() <= avsm->GetCapacity(), "still overflowing");
+    // (the slots span at most about twice the fragments: see the crowded
+    // case below)
+    std::cout << "after overflow: " << avsm->GetCapturedFragments() << " fragments in "
+              << avsm->GetUsedSlots() << " list slots" << std::endl;
+    FX_CHECK(avsm->GetUsedSlots() <= 2 * avsm->GetCapturedFragments() + 64,
+      avsm->GetUsedSlots() << " list slots for " << avsm->GetCapturedFragments() << " fragments");
     // Left: all three slabs; right: the two wide ones.
     double worst = 0.0;
     for (int y = 10; y < Height - 10; ++y)
@@ -1704,6 +1710,57 @@ int TestAVSM(int, char*[])
               << warnings << " warning(s) in all" << std::endl;
     FX_CHECK(avsm->GetCapacity() > grown && warnings == 1,
       "second overflow: capacity " << avsm->GetCapacity() << ", " << warnings << " warnings");
+  }
+
+  // Fragments crowded into one tile of the shadow map (layers transparent
+  // but for a corner) crowd into one of the capture's node counters, and
+  // their list slots span several times their number; the next capture
+  // goes back to one counter (vtkFXAVSMPass::ChooseNodeCounters), the
+  // slots are the fragments again, and the shadow is the same.
+  {
+    auto avsm = MakeAVSM(8, false, false);
+    avsm->ReuseShadowMapsOff();
+    vtkNew<vtkAppendPolyData> append;
+    for (double z : { 1.0, 1.5, 2.0, 2.5, 3.0 })
+    {
+      auto plane = QuadSource(-10.0, 10.0, z);
+      plane->SetXResolution(40);
+      plane->SetYResolution(40);
+      plane->Update();
+      vtkPolyData* layer = plane->GetOutput();
+      vtkNew<vtkUnsignedCharArray> rgba;
+      rgba->SetNumberOfComponents(4);
+      for (vtkIdType i = 0; i < layer->GetNumberOfPoints(); ++i)
+      {
+        double x[3];
+        layer->GetPoint(i, x);
+        const bool corner = x[0] < -9.4 && x[1] < -9.4;
+        const unsigned char c[4] = { 200, 200, 200, static_cast<unsigned char>(corner ? 128 : 0) };
+        rgba->InsertNextTypedTuple(c);
+      }
+      layer->GetPointData()->SetScalars(rgba);
+      append->AddInputData(layer);
+    }
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(append->GetOutputPort());
+    mapper->SetColorModeToDirectScalars();
+    mapper->SetScalarModeToUsePointData();
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    const auto first = Visibility(window, avsm, { actor }, true);
+    const vtkIdType crowdedSlots = avsm->GetUsedSlots();
+    const vtkIdType crowdedFragments = avsm->GetCapturedFragments();
+    const auto second = Visibility(window, avsm, { actor }, true);
+    std::cout << "crowded fragments: " << crowdedFragments << " in " << crowdedSlots
+              << " list slots, then " << avsm->GetCapturedFragments() << " in "
+              << avsm->GetUsedSlots() << std::endl;
+    FX_CHECK(crowdedFragments > 1000 && crowdedSlots > 2 * crowdedFragments + 64,
+      "the corner's " << crowdedFragments << " fragments took " << crowdedSlots
+                      << " slots: not crowded, the case shows nothing");
+    FX_CHECK(avsm->GetUsedSlots() == avsm->GetCapturedFragments(),
+      "after crowding, " << avsm->GetUsedSlots() << " slots for " << avsm->GetCapturedFragments()
+                         << " fragments");
+    FX_CHECK(!first.empty() && first == second, "the shadow changed with the counters");
   }
 
   // Opacity exactly 0 casts nothing, exactly 1 blocks all: RGBA colours
