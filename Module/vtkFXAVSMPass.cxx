@@ -228,6 +228,7 @@ vtkFXAVSMPass::vtkFXAVSMPass()
   this->DeclareOutput("visibility");
   this->CasterPass = vtkSmartPointer<vtkTranslucentPass>::New();
   this->ResolveTiles.TileSize = ResolveTileSize;
+  this->StaleTiles.TileSize = ResolveTileSize;
 }
 
 vtkFXAVSMPass::~vtkFXAVSMPass()
@@ -1194,6 +1195,15 @@ void vtkFXAVSMPass::Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* wind
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Buffers[CounterBuffer]);
   glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, CounterBytes, zeros);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  // The tiles the last resolve wrote become stale: this frame's resolve
+  // empties them (their mask kept), and the capture flags its own in the
+  // other mask.
+  this->CurvesEmptyOutsideStale = this->ResolveTilesCulled && this->CurvesEmptyOutsideResolved;
+  if (this->CurvesEmptyOutsideStale)
+  {
+    std::swap(this->StaleTiles.Mask, this->ResolveTiles.Mask);
+  }
+  this->CurvesEmptyOutsideResolved = false; // (until a resolve says so)
   // The capture flags the tiles that get lists, and the resolve runs
   // there only (exact lists have no resolve: no flags).
   const bool flag = !this->Exact && this->CullResolveTiles &&
@@ -1352,10 +1362,16 @@ bool vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
     this->Curves.assign(targets, nullptr);
     vtkFXRenderUtilities::Release(this->ResolveFrameBuffer, window);
   }
+  bool allocated = false;
   for (auto& t : this->Curves)
   {
-    vtkFXRenderUtilities::EnsureTexture(
-      t, window, this->AtlasSize[0], this->AtlasSize[1], vtkFXRenderUtilities::RGBA32F);
+    allocated = vtkFXRenderUtilities::EnsureTexture(t, window, this->AtlasSize[0],
+                  this->AtlasSize[1], vtkFXRenderUtilities::RGBA32F) ||
+      allocated;
+  }
+  if (allocated)
+  {
+    this->CurvesEmptyOutsideStale = false;
   }
   std::ostringstream defines;
   const bool slices = this->Representation == RegularSlices;
@@ -1407,7 +1423,8 @@ bool vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
   {
     return false;
   }
-  if (this->FlagResolveTiles)
+  const int origin[2] = { 0, 0 };
+  if (this->FlagResolveTiles && !this->EmptyStaleTiles(window, empty.str(), origin))
   {
     // Texels of tiles without lists keep the empty curve the clear gives.
     for (int k = 0; k < targets; ++k)
@@ -1421,10 +1438,33 @@ bool vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
     this->BindBuffers(program);
     program->SetUniformi("fxAVSMCapacity", static_cast<int>(this->StoredFragments));
     this->SetViewUniforms(program);
-    const int origin[2] = { 0, 0 };
     this->ResolveTilesCulled = vtkFXRenderUtilities::DrawTiles(
       this->ResolveTiles, program, window, origin, this->AtlasSize, this->FlagResolveTiles);
+    // Outside the tiles just drawn the curves are empty: cleared, or
+    // emptied tile by tile since.
+    this->CurvesEmptyOutsideResolved = this->ResolveTilesCulled;
   }
+  return true;
+}
+
+bool vtkFXAVSMPass::EmptyStaleTiles(
+  vtkOpenGLRenderWindow* window, const std::string& emptyOutput, const int origin[2])
+{
+  if (!this->CurvesEmptyOutsideStale || !this->StaleTiles.Mask ||
+    !vtkFXRenderUtilities::CanFlagTiles(ResolveTileSize))
+  {
+    return false;
+  }
+  const std::string fs =
+    "//VTK::System::Dec\n//VTK::Output::Dec\nvoid main()\n{\n" + emptyOutput + "}\n";
+  vtkShaderProgram* program = vtkFXRenderUtilities::ReadyTileProgram(window, fs);
+  if (!program)
+  {
+    return false;
+  }
+  // (points over the stale tiles, or where DrawTiles cannot draw points,
+  // one triangle over the whole map: emptied either way)
+  vtkFXRenderUtilities::DrawTiles(this->StaleTiles, program, window, origin, this->AtlasSize, true);
   return true;
 }
 
@@ -2185,6 +2225,8 @@ void vtkFXAVSMPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->CasterPass->ReleaseGraphicsResources(w);
   vtkFXRenderUtilities::ReleaseTilePoints(this->ResolveTiles, w);
+  vtkFXRenderUtilities::ReleaseTilePoints(this->StaleTiles, w);
+  this->CurvesEmptyOutsideResolved = this->CurvesEmptyOutsideStale = false;
   vtkFXRenderUtilities::ReleaseQuad(this->LookUpQuad, w);
   for (auto& t : this->Curves)
   {

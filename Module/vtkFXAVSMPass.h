@@ -488,6 +488,10 @@ protected:
   void Capture(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
   // Both return false when their target could not be allocated.
   bool Resolve(vtkOpenGLRenderWindow* window);
+  // Writes `emptyOutput` (the empty curve) over StaleTiles' flagged tiles
+  // of the bound curves; false where it cannot (the caller clears all).
+  bool EmptyStaleTiles(
+    vtkOpenGLRenderWindow* window, const std::string& emptyOutput, const int origin[2]);
   // Eight node counters or one for the next capture, from this one's spread.
   void ChooseNodeCounters();
   bool LookUp(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* window);
@@ -587,6 +591,14 @@ protected:
   vtkFXRenderUtilities::TilePoints ResolveTiles;
   bool FlagResolveTiles = false;   // this frame's capture flags them
   bool ResolveTilesCulled = false; // the last resolve drew the flagged tiles only
+  // The tiles the last culled resolve wrote, whose curves this frame's
+  // resolve empties before drawing its own (the texture clear of every
+  // texel took 7.5 ms at 1024^2 with 8 nodes), and whether the curves are
+  // empty everywhere else: true after a culled resolve into curves that
+  // were, false after anything else (allocation, a resolve of every texel).
+  vtkFXRenderUtilities::TilePoints StaleTiles;
+  bool CurvesEmptyOutsideResolved = false; // outside ResolveTiles' flags
+  bool CurvesEmptyOutsideStale = false;    // outside StaleTiles' flags
   vtkFXRenderUtilities::FullScreenQuad LookUpQuad;
 
 private:

@@ -728,6 +728,9 @@ int CheckArrivalOrder(vtkRenderWindow* window)
 // tiles cross views and the atlas's edge: a point light's six views of
 // 100 texels (not a multiple of the 8-texel tile), splats and a slab over
 // part of the ground. Visibility and every curve texture byte for byte.
+// The culled pass first draws a frame of casters elsewhere, whose tiles
+// its next resolve must empty (it empties the last frame's tiles rather
+// than clearing every texel).
 int CheckTilesAcrossViews(vtkRenderWindow* window)
 {
   std::vector<std::array<double, 3>> centers;
@@ -744,6 +747,16 @@ int CheckTilesAcrossViews(vtkRenderWindow* window)
     auto avsm = MakeAVSM(8, false, true);
     avsm->SetShadowMapSize(100);
     avsm->SetCullResolveTiles(cull == 1);
+    if (cull == 1)
+    {
+      std::vector<std::array<double, 3>> elsewhere;
+      for (const auto& c : centers)
+      {
+        elsewhere.push_back({ c[0] + 1.2, c[1] - 1.0, c[2] + 0.3 });
+      }
+      Visibility(window, avsm, { Splats(elsewhere, 0.5, 0.7), Quad(0, 10, 0.8, 0.4) }, false, 1,
+        4.0, 90.0);
+    }
     results[cull].push_back(Visibility(window, avsm,
       { Splats(centers, 0.4, 0.5), Quad(-10, 0, 0.5, 0.3) }, false, 1, 4.0, 90.0));
     culled[cull] = avsm->GetResolveTilesCulled();
