@@ -1369,12 +1369,15 @@ bool vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
                   this->AtlasSize[1], vtkFXRenderUtilities::RGBA32F) ||
       allocated;
   }
-  if (allocated)
+  std::ostringstream defines;
+  const bool slices = this->Representation == RegularSlices;
+  // (the empty curve differs between the representations: slices are 0,
+  // adaptive nodes' depths 3e38)
+  if (allocated || slices != this->CurvesHoldSlices)
   {
     this->CurvesEmptyOutsideStale = false;
   }
-  std::ostringstream defines;
-  const bool slices = this->Representation == RegularSlices;
+  this->CurvesHoldSlices = slices;
   defines << StorageExtension << "#define FX_NODES " << nodes << "\n#define FX_MAX_LIST "
           << MaximumListPerTexel << "\n#define FX_SLICES " << (slices ? 2 * nodes : 0)
           << "\n#define FX_VIEWS " << this->GetNumberOfViews() << "\n#define FX_ATLAS_COLUMNS "

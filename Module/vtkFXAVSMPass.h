@@ -599,6 +599,7 @@ protected:
   vtkFXRenderUtilities::TilePoints StaleTiles;
   bool CurvesEmptyOutsideResolved = false; // outside ResolveTiles' flags
   bool CurvesEmptyOutsideStale = false;    // outside StaleTiles' flags
+  bool CurvesHoldSlices = false;           // the representation the curves were emptied for
   vtkFXRenderUtilities::FullScreenQuad LookUpQuad;
 
 private:

@@ -813,6 +813,37 @@ int CheckTilesAcrossViews(vtkRenderWindow* window)
   FX_CHECK(differ == 0, "the resolve over flagged tiles differs across views");
   FX_CHECK(!culled[0] && culled[1] == vtkFXRenderUtilities::CanFlagTiles(8),
     "tiles across views: culled " << culled[0] << culled[1]);
+
+  // Adaptive nodes, then regular slices in the same curve textures (the
+  // same size and count, another empty curve: 0 where adaptive depths are
+  // 3e38): every curve texel as a pass that only ever made slices.
+  std::vector<std::vector<float>> slices[2];
+  for (int fresh = 0; fresh < 2; ++fresh)
+  {
+    auto avsm = MakeAVSM(8, false, true);
+    avsm->SetShadowMapSize(100);
+    const std::vector<vtkSmartPointer<vtkActor>> casters = { Splats(centers, 0.4, 0.5),
+      Quad(-10, 0, 0.5, 0.3) };
+    if (!fresh)
+    {
+      Visibility(window, avsm, casters, false, 1, 4.0, 90.0);
+    }
+    avsm->SetRepresentation(vtkFXAVSMPass::RegularSlices);
+    slices[fresh].push_back(Visibility(window, avsm, casters, false, 1, 4.0, 90.0));
+    for (int k = 0; k < avsm->GetNumberOfCurveTextures(); ++k)
+    {
+      slices[fresh].push_back(vtkFXTest::Download(avsm->GetCurveTexture(k), 4));
+    }
+  }
+  size_t slicesDiffer = 0;
+  for (size_t r = 0; r < slices[0].size(); ++r)
+  {
+    slicesDiffer += r < slices[1].size() && SameBytes(slices[0][r], slices[1][r]) ? 0 : 1;
+  }
+  std::cout << "adaptive nodes then slices: " << slicesDiffer << " of " << slices[0].size()
+            << " outputs differ from slices alone" << std::endl;
+  FX_CHECK(slices[0].size() > 1 && slicesDiffer == 0,
+    "slices after adaptive nodes differ from slices alone");
   return EXIT_SUCCESS;
 }
 
