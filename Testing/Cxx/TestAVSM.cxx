@@ -115,6 +115,19 @@ vtkSmartPointer<vtkActor> Quad(double x0, double x1, double z, double opacity)
   return actor;
 }
 
+// An actor drawing `source`'s output in its RGBA point colours (opacity
+// from their alpha).
+vtkSmartPointer<vtkActor> DirectColourActor(vtkAlgorithm* source)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  mapper->SetColorModeToDirectScalars();
+  mapper->SetScalarModeToUsePointData();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
 // Layers of opacity `opacity` at heights `heights`, as one prop.
 vtkSmartPointer<vtkActor> Layers(const std::vector<double>& heights, double opacity)
 {
@@ -1785,12 +1798,7 @@ int TestAVSM(int, char*[])
       layer->GetPointData()->SetScalars(rgba);
       append->AddInputData(layer);
     }
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(append->GetOutputPort());
-    mapper->SetColorModeToDirectScalars();
-    mapper->SetScalarModeToUsePointData();
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
+    auto actor = DirectColourActor(append);
     const auto first = Visibility(window, avsm, { actor }, true);
     const vtkIdType crowdedSlots = avsm->GetUsedSlots();
     const vtkIdType crowdedFragments = avsm->GetCapturedFragments();
@@ -1829,12 +1837,7 @@ int TestAVSM(int, char*[])
       plane->GetOutput()->GetPointData()->SetScalars(rgba);
       append->AddInputData(plane->GetOutput());
     }
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(append->GetOutputPort());
-    mapper->SetColorModeToDirectScalars();
-    mapper->SetScalarModeToUsePointData();
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
+    auto actor = DirectColourActor(append);
     const auto v = Visibility(window, MakeAVSM(8, false, false), { actor }, true);
     FX_CHECK(CheckHalves("opacity 1 and 0", v, 0.0, 1e-3) == EXIT_SUCCESS, "");
   }
