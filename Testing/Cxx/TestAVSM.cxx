@@ -1813,6 +1813,18 @@ int TestAVSM(int, char*[])
       "after crowding, " << avsm->GetUsedSlots() << " slots for " << avsm->GetCapturedFragments()
                          << " fragments");
     FX_CHECK(!first.empty() && first == second, "the shadow changed with the counters");
+    // 64 captures with one counter later, eight are tried again: crowded
+    // again, and one counter the capture after (the shadow the same).
+    Visibility(window, avsm, { actor }, true, 63);
+    const vtkIdType oneCounter = avsm->GetUsedSlots();
+    Visibility(window, avsm, { actor }, true);
+    const vtkIdType retried = avsm->GetUsedSlots();
+    const auto afterRetry = Visibility(window, avsm, { actor }, true);
+    std::cout << "crowded fragments, captures 65 to 67: " << oneCounter << ", " << retried << ", "
+              << avsm->GetUsedSlots() << " list slots" << std::endl;
+    FX_CHECK(oneCounter == crowdedFragments && retried == crowdedSlots &&
+        avsm->GetUsedSlots() == crowdedFragments && afterRetry == first,
+      "eight counters not tried again after 64 captures, or not given up again");
   }
 
   // Opacity exactly 0 casts nothing, exactly 1 blocks all: RGBA colours
