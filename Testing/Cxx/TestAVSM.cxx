@@ -106,11 +106,7 @@ vtkSmartPointer<vtkPlaneSource> QuadSource(double x0, double x1, double z)
 // change).
 vtkSmartPointer<vtkActor> Quad(double x0, double x1, double z, double opacity)
 {
-  auto plane = QuadSource(x0, x1, z);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(plane->GetOutputPort());
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
+  auto actor = vtkFXTest::SurfaceActor(QuadSource(x0, x1, z));
   actor->GetProperty()->SetOpacity(opacity);
   return actor;
 }
@@ -119,12 +115,10 @@ vtkSmartPointer<vtkActor> Quad(double x0, double x1, double z, double opacity)
 // from their alpha).
 vtkSmartPointer<vtkActor> DirectColourActor(vtkAlgorithm* source)
 {
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(source->GetOutputPort());
+  auto actor = vtkFXTest::SurfaceActor(source);
+  auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
   mapper->SetColorModeToDirectScalars();
   mapper->SetScalarModeToUsePointData();
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
   return actor;
 }
 
@@ -136,10 +130,7 @@ vtkSmartPointer<vtkActor> Layers(const std::vector<double>& heights, double opac
   {
     append->AddInputData(QuadSource(-10.0, 0.0, z)->GetOutput());
   }
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(append->GetOutputPort());
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
+  auto actor = vtkFXTest::SurfaceActor(append);
   actor->GetProperty()->SetOpacity(opacity);
   return actor;
 }
@@ -1239,10 +1230,7 @@ int CheckTiltedTranslucentReceiver(vtkRenderWindow* window)
   plane->SetOrigin(-2.0, -3.0, 2.0);
   plane->SetPoint1(2.0, -3.0, 8.0);
   plane->SetPoint2(-2.0, 3.0, 2.0);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(plane->GetOutputPort());
-  auto slab = vtkSmartPointer<vtkActor>::New();
-  slab->SetMapper(mapper);
+  auto slab = vtkFXTest::SurfaceActor(plane);
   slab->GetProperty()->SetOpacity(0.99);
   slab->GetProperty()->SetAmbient(0.0);
   slab->GetProperty()->SetSpecular(0.0);

@@ -738,11 +738,7 @@ int TestSSAO(int, char*[])
         vtkNew<vtkCubeSource> block;
         block->SetCenter(0.0, 0.0, 0.15);
         block->SetXLength(0.3), block->SetYLength(0.3), block->SetZLength(0.3);
-        vtkNew<vtkPolyDataMapper> blockMapper;
-        blockMapper->SetInputConnection(block->GetOutputPort());
-        vtkNew<vtkActor> blockActor;
-        blockActor->SetMapper(blockMapper);
-        s.Renderer->AddActor(blockActor);
+        s.Renderer->AddActor(vtkFXTest::SurfaceActor(block));
         vtkCamera* camera = s.Renderer->GetActiveCamera();
         camera->SetFocalPoint(0, 0, 0);
         camera->SetPosition(0, 0, 6);

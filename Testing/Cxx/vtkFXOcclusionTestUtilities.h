@@ -32,11 +32,7 @@ inline vtkSmartPointer<vtkActor> Plane(const double o[3], const double p1[3], co
   plane->SetPoint1(p1[0], p1[1], p1[2]);
   plane->SetPoint2(p2[0], p2[1], p2[2]);
   plane->SetResolution(8, 8);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(plane->GetOutputPort());
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  return actor;
+  return vtkFXTest::SurfaceActor(plane);
 }
 
 // World positions of the G-buffer's pixels (w = 0 where there is no surface).

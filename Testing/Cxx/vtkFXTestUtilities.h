@@ -21,6 +21,7 @@
 #include "vtkRenderer.h"
 #include "vtkSequencePass.h"
 #include "vtkPixelBufferObject.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkSmartPointer.h"
 #include "vtkTesting.h"
@@ -50,6 +51,17 @@
 
 namespace vtkFXTest
 {
+// An actor drawing `source`'s polygonal output (the mapper stays connected:
+// a test may change the source).
+inline vtkSmartPointer<vtkActor> SurfaceActor(vtkAlgorithm* source)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
 // Counts the events of one kind an object reports (errors by default, kept
 // off the console).
 struct EventCounter
