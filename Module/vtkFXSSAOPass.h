@@ -131,7 +131,7 @@ public:
    * Horizon divides its slices' visible arcs by their open arcs (GTAO
    * divides by the number of slices, right only on average over the noise
    * tile's directions), so an open surface reads 1 at every pixel before
-   * any blur: a plane seen from 70 to 4 degrees above it reads 0.98 or
+   * any blur: a plane seen from 70 to 4 degrees above it reads 0.99 or
    * more raw (TestSSAO). Its steps land on the texels of the output's grid
    * (every second one at half resolution), each measured within its
    * slice after a slide along the receiver's tangent plane. On the crease of a floor and a wall (TestSSAO,
