@@ -34,7 +34,9 @@
 // 32; plain vtkFX SSAO with its default (Medium), with hemisphere samples
 // at the directional default's count, which is the cost it is compared
 // with, and each estimator with 32 samples; vtkSSAOPass 16 and 64 with
-// blur.
+// blur. A row exact-plain-ao scores the reference traced with the
+// geometric normal against the directional one: how much the shading
+// normals change the answer (see ReportShadingNormalShare).
 #include "vtkFXBench.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXDirectionalOcclusionPass.h"
@@ -390,6 +392,47 @@ void Compare(const std::vector<float>& ao, const std::vector<float>& reference, 
 }
 
 
+// do: how much of the directional reference the shading normals make.
+// Exact plain ambient occlusion (traced with the geometric normal) scored
+// against the directional reference (row "exact-plain-ao", 0 ms) is what a
+// plain estimator without error would reach. Each plain vtkFX method's
+// RMSE E against that exact plain AO is its own estimation error; against
+// the directional reference it scores R. A directional method with
+// estimation error E and the shading normals' effect exact would score E
+// there, 20 log10(R / E) dB above the plain method: what the directional
+// method can gain at that error (printed, and in do-reference.txt).
+void ReportShadingNormalShare(const std::string& input, const std::vector<Method>& methods,
+  const std::vector<float>& truth, const std::vector<float>& plainTruth, const Options& o,
+  std::ofstream& csv, std::ofstream& notes)
+{
+  double shareRMSE, sharePSNR;
+  Compare(plainTruth, truth, shareRMSE, sharePSNR);
+  const double detail = vtkFXScenes::DetailScore(plainTruth, truth, o.Width, o.Height);
+  csv << input << ",exact-plain-ao,ray-traced with the geometric normal,0," << shareRMSE << ","
+      << sharePSNR << "," << detail << "\n";
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(4) << input
+       << ": exact plain AO against the directional reference: RMSE " << shareRMSE << ", PSNR "
+       << std::setprecision(2) << sharePSNR << " dB, detail " << std::setprecision(3) << detail
+       << "\n";
+  for (const auto& m : methods)
+  {
+    if (m.Type != Kind::FX)
+    {
+      continue;
+    }
+    double ownRMSE, ownPSNR;
+    Compare(m.Occlusion, plainTruth, ownRMSE, ownPSNR);
+    const double gain = ownRMSE > 0.0 ? 20.0 * std::log10(m.RMSE / ownRMSE) : 0.0;
+    text << std::setprecision(4) << "  " << m.Name << " " << m.Setting << ": RMSE " << m.RMSE
+         << " against the directional reference, " << ownRMSE
+         << " against exact plain AO: a directional method with that error gains "
+         << std::setprecision(2) << gain << " dB over it\n";
+  }
+  std::cout << text.str();
+  notes << text.str();
+}
+
 // Reference | vtkFX default | best vtkSSAOPass | none, as grey images.
 void WriteStrip(const std::vector<const std::vector<float>*>& images, int w, int h,
   const std::string& path)
@@ -646,6 +689,16 @@ int BenchAO(const Options& o)
           << radius << ", " << truth.CoveredPixels << " pixels; standard error bound of the reference "
           << "(RMS over pixels) " << truth.StandardErrorRMS << "; " << truth.Seconds << " s\n";
 
+    // do: the same reference with the geometric normal, the exact answer
+    // of plain ambient occlusion, to tell the shading normals' share of the
+    // directional reference from the plain estimators' own error.
+    vtkFXReferenceAO::Result plainTruth;
+    if (directional)
+    {
+      plainTruth = reference.Trace(
+        methods[0].Renderer, o.Width, o.Height, radius, rays, o.Falloff, 2, nullptr);
+    }
+
     TimeFramesInTurn(methods, o.Frames,
       "[" + std::to_string(s + 1) + "/" + std::to_string(o.Inputs.size()) + "] " + input, timer);
 
@@ -708,6 +761,7 @@ int BenchAO(const Options& o)
     const std::string tag = FileTag(input);
     if (directional)
     {
+      ReportShadingNormalShare(input, methods, truth.Occlusion, plainTruth.Occlusion, o, csv, notes);
       BenchBleeding(o, input, radius, rays, bleedingWindows, bleedingCsv, timer);
     }
     const std::string what = directional ? "directional occlusion" : "AO";
