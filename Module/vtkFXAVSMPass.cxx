@@ -168,6 +168,20 @@ bool IsSpot(vtkLight* light)
   return light->GetConeAngle() > 0.0 && light->GetConeAngle() < 89.0;
 }
 
+// Whether a positional light is so far from the props' bounding sphere
+// (centre, radius) that its rays are parallel there to within 1e-3 rad
+// (0.06 degrees): such a light gets a directional light's orthographic
+// view. A perspective view from it could not resolve the props: their
+// depths, distance +- radius, are a few float steps apart at 1e7 radii
+// and equal at 1e8 (near = far), and well before that a spot light's cone
+// spreads its map over far more than the props.
+bool CastsParallelRays(vtkLight* light, const double center[3], double radius)
+{
+  const double* from = light->GetTransformedPosition();
+  const double d[3] = { center[0] - from[0], center[1] - from[1], center[2] - from[2] };
+  return radius < 1e-3 * vtkMath::Norm(d);
+}
+
 // What decides which lights cast first.
 double Brightness(vtkLight* light)
 {
@@ -610,8 +624,16 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
     }
     vtkNew<vtkMatrix4x4> p;
     p->Zero();
-    if (!light->GetPositional())
+    const bool parallel = !light->GetPositional() || CastsParallelRays(light, center, radius);
+    if (parallel)
     {
+      if (light->GetPositional())
+      {
+        // along its rays to the props' centre
+        const double* from = light->GetTransformedPosition();
+        vtkMath::Subtract(center, from, direction);
+        vtkMath::Normalize(direction);
+      }
       // glOrtho(-r, r, -r, r, r, 3r) from 2r before the centre: the square
       // map covers the bounding sphere whatever the window's aspect.
       const double position[3] = { center[0] - 2.0 * radius * direction[0],

@@ -16,7 +16,11 @@
  * - any other positional light: farther than sqrt(2) times the props'
  *   bounding radius from their centre, one perspective view aimed at the
  *   sphere that just holds it; nearer, six perspective views of 90
- *   degrees, the faces of a cube around it.
+ *   degrees, the faces of a cube around it;
+ * - a positional light (spot or not) farther than 1000 radii: its rays are
+ *   parallel there within 1e-3 rad, and it gets the directional light's
+ *   view, along the line from it to the centre (a perspective view from
+ *   1e8 radii cannot tell the props' depths apart in float).
  * The translucent props are rendered from every view. Every fragment, instead of being
  * drawn, joins its texel's linked list (shader storage buffers and an
  * atomic counter: OpenGL 4.3) as a segment along the light: a light-space

@@ -86,6 +86,7 @@
 #include <cstring>
 #include <functional>
 #include <limits>
+#include <sstream>
 
 namespace
 {
@@ -1497,6 +1498,33 @@ int CheckShadowsBesideNonFiniteLight(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
+// A point light standing in for the sun, 1e9 units above props of about
+// 14 units: its rays are parallel there to within 1e-8 rad, and a
+// perspective view from it cannot tell the props' depths apart in float
+// (distance +- 14 is one float at 1e9: near = far). The shadow is the
+// directional light's, finite: under a slab of 0.3, 0.7, and 1 beside it.
+// Also a spot light, and a point light 500 radii away (its perspective
+// view kept).
+int CheckFarLight(vtkRenderWindow* window)
+{
+  for (double height : { 1e9, 7e3 })
+  {
+    for (double cone : { 30.0, 90.0 })
+    {
+      if (height < 1e6 && cone < 90.0)
+      {
+        continue; // (a spot's view covers its cone: 4000 units at 7e3)
+      }
+      vtkNew<vtkFXAVSMPass> avsm;
+      const auto v = Visibility(window, avsm, { Quad(-10, 0, 1, 0.3) }, true, 1, height, cone);
+      std::ostringstream name;
+      name << (cone < 90.0 ? "a spot light " : "a point light ") << height << " units above";
+      FX_CHECK(CheckHalves(name.str().c_str(), v, 0.7, 2e-3) == EXIT_SUCCESS, name.str());
+    }
+  }
+  return EXIT_SUCCESS;
+}
+
 int TestAVSM(int, char*[])
 {
   auto window = vtkFXTest::MakeWindow(Width, Height);
@@ -2116,6 +2144,7 @@ int TestAVSM(int, char*[])
   FX_CHECK(CheckTwoLights(window) == EXIT_SUCCESS, "two casting lights");
   FX_CHECK(CheckShadowMapReuse(window) == EXIT_SUCCESS, "shadow maps kept between frames");
   FX_CHECK(CheckShadowsBesideNonFiniteLight(window) == EXIT_SUCCESS, "a NaN light and shadows");
+  FX_CHECK(CheckFarLight(window) == EXIT_SUCCESS, "a light far from the props");
 
   // Nothing translucent, or translucent props of opacity 0 only (they
   // cast nothing): the pass is left out and allocates nothing.
