@@ -205,7 +205,25 @@ vtkFXPipelinePass::vtkFXPipelinePass()
   this->CameraPass->SetDelegatePass(this->Sequence);
 }
 
-vtkFXPipelinePass::~vtkFXPipelinePass() = default;
+vtkFXPipelinePass::~vtkFXPipelinePass()
+{
+  // VTK deletes a vertex array or a timer query in its own destructor, in
+  // whichever context is current, and vtkRenderer::SetPass does not release
+  // the pass it drops: a pipeline deleted while another window is current
+  // would take that window's names (the vertex arrays of its full-screen
+  // quads). Released here, in the last window's own context, first;
+  // effects someone else still holds keep theirs (they may go on in
+  // another pipeline: an AVSM pass keeps the list buffer it grew).
+  if (this->LastWindow)
+  {
+    // (the sequences would release every effect of the last frame: they
+    // keep only their timers here, and the effects are released below as
+    // their owners say)
+    this->Sequence->ClearPasses();
+    this->HDRSequence->ClearPasses();
+    this->Release(this->LastWindow, true);
+  }
+}
 
 vtkFXGBufferPass* vtkFXPipelinePass::GetGBufferPass()
 {
@@ -991,6 +1009,11 @@ unsigned int vtkFXPipelinePass::GetGBufferChannels() const
 
 void vtkFXPipelinePass::ReleaseGraphicsResources(vtkWindow* w)
 {
+  this->Release(w, false);
+}
+
+void vtkFXPipelinePass::Release(vtkWindow* w, bool keepSharedEffects)
+{
   // GL deletes names in whichever context is current: called with another
   // window's current (an application with several windows releasing one),
   // the passes below would delete that window's textures and buffers of the
@@ -1013,7 +1036,10 @@ void vtkFXPipelinePass::ReleaseGraphicsResources(vtkWindow* w)
   this->OverlayPass->ReleaseGraphicsResources(w);
   for (EffectSlot& slot : this->Effects)
   {
-    slot.Effect->ReleaseGraphicsResources(w);
+    if (!keepSharedEffects || slot.Effect->GetReferenceCount() == 1)
+    {
+      slot.Effect->ReleaseGraphicsResources(w);
+    }
     slot.Active = false;
   }
   if (window)

@@ -242,6 +242,9 @@ protected:
   vtkFXPipelinePass();
   ~vtkFXPipelinePass() override;
 
+  // ReleaseGraphicsResources, in w's context; with keepSharedEffects the
+  // effects that another owner still holds keep theirs.
+  void Release(vtkWindow* w, bool keepSharedEffects);
   vtkFXSceneInfo AnalyzeScene(const vtkRenderState* s) const;
   // Says which lights have a number that is not finite (the composite and
   // the shadows leave them out), when that set changes.

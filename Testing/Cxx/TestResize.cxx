@@ -104,6 +104,50 @@ int CheckReleaseFromAnotherWindow()
   return EXIT_SUCCESS;
 }
 
+// The same when the pipeline is deleted instead, without a release first
+// (an application replacing a renderer's pass, or dropping a view, while
+// another window is current): its destructor frees its GL objects in its
+// own window's context. (Without it, the vertex arrays of its full-screen
+// quads and its timer queries, which VTK deletes in its destructors in
+// whichever context is current, took the other window's names.)
+int CheckDeleteFromAnotherWindow()
+{
+  std::string error;
+  vtkSmartPointer<vtkRenderWindow> windows[2] = { vtkFXTest::MakeWindow(300, 200),
+    vtkFXTest::MakeWindow(300, 200) };
+  vtkSmartPointer<vtkRenderer> renderers[2];
+  for (int i = 0; i < 2; ++i)
+  {
+    renderers[i] = vtkSmartPointer<vtkRenderer>::New();
+    windows[i]->AddRenderer(renderers[i]);
+    FX_CHECK(vtkFXScenes::Populate(renderers[i], i == 0 ? "scene:spheres" : "scene:corner",
+               vtkFXScenes::Options(), error),
+      error);
+    vtkNew<vtkFXPipelinePass> pipeline;
+    pipeline->AmbientOcclusionOn();
+    renderers[i]->SetPass(pipeline);
+    windows[i]->Render();
+  }
+  const auto before = vtkFXScenes::Capture(windows[0]);
+  auto* kept = vtkFXPipelinePass::SafeDownCast(renderers[0]->GetPass());
+  windows[0]->MakeCurrent();
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+  renderers[1]->SetPass(nullptr); // its last reference: deleted
+  FX_CHECK(windows[0]->IsCurrent(), "the deletion left another window's context current");
+  vtkFXTest::EventCounter warnings(kept->GetCompositePass(), vtkCommand::WarningEvent);
+  windows[0]->Render();
+  const GLenum glError = glGetError();
+  const int largest = vtkFXScenes::MaxDifference(before, vtkFXScenes::Capture(windows[0]));
+  std::cout << "a pipeline deleted while another window is current: the other window's next "
+            << "frame " << largest << " levels off its last, GL error " << glError << ", "
+            << warnings.Count << " warnings" << std::endl;
+  FX_CHECK(glError == GL_NO_ERROR && warnings.Count == 0 && largest == 0,
+    "deleting one window's pipeline touched another window's resources");
+  return EXIT_SUCCESS;
+}
+
 int TestResize(int, char*[])
 {
   auto window = vtkFXTest::MakeWindow(300, 200);
@@ -201,5 +245,6 @@ int TestResize(int, char*[])
     FX_CHECK(largest <= 2, "the HDR target in a special window");
   }
   FX_CHECK(CheckReleaseFromAnotherWindow() == EXIT_SUCCESS, "");
+  FX_CHECK(CheckDeleteFromAnotherWindow() == EXIT_SUCCESS, "");
   return EXIT_SUCCESS;
 }
