@@ -936,6 +936,13 @@ void vtkFXRenderUtilities::ComputeFrustumRay(
   for (int i = 0; i < 2; ++i)
   {
     const double pii = m[i][i];
+    if (!(std::isfinite(pii) && pii != 0.0))
+    {
+      // A projection that maps the axis nowhere (a parallel camera of
+      // scale 0, a singular explicit matrix): VTK draws nothing there
+      // either; the rays keep that axis at 0 rather than inf or NaN.
+      continue;
+    }
     // constant terms
     origin[0][i] = -m[i][3] / pii;
     direction[0][i] = m[i][2] / pii;

@@ -237,11 +237,13 @@ void vtkFXSSAOPass::SetReadUniforms(vtkShaderProgram* program, const std::string
     static_cast<int>(reference->GetHeight()) };
   const int low[2] = { static_cast<int>(source.Texture->GetWidth()),
     static_cast<int>(source.Texture->GetHeight()) };
+  // (as the step uniform: an input that reports no step is at full resolution)
+  const int step = std::max(1, source.Step);
   float scale[2], offset[2];
   for (int i = 0; i < 2; ++i)
   {
-    scale[i] = static_cast<float>(static_cast<double>(full[i]) / (source.Step * low[i]));
-    offset[i] = static_cast<float>((0.5 - 0.5 / source.Step) / low[i]);
+    scale[i] = static_cast<float>(static_cast<double>(full[i]) / (step * std::max(1, low[i])));
+    offset[i] = static_cast<float>((0.5 - 0.5 / step) / std::max(1, low[i]));
   }
   program->SetUniform2f(scaleName.c_str(), scale);
   program->SetUniform2f(offsetName.c_str(), offset);
