@@ -593,7 +593,7 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
   // fits in 90 degrees (at least sqrt 2 radii away: a cube face 70 radii
   // away held the props in 4 of its 512 texels); nearer, the six faces of
   // a cube (a wider single view would spread its texels thinner than a
-  // face's).
+  // face's); beyond 1000 radii, one orthographic view (CastsParallelRays).
   const auto needsCube = [&center, radius](vtkLight* light) {
     if (!light->GetPositional() || IsSpot(light))
     {

@@ -211,18 +211,36 @@ vtkFXPipelinePass::~vtkFXPipelinePass()
   // whichever context is current, and vtkRenderer::SetPass does not release
   // the pass it drops: a pipeline deleted while another window is current
   // would take that window's names (the vertex arrays of its full-screen
-  // quads). Released here, in the last window's own context, first;
-  // effects someone else still holds keep theirs (they may go on in
-  // another pipeline: an AVSM pass keeps the list buffer it grew).
+  // quads, its timers' queries). Released here, in the last window's own
+  // context, first; effects someone else still holds keep theirs (they may
+  // go on in another pipeline: an AVSM pass keeps the list buffer it grew).
   if (this->LastWindow)
   {
-    // (the sequences would release every effect of the last frame: they
-    // keep only their timers here, and the effects are released below as
-    // their owners say)
+    // (the sequences and the composite would release or hold every effect
+    // of the last frame: they let go of them here, and the effects are
+    // released below as their owners say)
     this->Sequence->ClearPasses();
     this->HDRSequence->ClearPasses();
+    this->CompositePass->RemoveAllContributors();
     this->Release(this->LastWindow, true);
   }
+}
+
+int vtkFXPipelinePass::OwnReferences(vtkFXEffectPass* effect) const
+{
+  int references = 0;
+  for (const EffectSlot& slot : this->Effects)
+  {
+    references += slot.Effect == effect ? 1 : 0;
+  }
+  const vtkFXEffectPass* const members[] = { this->SSAOPass.Get(), this->OcclusionBlurPass.Get(),
+    this->DirectionalOcclusionPass.Get(), this->DirectionalOcclusionBlurPass.Get(),
+    this->BleedingBlurPass.Get() };
+  for (const vtkFXEffectPass* member : members)
+  {
+    references += member == effect ? 1 : 0;
+  }
+  return references;
 }
 
 vtkFXGBufferPass* vtkFXPipelinePass::GetGBufferPass()
@@ -1024,6 +1042,14 @@ void vtkFXPipelinePass::Release(vtkWindow* w, bool keepSharedEffects)
   if (window)
   {
     window->PushContext();
+    if (keepSharedEffects && !window->IsCurrent())
+    {
+      // (a deleted pipeline whose window has lost its context, Finalize
+      // called: nothing of it is left to free, and GL calls would reach
+      // another context or none)
+      window->PopContext();
+      return;
+    }
   }
   // The sequence only holds the passes of the last frame: release them all.
   this->CameraPass->ReleaseGraphicsResources(w);
@@ -1036,7 +1062,7 @@ void vtkFXPipelinePass::Release(vtkWindow* w, bool keepSharedEffects)
   this->OverlayPass->ReleaseGraphicsResources(w);
   for (EffectSlot& slot : this->Effects)
   {
-    if (!keepSharedEffects || slot.Effect->GetReferenceCount() == 1)
+    if (!keepSharedEffects || slot.Effect->GetReferenceCount() <= this->OwnReferences(slot.Effect))
     {
       slot.Effect->ReleaseGraphicsResources(w);
     }

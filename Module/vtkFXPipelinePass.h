@@ -245,6 +245,9 @@ protected:
   // ReleaseGraphicsResources, in w's context; with keepSharedEffects the
   // effects that another owner still holds keep theirs.
   void Release(vtkWindow* w, bool keepSharedEffects);
+  // The references to `effect` this pipeline holds (its slots, its own
+  // occlusion passes).
+  int OwnReferences(vtkFXEffectPass* effect) const;
   vtkFXSceneInfo AnalyzeScene(const vtkRenderState* s) const;
   // Says which lights have a number that is not finite (the composite and
   // the shadows leave them out), when that set changes.

@@ -5,7 +5,8 @@
 // (orthographic), whose window depth is linear already. A perspective
 // window depth crowds everything far from the light near 1: a slab 5 units
 // above a floor 6 units from the light would sit 6e-4 away, under the bias.
-uniform int fxAVSMPerspective; // the view being captured: 1 for a spot or point light's
+uniform int fxAVSMPerspective; // the view being captured: 1 for a perspective one (a spot
+                               // or point light's within 1000 radii of the props)
 uniform vec2 fxAVSMNearFar;    // its near and far distances
 
 // From clip coordinates of a light view (perspective: a spot or point
