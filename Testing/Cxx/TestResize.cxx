@@ -61,23 +61,44 @@ struct HDRTargetComparison
 // several) frees that pipeline's own textures, not the other's, whose next
 // frame is the same image. (Without the release pushing its window's
 // context, GL deleted the current window's names.)
-int CheckReleaseFromAnotherWindow()
+// Two windows, each with a renderer and a pipeline with ambient occlusion
+// (held by the renderer), rendered once.
+struct TwoWindows
 {
-  std::string error;
-  vtkSmartPointer<vtkRenderWindow> windows[2] = { vtkFXTest::MakeWindow(300, 200),
-    vtkFXTest::MakeWindow(300, 200) };
-  vtkNew<vtkFXPipelinePass> pipelines[2];
+  vtkSmartPointer<vtkRenderWindow> Windows[2];
+  vtkSmartPointer<vtkRenderer> Renderers[2];
+  vtkFXPipelinePass* Pipelines[2] = { nullptr, nullptr };
+};
+
+bool MakeTwoWindows(TwoWindows& two)
+{
   for (int i = 0; i < 2; ++i)
   {
-    vtkNew<vtkRenderer> renderer;
-    windows[i]->AddRenderer(renderer);
-    FX_CHECK(vtkFXScenes::Populate(renderer, i == 0 ? "scene:spheres" : "scene:corner",
-               vtkFXScenes::Options(), error),
-      error);
-    pipelines[i]->AmbientOcclusionOn();
-    renderer->SetPass(pipelines[i]);
-    windows[i]->Render();
+    two.Windows[i] = vtkFXTest::MakeWindow(300, 200);
+    two.Renderers[i] = vtkSmartPointer<vtkRenderer>::New();
+    two.Windows[i]->AddRenderer(two.Renderers[i]);
+    std::string error;
+    if (!vtkFXScenes::Populate(two.Renderers[i], i == 0 ? "scene:spheres" : "scene:corner",
+          vtkFXScenes::Options(), error))
+    {
+      std::cerr << error << std::endl;
+      return false;
+    }
+    vtkNew<vtkFXPipelinePass> pipeline;
+    pipeline->AmbientOcclusionOn();
+    two.Renderers[i]->SetPass(pipeline);
+    two.Pipelines[i] = pipeline;
+    two.Windows[i]->Render();
   }
+  return true;
+}
+
+int CheckReleaseFromAnotherWindow()
+{
+  TwoWindows two;
+  FX_CHECK(MakeTwoWindows(two), "no scene");
+  vtkSmartPointer<vtkRenderWindow>* windows = two.Windows;
+  vtkFXPipelinePass* const* pipelines = two.Pipelines;
   const auto before = vtkFXScenes::Capture(windows[0]);
   windows[0]->MakeCurrent();
   while (glGetError() != GL_NO_ERROR)
@@ -114,24 +135,12 @@ int CheckReleaseFromAnotherWindow()
 // window's names, and its next frame warned of a GL error.)
 int CheckDeleteFromAnotherWindow()
 {
-  std::string error;
-  vtkSmartPointer<vtkRenderWindow> windows[2] = { vtkFXTest::MakeWindow(300, 200),
-    vtkFXTest::MakeWindow(300, 200) };
-  vtkSmartPointer<vtkRenderer> renderers[2];
-  for (int i = 0; i < 2; ++i)
-  {
-    renderers[i] = vtkSmartPointer<vtkRenderer>::New();
-    windows[i]->AddRenderer(renderers[i]);
-    FX_CHECK(vtkFXScenes::Populate(renderers[i], i == 0 ? "scene:spheres" : "scene:corner",
-               vtkFXScenes::Options(), error),
-      error);
-    vtkNew<vtkFXPipelinePass> pipeline;
-    pipeline->AmbientOcclusionOn();
-    renderers[i]->SetPass(pipeline);
-    windows[i]->Render();
-  }
+  TwoWindows two;
+  FX_CHECK(MakeTwoWindows(two), "no scene");
+  vtkSmartPointer<vtkRenderWindow>* windows = two.Windows;
+  vtkSmartPointer<vtkRenderer>* renderers = two.Renderers;
   const auto before = vtkFXScenes::Capture(windows[0]);
-  auto* kept = vtkFXPipelinePass::SafeDownCast(renderers[0]->GetPass());
+  vtkFXPipelinePass* kept = two.Pipelines[0];
   windows[0]->MakeCurrent();
   while (glGetError() != GL_NO_ERROR)
   {
