@@ -326,8 +326,10 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
   }
   // With a threshold, or emission to mask, the first step reads the
   // prefiltered image as it reads any level; otherwise the emission
-  // channel, bilinearly.
-  const bool prefiltered = threshold || (emission && targetDepth);
+  // channel, bilinearly, through the sampler object (without sampler
+  // objects, before GL 3.3, through the prefilter too, which fetches
+  // texels).
+  const bool prefiltered = threshold || (emission && (targetDepth || !this->LinearSampler));
   if (prefiltered &&
     !this->Prefilter(window, threshold ? color : nullptr, emission, targetDepth))
   {
@@ -362,7 +364,10 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
     int rect[4];
     this->LevelRect(k, rect);
     vtkFXRenderUtilities::ScissorScope scissor(window->GetState(), rect, Transparent);
-    vtkShaderProgram* program = this->ReadyProgram(first ? FirstDown : Down, window, fs);
+    // (a level that cannot be drawn, say for want of memory: no glow this
+    // frame rather than the undefined contents of an unwritten level)
+    vtkShaderProgram* program =
+      target.IsComplete() ? this->ReadyProgram(first ? FirstDown : Down, window, fs) : nullptr;
     if (!program)
     {
       return false;
@@ -409,7 +414,7 @@ bool vtkFXBloomPass::Upsample(vtkOpenGLRenderWindow* window, int levels)
     int rect[4];
     this->LevelRect(k, rect);
     vtkFXRenderUtilities::ScissorScope scissor(window->GetState(), rect, Transparent);
-    vtkShaderProgram* program = this->ReadyProgram(Up, window, fs);
+    vtkShaderProgram* program = target.IsComplete() ? this->ReadyProgram(Up, window, fs) : nullptr;
     if (!program)
     {
       return false;
@@ -495,7 +500,9 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
   {
     this->ReleaseSampler(); // (made in another window's context)
   }
-  if (!this->LinearSampler)
+  if (!this->LinearSampler &&
+    (vtkFXRenderUtilities::IsOpenGLSupported("GL_VERSION_3_3") ||
+      vtkFXRenderUtilities::IsOpenGLSupported("GL_ARB_sampler_objects")))
   {
     this->SamplerWindow = window;
     glGenSamplers(1, &this->LinearSampler);

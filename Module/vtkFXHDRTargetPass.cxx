@@ -44,7 +44,8 @@ int vtkFXHDRTargetPass::GetBytesPerPixel() const
     (this->Depth ? vtkFXRenderUtilities::GetBytesPerTexel(this->DepthFormat) : 0);
 }
 
-bool vtkFXHDRTargetPass::CopyIn(vtkOpenGLState* state, int x, int y, int width, int height, bool depth)
+bool vtkFXHDRTargetPass::CopyIn(vtkOpenGLState* state, int x, int y, int width, int height,
+  bool depth, const float background[4])
 {
   // The current read framebuffer is what the renderer drew into so far.
   // Colour and depth blit separately: a refused depth blit must not cost
@@ -55,11 +56,18 @@ bool vtkFXHDRTargetPass::CopyIn(vtkOpenGLState* state, int x, int y, int width, 
   }
   glBlitFramebuffer(
     x, y, x + width, y + height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  if (glGetError() != GL_NO_ERROR && !this->WarnedColorCopy)
+  if (glGetError() != GL_NO_ERROR)
   {
-    vtkWarningMacro("The framebuffer's colour cannot be copied into the HDR target; effects "
-                    "draw over the background there.");
-    this->WarnedColorCopy = true;
+    // The composite leaves background pixels alone: without the copy they
+    // would show what the texture held (nothing defined, or the last
+    // frame), so they get the renderer's background colour.
+    glClearBufferfv(GL_COLOR, 0, background);
+    if (!this->WarnedColorCopy)
+    {
+      vtkWarningMacro("The framebuffer's colour cannot be copied into the HDR target; effects "
+                      "draw over the renderer's background colour there.");
+      this->WarnedColorCopy = true;
+    }
   }
   bool copied = false;
   if (depth)
@@ -158,8 +166,12 @@ void vtkFXHDRTargetPass::Render(const vtkRenderState* s)
     vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
     state->vtkglDisable(GL_SCISSOR_TEST);
     state->PushDrawFramebufferBinding();
-    if (!this->CopyIn(state, viewport[0], viewport[1], width, height, keepDepth) && keepDepth &&
-      !this->WarnedDepthFormat)
+    const float background[4] = { static_cast<float>(ren->GetBackground()[0]),
+      static_cast<float>(ren->GetBackground()[1]), static_cast<float>(ren->GetBackground()[2]),
+      static_cast<float>(ren->GetBackgroundAlpha()) };
+    const bool depthCopied =
+      this->CopyIn(state, viewport[0], viewport[1], width, height, keepDepth, background);
+    if (!depthCopied && keepDepth && !this->WarnedDepthFormat)
     {
       vtkWarningMacro("The framebuffer's depth cannot be copied; the depth of the layers below "
                       "is not kept in the HDR target.");

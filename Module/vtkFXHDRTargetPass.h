@@ -87,7 +87,9 @@ protected:
   ~vtkFXHDRTargetPass() override;
 
   // Returns whether the depth was copied (else it is cleared to far).
-  bool CopyIn(vtkOpenGLState* state, int x, int y, int width, int height, bool depth);
+  // (colour that cannot be copied is cleared to `background`)
+  bool CopyIn(vtkOpenGLState* state, int x, int y, int width, int height, bool depth,
+    const float background[4]);
   void WriteBack(vtkOpenGLRenderWindow* window);
 
   vtkRenderPass* DelegatePass = nullptr;

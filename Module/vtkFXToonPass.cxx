@@ -335,8 +335,10 @@ bool vtkFXToonPass::DrawEdgeMarks(
   }
   vtkFXRenderUtilities::RenderTargetScope target(window, this->EdgeFrameBuffer, this->Edges);
   this->EdgeQuad.AtFarPlane = masked;
-  vtkShaderProgram* program =
-    vtkFXRenderUtilities::ReadyQuad(this->EdgeQuad, window, this->EdgesSource(false));
+  // (marks that cannot be drawn: no lines this frame, not the last frame's)
+  vtkShaderProgram* program = target.IsComplete()
+    ? vtkFXRenderUtilities::ReadyQuad(this->EdgeQuad, window, this->EdgesSource(false))
+    : nullptr;
   if (!program)
   {
     return false;

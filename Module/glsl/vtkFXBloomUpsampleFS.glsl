@@ -41,7 +41,10 @@ void main()
   vec2 uv = 0.5 * fine * fxCoarseTexel;
   vec2 t = 0.5 * fxCoarseTexel;
 #if FX_FINAL
-  gl_FragData[0] = vec4(fxIntensity * fxCoarseScale * texture(fxCoarse, uv).rgb, 0.0);
+  // (at most the largest half float: an intensity of 100 on a source of
+  // 65504 would write +inf into the HDR target, and a post-process blending
+  // over it, such as the toon's lines, 0 x inf = NaN)
+  gl_FragData[0] = vec4(min(fxIntensity * fxCoarseScale * texture(fxCoarse, uv).rgb, vec3(65504.0)), 0.0);
 #else
   vec3 tent = texture(fxCoarse, uv + t).rgb + texture(fxCoarse, uv - t).rgb +
     texture(fxCoarse, uv + vec2(t.x, -t.y)).rgb + texture(fxCoarse, uv + vec2(-t.x, t.y)).rgb;

@@ -62,12 +62,14 @@ void fxPositionalLight(vec3 n, vec3 position, vec3 view, int positional,
         lightAttenuation.z * distanceVC * distanceVC), 1e30);
     // (VTK 9.1's polygonal Phong shader, vtkOpenGLPolyDataMapper: a cone
     // below 90 degrees only; at 90 a light has none. A cosine that rounds
-    // below 0 would have an undefined power: 0 then.)
+    // below 0 would have an undefined power, as would 0 to the power 0 (a
+    // cone angle of -90 or less, which VTK does not refuse, lets cosines of
+    // 0 and below in): no light there.)
     if (coneAngle < 90.0)
     {
       float coneDot = dot(toSurface, lightDirection);
-      attenuation = coneDot >= cos(radians(coneAngle))
-        ? attenuation * pow(max(coneDot, 0.0), exponent)
+      attenuation = coneDot >= cos(radians(coneAngle)) && coneDot > 0.0
+        ? attenuation * pow(coneDot, exponent)
         : 0.0;
     }
   }
