@@ -361,13 +361,17 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
         (first && this->FireflySuppression ? "1" : "0") + "\n",
       false);
     vtkFXRenderUtilities::RenderTargetScope target(window, level.DownTarget, level.Down);
+    // (a level that cannot be drawn, say for want of memory: no glow this
+    // frame rather than the undefined contents of an unwritten level; and
+    // checked before the scissor's clear, which would leave a GL error)
+    if (!target.IsComplete())
+    {
+      return false;
+    }
     int rect[4];
     this->LevelRect(k, rect);
     vtkFXRenderUtilities::ScissorScope scissor(window->GetState(), rect, Transparent);
-    // (a level that cannot be drawn, say for want of memory: no glow this
-    // frame rather than the undefined contents of an unwritten level)
-    vtkShaderProgram* program =
-      target.IsComplete() ? this->ReadyProgram(first ? FirstDown : Down, window, fs) : nullptr;
+    vtkShaderProgram* program = this->ReadyProgram(first ? FirstDown : Down, window, fs);
     if (!program)
     {
       return false;
@@ -411,10 +415,14 @@ bool vtkFXBloomPass::Upsample(vtkOpenGLRenderWindow* window, int levels)
     vtkShaderProgram::Substitute(
       fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define FX_FINAL 0\n", false);
     vtkFXRenderUtilities::RenderTargetScope target(window, level.UpTarget, level.Up);
+    if (!target.IsComplete())
+    {
+      return false; // (as in Downsample)
+    }
     int rect[4];
     this->LevelRect(k, rect);
     vtkFXRenderUtilities::ScissorScope scissor(window->GetState(), rect, Transparent);
-    vtkShaderProgram* program = target.IsComplete() ? this->ReadyProgram(Up, window, fs) : nullptr;
+    vtkShaderProgram* program = this->ReadyProgram(Up, window, fs);
     if (!program)
     {
       return false;

@@ -44,8 +44,8 @@ int vtkFXHDRTargetPass::GetBytesPerPixel() const
     (this->Depth ? vtkFXRenderUtilities::GetBytesPerTexel(this->DepthFormat) : 0);
 }
 
-bool vtkFXHDRTargetPass::CopyIn(vtkOpenGLState* state, int x, int y, int width, int height,
-  bool depth, const float background[4])
+bool vtkFXHDRTargetPass::CopyIn(
+  vtkOpenGLState* state, int x, int y, int width, int height, bool depth, bool& depthCopied)
 {
   // The current read framebuffer is what the renderer drew into so far.
   // Colour and depth blit separately: a refused depth blit must not cost
@@ -56,34 +56,28 @@ bool vtkFXHDRTargetPass::CopyIn(vtkOpenGLState* state, int x, int y, int width, 
   }
   glBlitFramebuffer(
     x, y, x + width, y + height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  if (glGetError() != GL_NO_ERROR)
-  {
-    // The composite leaves background pixels alone: without the copy they
-    // would show what the texture held (nothing defined, or the last
-    // frame), so they get the renderer's background colour.
-    glClearBufferfv(GL_COLOR, 0, background);
-    if (!this->WarnedColorCopy)
-    {
-      vtkWarningMacro("The framebuffer's colour cannot be copied into the HDR target; effects "
-                      "draw over the renderer's background colour there.");
-      this->WarnedColorCopy = true;
-    }
-  }
-  bool copied = false;
+  const bool colorCopied = glGetError() == GL_NO_ERROR;
+  depthCopied = false;
   if (depth)
   {
     glBlitFramebuffer(
       x, y, x + width, y + height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-    copied = glGetError() == GL_NO_ERROR;
+    depthCopied = glGetError() == GL_NO_ERROR;
   }
-  if (!copied)
+  if (!depthCopied)
   {
     vtkOpenGLState::ScopedglDepthMask depthMask(state);
     state->vtkglDepthMask(GL_TRUE); // glClearBuffer obeys the depth mask
     const GLfloat far = 1.0f;
     glClearBufferfv(GL_DEPTH, 0, &far);
   }
-  return copied;
+  return colorCopied;
+}
+
+void vtkFXHDRTargetPass::RenderWithoutTarget(const vtkRenderState* s)
+{
+  this->DelegatePass->Render(s);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
 }
 
 void vtkFXHDRTargetPass::WriteBack(vtkOpenGLRenderWindow* window)
@@ -158,26 +152,39 @@ void vtkFXHDRTargetPass::Render(const vtkRenderState* s)
                                            << " pixels could not be made; drawing without it.");
       this->WarnedIncomplete = true;
     }
-    this->DelegatePass->Render(s);
-    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    this->RenderWithoutTarget(s);
     return;
   }
+  bool colorCopied = false;
   {
     vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
     state->vtkglDisable(GL_SCISSOR_TEST);
     state->PushDrawFramebufferBinding();
-    const float background[4] = { static_cast<float>(ren->GetBackground()[0]),
-      static_cast<float>(ren->GetBackground()[1]), static_cast<float>(ren->GetBackground()[2]),
-      static_cast<float>(ren->GetBackgroundAlpha()) };
-    const bool depthCopied =
-      this->CopyIn(state, viewport[0], viewport[1], width, height, keepDepth, background);
-    if (!depthCopied && keepDepth && !this->WarnedDepthFormat)
+    bool depthCopied = false;
+    colorCopied =
+      this->CopyIn(state, viewport[0], viewport[1], width, height, keepDepth, depthCopied);
+    if (colorCopied && !depthCopied && keepDepth && !this->WarnedDepthFormat)
     {
       vtkWarningMacro("The framebuffer's depth cannot be copied; the depth of the layers below "
                       "is not kept in the HDR target.");
       this->WarnedDepthFormat = true;
     }
     state->PopDrawFramebufferBinding();
+  }
+  if (!colorCopied)
+  {
+    // The composite leaves background pixels alone and the write-back
+    // replaces the whole image: without the framebuffer's colour (its
+    // background, gradient or lower layers) the target would show what
+    // the texture held there. Drawn without it, as when it cannot be made.
+    if (!this->WarnedColorCopy)
+    {
+      vtkWarningMacro("The framebuffer's colour cannot be copied into the HDR target; drawing "
+                      "without it.");
+      this->WarnedColorCopy = true;
+    }
+    this->RenderWithoutTarget(s);
+    return;
   }
 
   state->PushFramebufferBindings();

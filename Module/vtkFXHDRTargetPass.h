@@ -86,10 +86,13 @@ protected:
   vtkFXHDRTargetPass();
   ~vtkFXHDRTargetPass() override;
 
-  // Returns whether the depth was copied (else it is cleared to far).
-  // (colour that cannot be copied is cleared to `background`)
+  // Copies the framebuffer's colour, and with `depth` its depth, into the
+  // target; returns whether the colour was copied, and says in
+  // depthCopied whether the depth was (else it is cleared to far).
   bool CopyIn(vtkOpenGLState* state, int x, int y, int width, int height, bool depth,
-    const float background[4]);
+    bool& depthCopied);
+  // The delegate drawn straight into the renderer's framebuffer.
+  void RenderWithoutTarget(const vtkRenderState* s);
   void WriteBack(vtkOpenGLRenderWindow* window);
 
   vtkRenderPass* DelegatePass = nullptr;

@@ -41,9 +41,10 @@ void main()
   vec2 uv = 0.5 * fine * fxCoarseTexel;
   vec2 t = 0.5 * fxCoarseTexel;
 #if FX_FINAL
-  // (at most the largest half float: an intensity of 100 on a source of
-  // 65504 would write +inf into the HDR target, and a post-process blending
-  // over it, such as the toon's lines, 0 x inf = NaN)
+  // (the glow term at most the largest half float: an intensity of 100 on
+  // a source of 65504 gives 6.5e6, which a driver may store as +inf. The
+  // sum with what the target holds can still overflow where that is near
+  // 65504 itself; the write-back turns +inf into white.)
   gl_FragData[0] = vec4(min(fxIntensity * fxCoarseScale * texture(fxCoarse, uv).rgb, vec3(65504.0)), 0.0);
 #else
   vec3 tent = texture(fxCoarse, uv + t).rgb + texture(fxCoarse, uv - t).rgb +
