@@ -29,5 +29,34 @@
   virtual type Get##name##MinValue() { return min; }                                               \
   virtual type Get##name##MaxValue() { return max; }
 
+/**
+ * vtkFXSetClampVector3Macro: VTK's vtkSetVector3Macro for a floating-point
+ * triple whose components are bounded: each clamped to [min, max], and a
+ * triple with a NaN component refused with an error, the value kept. The
+ * same two setters as VTK's (three values, or an array of three).
+ */
+#define vtkFXSetClampVector3Macro(name, type, min, max)                                            \
+  virtual void Set##name(type _arg1, type _arg2, type _arg3)                                       \
+  {                                                                                                \
+    if (_arg1 != _arg1 || _arg2 != _arg2 || _arg3 != _arg3)                                        \
+    {                                                                                              \
+      vtkErrorMacro(<< #name " with NaN refused; keeping " << this->name[0] << " "                 \
+                    << this->name[1] << " " << this->name[2] << ".");                              \
+      return;                                                                                      \
+    }                                                                                              \
+    const type _clamped[3] = { _arg1 < min ? min : (_arg1 > max ? max : _arg1),                    \
+      _arg2 < min ? min : (_arg2 > max ? max : _arg2),                                             \
+      _arg3 < min ? min : (_arg3 > max ? max : _arg3) };                                           \
+    if (this->name[0] != _clamped[0] || this->name[1] != _clamped[1] ||                            \
+      this->name[2] != _clamped[2])                                                                \
+    {                                                                                              \
+      this->name[0] = _clamped[0];                                                                 \
+      this->name[1] = _clamped[1];                                                                 \
+      this->name[2] = _clamped[2];                                                                 \
+      this->Modified();                                                                            \
+    }                                                                                              \
+  }                                                                                                \
+  virtual void Set##name(const type _arg[3]) { this->Set##name(_arg[0], _arg[1], _arg[2]); }
+
 #endif
 // VTK-HeaderTest-Exclude: vtkFXSetGet.h

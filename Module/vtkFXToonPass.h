@@ -156,9 +156,9 @@ public:
 
   /**
    * Line colour, linear RGB (components 0..65504, HDR allowed; default
-   * black).
+   * black). A colour with a NaN component is refused with an error.
    */
-  vtkSetVector3Macro(LineColor, double);
+  vtkFXSetClampVector3Macro(LineColor, double, 0.0, 65504.0);
   vtkGetVector3Macro(LineColor, double);
 
   /**

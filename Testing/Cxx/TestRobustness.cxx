@@ -133,6 +133,22 @@ int CheckParametersRefuseNaN()
   {
     FX_CHECK(refused, "a parameter took NaN");
   }
+  // A colour: NaN refused, the others clamped to 0..65504.
+  vtkNew<T> toon;
+  vtkFXTest::ErrorCounter errors(toon);
+  toon->SetLineColor(0.2, 0.3, 0.4);
+  toon->SetLineColor(0.5, std::numeric_limits<double>::quiet_NaN(), 0.5);
+  double color[3];
+  toon->GetLineColor(color);
+  std::cout << "vtkFXToonPass::SetLineColor(0.5, NaN, 0.5): " << errors.Count << " error(s), "
+            << color[0] << " " << color[1] << " " << color[2] << " kept" << std::endl;
+  FX_CHECK(errors.Count == 1 && color[0] == 0.2 && color[1] == 0.3 && color[2] == 0.4,
+    "the line colour took NaN");
+  const double out[3] = { -1.0, 2.0, 1e9 };
+  toon->SetLineColor(out);
+  toon->GetLineColor(color);
+  FX_CHECK(color[0] == 0.0 && color[1] == 2.0 && color[2] == 65504.0,
+    "the line colour was not clamped: " << color[0] << " " << color[1] << " " << color[2]);
   return EXIT_SUCCESS;
 }
 
