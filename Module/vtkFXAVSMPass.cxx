@@ -168,20 +168,6 @@ bool IsSpot(vtkLight* light)
   return light->GetConeAngle() > 0.0 && light->GetConeAngle() < 89.0;
 }
 
-// Whether a positional light is so far from the props' bounding sphere
-// (centre, radius) that its rays are parallel there to within 1e-3 rad
-// (0.06 degrees): such a light gets a directional light's orthographic
-// view. A perspective view from it could not resolve the props: their
-// depths, distance +- radius, are a few float steps apart at 1e7 radii
-// and equal at 1e8 (near = far), and well before that a spot light's cone
-// spreads its map over far more than the props.
-bool CastsParallelRays(vtkLight* light, const double center[3], double radius)
-{
-  const double* from = light->GetTransformedPosition();
-  const double d[3] = { center[0] - from[0], center[1] - from[1], center[2] - from[2] };
-  return radius < 1e-3 * vtkMath::Norm(d);
-}
-
 // What decides which lights cast first.
 double Brightness(vtkLight* light)
 {
@@ -593,7 +579,7 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
   // fits in 90 degrees (at least sqrt 2 radii away: a cube face 70 radii
   // away held the props in 4 of its 512 texels); nearer, the six faces of
   // a cube (a wider single view would spread its texels thinner than a
-  // face's); beyond 1000 radii, one orthographic view (CastsParallelRays).
+  // face's); beyond 1000 radii, one orthographic view (see below).
   const auto needsCube = [&center, radius](vtkLight* light) {
     if (!light->GetPositional() || IsSpot(light))
     {
@@ -624,15 +610,25 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
     }
     vtkNew<vtkMatrix4x4> p;
     p->Zero();
-    const bool parallel = !light->GetPositional() || CastsParallelRays(light, center, radius);
-    if (parallel)
+    const double* from = light->GetTransformedPosition();
+    const double toCenter[3] = { center[0] - from[0], center[1] - from[1], center[2] - from[2] };
+    const double distance = vtkMath::Norm(toCenter);
+    // A positional light farther than 1000 radii from the props casts rays
+    // parallel there to within 1e-3 rad (0.06 degrees) and gets a
+    // directional light's view, aimed along its line to the centre. A
+    // perspective view from it could not resolve the props: their depths,
+    // distance +- radius, are a few float steps apart at 1e7 radii and
+    // equal at 1e8 (near = far), and well before that a spot light's cone
+    // spreads its map over far more than the props.
+    const bool farAway = light->GetPositional() && radius < 1e-3 * distance;
+    if (!light->GetPositional() || farAway)
     {
-      if (light->GetPositional())
+      if (farAway)
       {
-        // along its rays to the props' centre
-        const double* from = light->GetTransformedPosition();
-        vtkMath::Subtract(center, from, direction);
-        vtkMath::Normalize(direction);
+        for (int a = 0; a < 3; ++a)
+        {
+          direction[a] = toCenter[a] / distance;
+        }
       }
       // glOrtho(-r, r, -r, r, r, 3r) from 2r before the centre: the square
       // map covers the bounding sphere whatever the window's aspect.
@@ -654,11 +650,8 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
       // sphere spans the centre's axial distance plus or minus r for a spot
       // light, wherever it is aimed; for a cube face, up to the centre's
       // distance plus r.
-      const double* from = light->GetTransformedPosition();
-      const double toCenter[3] = { center[0] - from[0], center[1] - from[1], center[2] - from[2] };
       const bool spot = IsSpot(light);
       const bool cube = needsCube(light);
-      const double distance = vtkMath::Norm(toCenter);
       if (!spot && !cube)
       {
         // aimed at the sphere's centre

@@ -235,15 +235,15 @@ void vtkFXSSAOPass::SetReadUniforms(vtkShaderProgram* program, const std::string
   }
   const int full[2] = { static_cast<int>(reference->GetWidth()),
     static_cast<int>(reference->GetHeight()) };
-  const int low[2] = { static_cast<int>(source.Texture->GetWidth()),
-    static_cast<int>(source.Texture->GetHeight()) };
+  const int low[2] = { std::max(1, static_cast<int>(source.Texture->GetWidth())),
+    std::max(1, static_cast<int>(source.Texture->GetHeight())) };
   // (as the step uniform: an input that reports no step is at full resolution)
   const int step = std::max(1, source.Step);
   float scale[2], offset[2];
   for (int i = 0; i < 2; ++i)
   {
-    scale[i] = static_cast<float>(static_cast<double>(full[i]) / (step * std::max(1, low[i])));
-    offset[i] = static_cast<float>((0.5 - 0.5 / step) / std::max(1, low[i]));
+    scale[i] = static_cast<float>(static_cast<double>(full[i]) / (step * low[i]));
+    offset[i] = static_cast<float>((0.5 - 0.5 / step) / low[i]);
   }
   program->SetUniform2f(scaleName.c_str(), scale);
   program->SetUniform2f(offsetName.c_str(), offset);

@@ -370,10 +370,14 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
     }
     float h0 = -fxFastAcos(clamp(horizon1, -1.0, 1.0));
     float h1 = fxFastAcos(clamp(horizon0, -1.0, 1.0));
+    // The open horizons: those of the tangent line (the lowest ones),
+    // measured as the visible ones are, so that a slice where nothing
+    // rises above that line gives exactly its open value.
+    float open0 = -fxFastAcos(clamp(lowest1, -1.0, 1.0));
+    float open1 = fxFastAcos(clamp(lowest0, -1.0, 1.0));
 #if FX_CHANNELS == 3
     // The visible arc and the open one (down to the geometric tangent line).
-    vec4 h = vec4(h0, h1, -fxFastAcos(clamp(lowest1, -1.0, 1.0)),
-      fxFastAcos(clamp(lowest0, -1.0, 1.0)));
+    vec4 h = vec4(h0, h1, open0, open1);
     vec4 cos2h = cos(2.0 * h), sin2h = sin(2.0 * h);
     for (int k = 0; k < 3; ++k)
     {
@@ -386,14 +390,9 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
       openLobes[k] += fxLobeSide(h.z, vec2(cos2h.z, sin2h.z), u, w) +
         fxLobeSide(h.w, vec2(cos2h.w, sin2h.w), u, w);
     }
-#endif
-#if FX_CHANNELS != 3
+#else
     visibility += projectedLength * fxSliceArcs(h0, h1, normalAngle, cosNormal, sinNormal);
-    // The open arcs: the horizons at the tangent line (the lowest ones),
-    // measured as the visible ones are, so that a slice where nothing
-    // rises above that line gives exactly its open value.
-    openArcs += projectedLength * fxSliceArcs(-fxFastAcos(clamp(lowest1, -1.0, 1.0)),
-      fxFastAcos(clamp(lowest0, -1.0, 1.0)), normalAngle, cosNormal, sinNormal);
+    openArcs += projectedLength * fxSliceArcs(open0, open1, normalAngle, cosNormal, sinNormal);
 #endif
   }
   // The slices' visible arcs over their open arcs. GTAO divides by the
