@@ -119,11 +119,11 @@ std::string LightLoopBody(const std::string& call, const std::string& fetches,
 // Loops over the light texture: directional lights over every pixel;
 // positional ones over all of them or, with tiles, over this pixel's tile
 // (vtkFXLightTiles: per tile the first entry and the counts of point and
-// spot lights; each entry a copy of its light's row, EntriesPerRow to a
-// row of the entries' texture, or, with `entriesAreRows` false, the row's
-// index in the light texture, IndicesPerRow to a row).
-std::string TextureLightLoop(
-  int complexity, const std::string& visibilityCode, bool tiled, bool entriesAreRows)
+// spot lights; each entry a copy of its light's row, or, with
+// `entriesAreRows` false, the row's index in the light texture;
+// `entriesPerRow` to a row of the entries' texture).
+std::string TextureLightLoop(int complexity, const std::string& visibilityCode, bool tiled,
+  bool entriesAreRows, int entriesPerRow)
 {
   const std::string attenuation = "vec3(light0.w, light1.w, light2.w)";
   std::string code;
@@ -150,8 +150,7 @@ std::string TextureLightLoop(
       LightLoopBody(spot, "0123", visibilityCode, "fxLights", "ivec2(0, i)");
     return code;
   }
-  const std::string perRow = std::to_string(
-    entriesAreRows ? vtkFXLightTiles::EntriesPerRow : vtkFXLightTiles::IndicesPerRow);
+  const std::string perRow = std::to_string(entriesPerRow);
   const std::string entry = entriesAreRows
     ? "      ivec2 fxAt = ivec2(" + std::to_string(vtkFXLightTiles::EntryTexels) + " * (entry % " +
       perRow + "), entry / " + perRow + ");\n"
@@ -337,7 +336,8 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
     complexity > 0 && !lightTexture ? ren->GetLightingUniforms() : "", false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXLight::Impl",
     lightTexture ? TextureLightLoop(complexity, visibility, this->LightCutoff > 0.0,
-                     !this->LightTilesUsed || this->LightTiles->GetEntriesAreRows())
+                     !this->LightTilesUsed || this->LightTiles->GetEntriesAreRows(),
+                     this->LightTilesUsed ? this->LightTiles->GetEntriesPerRow() : 1)
                  : UniformLightCalls(complexity, lightCount, visibility),
     false);
   vtkShaderProgram::Substitute(
@@ -525,6 +525,12 @@ void vtkFXCompositePass::BuildLightTiles(
   // spot lights follow the point lights)
   const int firstPoint = this->FirstLightOfKind[0];
   this->LightTiles->SetRowEntryBudget(static_cast<size_t>(this->MaximumTileRowEntries));
+  GLint maxTextureSize = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSize);
+  if (maxTextureSize > 0)
+  {
+    this->LightTiles->SetMaximumTextureSize(maxTextureSize);
+  }
   if (!this->LightTiles->Build(lights, &projection->Element[0][0],
         static_cast<int>(albedo->GetWidth()), static_cast<int>(albedo->GetHeight()), depthRange,
         static_cast<size_t>(this->FirstLightOfKind[1] - firstPoint), firstPoint) &&

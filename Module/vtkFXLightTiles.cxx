@@ -183,9 +183,16 @@ bool vtkFXLightTiles::Build(const std::vector<Light>& lights, const double proje
   }
   this->HeaderData.assign(HeaderValues * tiles, 0.0f);
   // Entries: copies of the lights' rows while they fit, else the rows'
-  // indices (one shared list of every light past MaximumEntries).
-  const bool overflow = total > MaximumEntries || lights.size() > MaximumEntries;
-  this->EntriesAreRows = std::max(overflow ? lights.size() : total, size_t(1)) <= this->RowEntryBudget;
+  // indices (one shared list of every light past MaximumEntries), each
+  // within what a texture of the context can hold.
+  const size_t side = static_cast<size_t>(this->MaximumTextureSize);
+  const int rowsPerRow = static_cast<int>(std::min<size_t>(EntriesPerRow, std::max<size_t>(side / EntryTexels, 1)));
+  const int indicesPerRow = static_cast<int>(std::min<size_t>(IndicesPerRow, side));
+  const size_t indexLimit = std::min(MaximumEntries, side * indicesPerRow);
+  const size_t rowLimit = std::min(this->RowEntryBudget, side * rowsPerRow);
+  const bool overflow = total > indexLimit || lights.size() > indexLimit;
+  this->EntriesAreRows = std::max(overflow ? lights.size() : total, size_t(1)) <= rowLimit;
+  this->EntriesPerRowUsed = this->EntriesAreRows ? rowsPerRow : indicesPerRow;
   const size_t entryFloats = this->EntriesAreRows ? EntryTexels * 4 : 1;
   const auto writeEntry = [&](size_t entry, size_t light) {
     if (this->EntriesAreRows)
@@ -237,11 +244,11 @@ void vtkFXLightTiles::Upload(vtkOpenGLRenderWindow* window)
   this->Headers->Activate(); // its own unit: binding elsewhere could replace a sampler's texture
   glTexSubImage2D(
     GL_TEXTURE_2D, 0, 0, 0, this->TilesX, this->TilesY, GL_RGBA, GL_FLOAT, this->HeaderData.data());
-  // Rows: EntriesPerRow entries of EntryTexels texels to a row (an entry
-  // never straddles two); indices: IndicesPerRow to a row.
+  // Rows: GetEntriesPerRow() entries of EntryTexels texels to a row (an
+  // entry never straddles two); indices: GetEntriesPerRow() to a row.
   const size_t entryFloats = this->EntriesAreRows ? EntryTexels * 4 : 1;
   const int texelsPerEntry = this->EntriesAreRows ? EntryTexels : 1;
-  const int perRow = this->EntriesAreRows ? EntriesPerRow : IndicesPerRow;
+  const int perRow = this->EntriesPerRowUsed;
   const int entries = static_cast<int>(this->EntryData.size() / entryFloats);
   const int rows = (entries + perRow - 1) / perRow;
   const int columns = texelsPerEntry * std::min(entries, perRow);

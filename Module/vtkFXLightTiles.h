@@ -29,6 +29,12 @@
  * (MaximumEntries, 64 MiB); lists past that (a thousand lights that each
  * cover a 4K viewport's 32,400 tiles) are not built: every tile then
  * lists every light, the untiled loop's cost, and Build says so.
+ * Those layouts need textures 4096 texels wide, and 1024 (rows) or 4096
+ * (indices) high; OpenGL 3 promises 1024 only. Under a smaller
+ * SetMaximumTextureSize (the composite passes GL_MAX_TEXTURE_SIZE) a row
+ * holds fewer entries (GetEntriesPerRow) and the thresholds shrink to
+ * what the textures can hold: rows up to MaximumTextureSize rows of
+ * entries, then indices up to MaximumTextureSize rows of those.
  *
  * A plain C++ helper of vtkFXCompositePass (not wrapped).
  */
@@ -109,6 +115,21 @@ public:
   bool GetEntriesAreRows() const { return this->EntriesAreRows; }
 
   /**
+   * Entries to a row of the entries' texture in the last Build: entry e
+   * is at texel (e % GetEntriesPerRow(), e / GetEntriesPerRow()), times
+   * EntryTexels horizontally when the entries are rows. EntriesPerRow or
+   * IndicesPerRow unless the maximum texture size is smaller.
+   */
+  int GetEntriesPerRow() const { return this->EntriesPerRowUsed; }
+
+  /**
+   * The largest width and height a texture may have (texels; the
+   * context's GL_MAX_TEXTURE_SIZE, at least 1); later Builds lay their
+   * entries out within it. Default 16384.
+   */
+  void SetMaximumTextureSize(int texels) { this->MaximumTextureSize = std::max(texels, 1); }
+
+  /**
    * Entries up to which they carry copies of their lights' rows (64 bytes
    * each; default MaximumRowEntries, at most that); past it, indices.
    */
@@ -177,6 +198,8 @@ private:
   std::vector<float> HeaderData; // (first, point lights, spot lights, 0) per tile
   std::vector<float> EntryData;
   bool EntriesAreRows = true;
+  int EntriesPerRowUsed = EntriesPerRow;
+  int MaximumTextureSize = 16384;
   size_t RowEntryBudget = MaximumRowEntries;
   vtkSmartPointer<vtkTextureObject> Headers;
   vtkSmartPointer<vtkTextureObject> Entries;

@@ -145,6 +145,84 @@ int Check(const char* name, const std::vector<unsigned char>& a, const std::vect
 }
 }
 
+// 17 lights whose spheres cover every tile, 12 point lights and then 5
+// spot lights; each row holds 100 times its light's number (5 to 21) plus
+// the float's index.
+std::vector<vtkFXLightTiles::Light> LightsEverywhere()
+{
+  std::vector<vtkFXLightTiles::Light> everywhere(17);
+  for (size_t k = 0; k < everywhere.size(); ++k)
+  {
+    everywhere[k].Center[0] = everywhere[k].Center[1] = 0.0;
+    everywhere[k].Center[2] = -1.0;
+    everywhere[k].Radius = HUGE_VAL;
+    for (int f = 0; f < 4 * vtkFXLightTiles::EntryTexels; ++f)
+    {
+      everywhere[k].Row[f] = 100.0f * (5 + k) + f;
+    }
+  }
+  return everywhere;
+}
+
+// Where textures are smaller than the 4096 texels the default layouts
+// need (OpenGL 3 promises 1024), a row of the entries' texture holds
+// fewer entries, and the lists turn to indices, then to one shared list,
+// where the textures can hold no more: here at 64 texels, with 17 lights
+// over every tile. The uploaded texture has the layout GetEntriesPerRow
+// gives the composite's shader.
+int CheckSmallTextures(vtkRenderWindow* window)
+{
+  window->Render();
+  window->MakeCurrent();
+  auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
+  const std::vector<vtkFXLightTiles::Light> everywhere = LightsEverywhere();
+  const double identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+  vtkFXLightTiles tiles;
+  tiles.SetMaximumTextureSize(64);
+  // The texture as uploaded, against the entries built: entry e at texel
+  // (e % perRow) x texels, e / perRow.
+  const auto uploadedAsBuilt = [&](int texelsPerEntry) {
+    tiles.Upload(glWindow);
+    vtkTextureObject* texture = tiles.GetEntryTexture();
+    const int components = texelsPerEntry == 1 ? 1 : 4;
+    const size_t floatsPerEntry = static_cast<size_t>(texelsPerEntry) * components;
+    const std::vector<float> texels = vtkFXTest::Download(texture, components);
+    const std::vector<float>& built = tiles.GetEntryData();
+    const int perRow = tiles.GetEntriesPerRow();
+    FX_CHECK(texture->GetWidth() <= 64 && texture->GetHeight() <= 64,
+      "entries' texture " << texture->GetWidth() << " x " << texture->GetHeight());
+    for (size_t e = 0; e < built.size() / floatsPerEntry; ++e)
+    {
+      const size_t x = (e % perRow) * texelsPerEntry, y = e / perRow;
+      const size_t at = (y * texture->GetWidth() + x) * components;
+      for (size_t f = 0; f < floatsPerEntry; ++f)
+      {
+        FX_CHECK(at + f < texels.size() && texels[at + f] == built[e * floatsPerEntry + f],
+          "entry " << e << " float " << f);
+      }
+    }
+    return EXIT_SUCCESS;
+  };
+  // 16 tiles x 17 lights: 272 entries as rows, 16 to a row.
+  FX_CHECK(tiles.Build(everywhere, identity, 64, 64, nullptr, 12) && tiles.GetEntriesAreRows() &&
+      tiles.GetEntriesPerRow() == 16,
+    "rows, 16 to a row: " << tiles.GetEntriesPerRow());
+  FX_CHECK(uploadedAsBuilt(vtkFXLightTiles::EntryTexels) == EXIT_SUCCESS, "rows uploaded");
+  // 64 tiles: 1088 entries, more than 64 rows of 16: indices, 64 to a row.
+  FX_CHECK(tiles.Build(everywhere, identity, 128, 128, nullptr, 12, 5) &&
+      !tiles.GetEntriesAreRows() && tiles.GetEntriesPerRow() == 64,
+    "indices, 64 to a row: " << tiles.GetEntriesPerRow());
+  FX_CHECK(tiles.GetEntryData().size() == 17u * 64 && tiles.GetEntryData()[17] == 5.0f,
+    "index entries");
+  FX_CHECK(uploadedAsBuilt(1) == EXIT_SUCCESS, "indices uploaded");
+  // 256 tiles: 4352 entries, more than 64 rows of 64: one shared list.
+  FX_CHECK(!tiles.Build(everywhere, identity, 256, 256, nullptr, 12), "the overflow is reported");
+  FX_CHECK(tiles.GetEntriesAreRows() && tiles.GetEntryData().size() == 17u * 16, "one shared list");
+  FX_CHECK(uploadedAsBuilt(vtkFXLightTiles::EntryTexels) == EXIT_SUCCESS, "shared list uploaded");
+  tiles.ReleaseGraphicsResources(window);
+  return EXIT_SUCCESS;
+}
+
 // vtkFXLightTiles::MeasureTileDepths on a 40 x 20 linear-depth image (3 x
 // 2 tiles of 16 pixels, the last column and row partial): tile (0, 0)
 // depths 3 to 7 with a NaN pixel, tile (1, 0) all 5, tile (2, 0) (24 x
@@ -364,17 +442,7 @@ int TestLights(int, char*[])
   // number, 5 to 21).
   {
     vtkFXLightTiles tiles;
-    std::vector<vtkFXLightTiles::Light> everywhere(17);
-    for (size_t k = 0; k < everywhere.size(); ++k)
-    {
-      everywhere[k].Center[0] = everywhere[k].Center[1] = 0.0;
-      everywhere[k].Center[2] = -1.0;
-      everywhere[k].Radius = HUGE_VAL;
-      for (int f = 0; f < 4 * vtkFXLightTiles::EntryTexels; ++f)
-      {
-        everywhere[k].Row[f] = 100.0f * (5 + k) + f; // the light's number, then the float's
-      }
-    }
+    const std::vector<vtkFXLightTiles::Light> everywhere = LightsEverywhere();
     const double identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
     const size_t H = vtkFXLightTiles::HeaderValues;
     const size_t E = 4 * vtkFXLightTiles::EntryTexels; // floats per entry
@@ -451,6 +519,7 @@ int TestLights(int, char*[])
 
   auto window = vtkFXTest::MakeWindow(200, 150);
   FX_CHECK(CheckTileDepths(window) == EXIT_SUCCESS, "tile depths");
+  FX_CHECK(CheckSmallTextures(window) == EXIT_SUCCESS, "lists within small textures");
   FX_CHECK(CheckNonFiniteLights(window) == EXIT_SUCCESS, "lights with NaN or infinite numbers");
   const Lit many = Render(window, 256, false, false, Defaults);
   std::cout << "256 lights: " << many.LightsPerTile << " lights per tile" << std::endl;
