@@ -17,6 +17,7 @@
 #include "vtkTextureObject.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 
 vtkStandardNewMacro(vtkFXBilateralBlurPass);
@@ -66,6 +67,20 @@ std::array<float, 17> vtkFXBilateralBlurPass::TapWeights() const
   return weights;
 }
 
+std::string vtkFXBilateralBlurPass::TapDefines() const
+{
+  const std::array<float, 17> weights = this->TapWeights();
+  std::string list;
+  for (int i = 0; i <= this->Radius; ++i)
+  {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%s%.9g", i ? ", " : "", static_cast<double>(weights[i]));
+    list += text;
+  }
+  return "#define FX_RADIUS " + std::to_string(this->Radius) + "\n#define FX_TAP_WEIGHTS " + list +
+    "\n";
+}
+
 int vtkFXBilateralBlurPass::OutputFormat() const
 {
   switch (this->NumberOfComponents)
@@ -93,7 +108,7 @@ bool vtkFXBilateralBlurPass::RunStage(int mode, vtkRenderer* renderer,
       (withNormals ? "1" : "0") + "\n#define FX_DEPTH_COMPONENT " +
       std::to_string(this->NumberOfComponents) + "\n#define FX_NORMAL_POWER " +
       std::to_string(packed && !withNormals ? 0 : this->NormalPower) + "\n#define FX_BOX " +
-      (this->Kernel == Box ? "1" : "0") + "\n",
+      (this->Kernel == Box ? "1" : "0") + "\n" + this->TapDefines(),
     false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXNormalCoding::Dec", vtkFXNormalCoding, false);
   vtkShaderProgram::Substitute(fs, "//VTK::FXJointUpsample::Dec", vtkFXJointUpsample, false);
@@ -149,11 +164,6 @@ bool vtkFXBilateralBlurPass::RunStage(int mode, vtkRenderer* renderer,
   program->SetUniform2i("fxGBufferSize", gbufferSize);
   program->SetUniform2i("fxInputSize", inputSize);
   program->SetUniformi("fxStep", step);
-  program->SetUniformi("fxRadius", this->Radius);
-  if (program->IsUniformUsed("fxTapWeights"))
-  {
-    program->SetUniform1fv("fxTapWeights", 17, this->TapWeights().data());
-  }
   program->SetUniformf("fxDepthSigma", static_cast<float>(this->DepthSigma));
   vtkFXRenderUtilities::SetFrustumRayUniforms(program, renderer);
   this->Quads[mode].Helper->Render();

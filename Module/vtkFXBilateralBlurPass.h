@@ -178,6 +178,9 @@ protected:
   int OutputFormat() const;
   // The taps' distance weights, entry |i| (see fxTapWeights).
   std::array<float, 17> TapWeights() const;
+  // FX_RADIUS and FX_TAP_WEIGHTS for the shader: the taps' loop then has
+  // a bound and weights known at compile time.
+  std::string TapDefines() const;
 
   int Radius = 4;
   int Kernel = Gaussian;

@@ -537,7 +537,7 @@ void vtkFXCompositePass::BuildLightTiles(
     !this->WarnedLightTiles)
   {
     vtkWarningMacro("The per-tile light lists would exceed "
-      << vtkFXLightTiles::MaximumEntries << " entries (" << lights.size()
+      << this->LightTiles->GetEntryLimit() << " entries (" << lights.size()
       << " lights over this viewport): every pixel loops over every light instead.");
     this->WarnedLightTiles = true;
   }

@@ -185,14 +185,12 @@ bool vtkFXLightTiles::Build(const std::vector<Light>& lights, const double proje
   // Entries: copies of the lights' rows while they fit, else the rows'
   // indices (one shared list of every light past MaximumEntries), each
   // within what a texture of the context can hold.
-  const size_t side = static_cast<size_t>(this->MaximumTextureSize);
-  const int rowsPerRow = static_cast<int>(std::min<size_t>(EntriesPerRow, std::max<size_t>(side / EntryTexels, 1)));
-  const int indicesPerRow = static_cast<int>(std::min<size_t>(IndicesPerRow, side));
-  const size_t indexLimit = std::min(MaximumEntries, side * indicesPerRow);
-  const size_t rowLimit = std::min(this->RowEntryBudget, side * rowsPerRow);
+  const size_t indexLimit = this->GetEntryLimit();
+  const size_t rowLimit =
+    std::min(this->RowEntryBudget, size_t(this->MaximumTextureSize) * this->RowsPerRowUsed());
   const bool overflow = total > indexLimit || lights.size() > indexLimit;
   this->EntriesAreRows = std::max(overflow ? lights.size() : total, size_t(1)) <= rowLimit;
-  this->EntriesPerRowUsed = this->EntriesAreRows ? rowsPerRow : indicesPerRow;
+  this->EntriesPerRowUsed = this->EntriesAreRows ? this->RowsPerRowUsed() : this->IndicesPerRowUsed();
   const size_t entryFloats = this->EntriesAreRows ? EntryTexels * 4 : 1;
   const auto writeEntry = [&](size_t entry, size_t light) {
     if (this->EntriesAreRows)

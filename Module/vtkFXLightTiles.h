@@ -57,13 +57,13 @@ class vtkWindow;
 class VTKFX_EXPORT vtkFXLightTiles
 {
 public:
-  static const int TileSize = 16;        // pixels
-  static const int EntryTexels = 4;      // RGBA32F texels an entry holds (a light's row)
-  static const int EntriesPerRow = 1024; // of the entries' texture, entries with rows
-  static const int IndicesPerRow = 4096; // of the entries' texture, entries with indices
-  static const size_t MaximumRowEntries = size_t(1) << 20; // 64 MiB of rows
-  static const size_t MaximumEntries = size_t(1) << 24;    // 64 MiB of indices
-  static const size_t HeaderValues = 4; // per tile, see GetHeaderData
+  static constexpr int TileSize = 16;        // pixels
+  static constexpr int EntryTexels = 4;      // RGBA32F texels an entry holds (a light's row)
+  static constexpr int EntriesPerRow = 1024; // of the entries' texture, entries with rows
+  static constexpr int IndicesPerRow = 4096; // of the entries' texture, entries with indices
+  static constexpr size_t MaximumRowEntries = size_t(1) << 20; // 64 MiB of rows
+  static constexpr size_t MaximumEntries = size_t(1) << 24;    // 64 MiB of indices
+  static constexpr size_t HeaderValues = 4; // per tile, see GetHeaderData
 
   vtkFXLightTiles();
   ~vtkFXLightTiles();
@@ -99,7 +99,7 @@ public:
    * distances), a light counts only for surfaces between those depths: one
    * whose sphere crosses the camera's plane no longer reaches every tile
    * unless its sphere reaches the visible depths there. Returns false when
-   * the lists would exceed MaximumEntries: every tile then lists every
+   * the lists would exceed GetEntryLimit(): every tile then lists every
    * light.
    */
   bool Build(const std::vector<Light>& lights, const double projection[16], int width, int height,
@@ -108,11 +108,21 @@ public:
 
   /**
    * Whether the last Build's entries are copies of the lights' rows
-   * (EntryTexels RGBA32F texels each), or, for lists past
-   * MaximumRowEntries, their rows' indices in the light texture (one R32F
-   * texel each: light i of Build is row firstRow + i).
+   * (EntryTexels RGBA32F texels each), or, for lists past the row budget
+   * (SetRowEntryBudget) or past what MaximumTextureSize rows of copies
+   * hold, their rows' indices in the light texture (one R32F texel each:
+   * light i of Build is row firstRow + i).
    */
   bool GetEntriesAreRows() const { return this->EntriesAreRows; }
+
+  /**
+   * The most entries the lists may have (MaximumEntries, or what
+   * MaximumTextureSize rows of indices hold when that is less).
+   */
+  size_t GetEntryLimit() const
+  {
+    return std::min(size_t(MaximumEntries), size_t(this->MaximumTextureSize) * this->IndicesPerRowUsed());
+  }
 
   /**
    * Entries to a row of the entries' texture in the last Build: entry e
@@ -124,18 +134,22 @@ public:
 
   /**
    * The largest width and height a texture may have (texels; the
-   * context's GL_MAX_TEXTURE_SIZE, at least 1); later Builds lay their
-   * entries out within it. Default 16384.
+   * context's GL_MAX_TEXTURE_SIZE, at least EntryTexels); later Builds lay
+   * their entries out within it. Default 16384.
    */
-  void SetMaximumTextureSize(int texels) { this->MaximumTextureSize = std::max(texels, 1); }
+  void SetMaximumTextureSize(int texels)
+  {
+    this->MaximumTextureSize = std::max(texels, EntryTexels);
+  }
 
   /**
    * Entries up to which they carry copies of their lights' rows (64 bytes
-   * each; default MaximumRowEntries, at most that); past it, indices.
+   * each; default MaximumRowEntries, at most that, and at most what
+   * MaximumTextureSize rows of copies hold); past it, indices.
    */
   void SetRowEntryBudget(size_t entries)
   {
-    this->RowEntryBudget = std::min(entries, MaximumRowEntries);
+    this->RowEntryBudget = std::min(entries, size_t(MaximumRowEntries));
   }
 
   /**
@@ -187,6 +201,13 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
+  // Entries to a row of the entries' texture, of copies and of indices,
+  // within MaximumTextureSize.
+  int RowsPerRowUsed() const
+  {
+    return std::min(EntriesPerRow, std::max(this->MaximumTextureSize / EntryTexels, 1));
+  }
+  int IndicesPerRowUsed() const { return std::min(IndicesPerRow, this->MaximumTextureSize); }
   // The tiles (inclusive ranges) a sphere covers; false when none.
   bool CoveredTiles(const Light& light, const double projection[16], int box[4]) const;
   double DepthRange[2] = { 0.0, 0.0 }; // near, far; far 0: none

@@ -61,11 +61,13 @@ uniform sampler2D fxNormal;
 uniform ivec2 fxGBufferSize;
 uniform ivec2 fxInputSize;
 uniform int fxStep;          // G-buffer texels per input texel
-uniform int fxRadius;        // taps on each side
-// Weight of a tap i texels from the pixel along one axis, at |i| (1 at 0),
-// computed once on the CPU (an exp() per tap cost llvmpipe more than the
-// rest of the weight): a Gaussian of sigma radius / 2, or the box (FX_BOX).
-uniform float fxTapWeights[17];
+// Taps on each side, and the weight of a tap i texels from the pixel along
+// one axis, at |i| (1 at 0), computed on the CPU (an exp() per tap cost
+// llvmpipe more than the rest of the weight): a Gaussian of sigma
+// radius / 2, or the box (FX_BOX). Compile-time constants, so that the
+// taps' loop unrolls.
+const int fxRadius = FX_RADIUS;
+const float fxTapWeights[FX_RADIUS + 1] = float[FX_RADIUS + 1](FX_TAP_WEIGHTS);
 uniform float fxDepthSigma;  // fraction of the depth
 
 //VTK::FXNormalCoding::Dec
@@ -123,18 +125,26 @@ vec3 fxPlaneNormal(vec2 code)
   return fxIsUnlit(code) ? vec3(0.0) : fxDecodeNormal(code);
 }
 
+// 1 / the depth tolerance of a pixel at depth d0, once per pixel rather
+// than a division per tap. (The tolerance is kept a normal
+// float: at depths below about 1e-34 world units, past what the occlusion
+// passes serve but not what a blur of another input may see, the product
+// underflows, and 0 / 0 is NaN.)
+float fxToleranceInverse(float d0)
+{
+  return 1.0 / max(fxDepthSigma * d0, 1e-37);
+}
+
 // Weight of a tap whose guide (normal, depth) is g, for a pixel (n0, d0)
-// that expects the tap at depth `expected` (d0, or on its tangent plane).
-float fxGuideWeight(float d0, float expected, vec3 n0, vec4 g)
+// that expects the tap at depth `expected` (d0, or on its tangent plane);
+// `toleranceInverse` from fxToleranceInverse(d0).
+float fxGuideWeight(float d0, float toleranceInverse, float expected, vec3 n0, vec4 g)
 {
   if (!(g.w > 0.0))
   {
     return 0.0; // background never contributes
   }
-  // (the tolerance kept a normal float: at depths below about 1e-34 world
-  // units, past what the occlusion passes serve but not what a blur of
-  // another input may see, the product underflows, and 0 / 0 is NaN)
-  float r = fxPlaneGap(g.w, expected, d0) / max(fxDepthSigma * d0, 1e-37);
+  float r = fxPlaneGap(g.w, expected, d0) * toleranceInverse;
   // c^FX_NORMAL_POWER (0..32) by squaring, unrolled at compile time (the
   // bit tests are constant and fold away): a loop here, nested in the
   // taps' loop, cost llvmpipe a quarter of a directional occlusion frame
@@ -194,6 +204,7 @@ void main()
 #else
   int rows = 0;
 #endif
+  float toleranceInverse = fxToleranceInverse(d0);
   vec4 sum = value0;
   float total = 1.0;
   for (int j = -rows; j <= rows; ++j)
@@ -210,7 +221,8 @@ void main()
       vec4 tap, guide;
       fxReadTap(q, n0, tap, guide);
       float expected = fxPlaneDepthAt(planeA, planeB, vec2(q - p), d0);
-      float w = fxTapWeights[abs(i)] * rowWeight * fxGuideWeight(d0, expected, n0, guide);
+      float w = fxTapWeights[abs(i)] * rowWeight *
+        fxGuideWeight(d0, toleranceInverse, expected, n0, guide);
       sum += w * tap;
       total += w;
     }
