@@ -73,9 +73,14 @@ std::string vtkFXBilateralBlurPass::TapDefines() const
   std::string list;
   for (int i = 0; i <= this->Radius; ++i)
   {
+    // (9 digits give the float back exactly; a decimal point makes it a
+    // float literal, which an array of floats needs before GLSL 4.00's
+    // implicit conversions in constructors on some compilers)
     char text[32];
-    std::snprintf(text, sizeof(text), "%s%.9g", i ? ", " : "", static_cast<double>(weights[i]));
-    list += text;
+    std::snprintf(text, sizeof(text), "%.9g", static_cast<double>(weights[i]));
+    const std::string literal(text);
+    list += (i ? ", " : "") + literal +
+      (literal.find_first_of(".e") == std::string::npos ? ".0" : "");
   }
   return "#define FX_RADIUS " + std::to_string(this->Radius) + "\n#define FX_TAP_WEIGHTS " + list +
     "\n";

@@ -183,7 +183,7 @@ bool vtkFXLightTiles::Build(const std::vector<Light>& lights, const double proje
   }
   this->HeaderData.assign(HeaderValues * tiles, 0.0f);
   // Entries: copies of the lights' rows while they fit, else the rows'
-  // indices (one shared list of every light past MaximumEntries), each
+  // indices (one shared list of every light past GetEntryLimit()), each
   // within what a texture of the context can hold.
   const size_t indexLimit = this->GetEntryLimit();
   const size_t rowLimit =
