@@ -496,7 +496,7 @@ int main(int argc, char* argv[])
               << ", " << (ssao->GetFalloff() == vtkFXSSAOPass::Binary ? "binary" : "cuberoot")
               << " falloff, radius " << ssao->GetEffectiveRadius() << ", "
               << (ssao->GetMethod() == vtkFXSSAOPass::Horizon ? "horizon" : "hemisphere") << " "
-              << ssao->GetNumberOfSamples() << " samples, "
+              << ssao->GetEffectiveNumberOfSamples() << " samples, "
               << (ssao->GetHalfResolution() ? "half" : "full") << " resolution, "
               << (blur->GetEnabled()
                        ? std::string(blur->GetKernel() == vtkFXBilateralBlurPass::Box ? "box " : "") +

@@ -1384,7 +1384,7 @@ bool vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
                   this->AtlasSize[1], vtkFXRenderUtilities::RGBA32F) ||
       allocated;
   }
-  std::ostringstream defines;
+  vtkFXRenderUtilities::CodeStream defines;
   const bool slices = this->Representation == RegularSlices;
   // (the empty curve differs between the representations: slices are 0,
   // adaptive nodes' depths 3e38)
@@ -1397,13 +1397,13 @@ bool vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
           << MaximumListPerTexel << "\n#define FX_SLICES " << (slices ? 2 * nodes : 0)
           << "\n#define FX_VIEWS " << this->GetNumberOfViews() << "\n#define FX_ATLAS_COLUMNS "
           << this->AtlasColumns << "\n";
-  std::ostringstream sliceOutput;
+  vtkFXRenderUtilities::CodeStream sliceOutput;
   for (int k = 0; k < nodes / 2; ++k)
   {
     sliceOutput << "  gl_FragData[" << k << "] = vec4(bins[" << 4 * k << "], bins[" << 4 * k + 1
                 << "], bins[" << 4 * k + 2 << "], bins[" << 4 * k + 3 << "]);\n";
   }
-  std::ostringstream output;
+  vtkFXRenderUtilities::CodeStream output;
   for (int k = 0; k < nodes / 4; ++k)
   {
     output << "  gl_FragData[" << k << "] = vec4(fxZ[" << 4 * k << "], fxZ[" << 4 * k + 1
@@ -1419,7 +1419,7 @@ bool vtkFXAVSMPass::Resolve(vtkOpenGLRenderWindow* window)
   const auto emptyValue = [nodes, slices](int target) {
     return target < nodes / 4 && !slices ? 3e38f : 0.0f;
   };
-  std::ostringstream empty;
+  vtkFXRenderUtilities::CodeStream empty;
   for (int k = 0; k < targets; ++k)
   {
     empty << "    gl_FragData[" << k << "] = vec4(" << emptyValue(k) << ");\n";
@@ -1489,7 +1489,7 @@ bool vtkFXAVSMPass::EmptyStaleTiles(
 std::string vtkFXAVSMPass::CurveDefines(bool exact) const
 {
   const int nodes = this->Nodes();
-  std::ostringstream defines;
+  vtkFXRenderUtilities::CodeStream defines;
   defines << "#define FX_EXACT " << (exact ? 1 : 0) << "\n#define FX_BILINEAR "
           << (this->Bilinear ? 1 : 0) << "\n#define FX_NODES " << nodes << "\n#define FX_SLICES "
           << (this->Representation == RegularSlices && !exact ? 2 * nodes : 0)
@@ -1502,7 +1502,7 @@ std::string vtkFXAVSMPass::CurveCode() const
 {
   // vtkFXAVSMCurves.glsl with the curve textures' samplers and reads.
   const int nodes = this->Nodes();
-  std::ostringstream samplers, fetch, sliceFetch;
+  vtkFXRenderUtilities::CodeStream samplers, fetch, sliceFetch;
   for (int k = 0; k < nodes / 2; ++k)
   {
     samplers << "uniform sampler2D fxAVSMCurve" << k << ";\n";

@@ -73,14 +73,9 @@ std::string vtkFXBilateralBlurPass::TapDefines() const
   std::string list;
   for (int i = 0; i <= this->Radius; ++i)
   {
-    // (9 digits give the float back exactly; a decimal point makes it a
-    // float literal, which an array of floats needs before GLSL 4.00's
+    // (float literals: an array of floats needs them before GLSL 4.00's
     // implicit conversions in constructors on some compilers)
-    char text[32];
-    std::snprintf(text, sizeof(text), "%.9g", static_cast<double>(weights[i]));
-    const std::string literal(text);
-    list += (i ? ", " : "") + literal +
-      (literal.find_first_of(".e") == std::string::npos ? ".0" : "");
+    list += (i ? ", " : "") + vtkFXRenderUtilities::GLSLFloat(weights[i]);
   }
   return "#define FX_RADIUS " + std::to_string(this->Radius) + "\n#define FX_TAP_WEIGHTS " + list +
     "\n";
@@ -192,10 +187,18 @@ void vtkFXBilateralBlurPass::Render(const vtkRenderState* s)
   vtkTextureObject* depth = this->GBuffer ? this->GBuffer->GetChannelTexture(GB::LinearDepth) : nullptr;
   if (!input || !depth || !this->GBuffer->GetChannelTexture(GB::Normal))
   {
-    vtkErrorMacro("vtkFXBilateralBlurPass needs a source that wrote a texture and a "
-                  "G-buffer with normal and linear depth channels.");
+    // (said once until a frame has them again: a source that could not
+    // make its texture, say at a huge size, has said why, and would
+    // otherwise repeat this every frame)
+    if (!this->WarnedMissingInput)
+    {
+      vtkErrorMacro("vtkFXBilateralBlurPass needs a source that wrote a texture and a "
+                    "G-buffer with normal and linear depth channels; nothing blurred.");
+      this->WarnedMissingInput = true;
+    }
     return;
   }
+  this->WarnedMissingInput = false;
   if (source.Step != 1 && source.Step != 2)
   {
     vtkErrorMacro("vtkFXBilateralBlurPass takes sources at full or half resolution, not step "

@@ -192,6 +192,7 @@ protected:
   bool SkippedBackground = false;
   bool Separable = true;
   bool WarnedIncomplete = false; // a stage's target could not be made (said once)
+  bool WarnedMissingInput = false; // no source texture or G-buffer channel (said once)
 
   vtkSmartPointer<vtkTextureObject> GuideTexture; // (normal, depth), RGBA32F, input resolution
   vtkSmartPointer<vtkTextureObject> Horizontal;

@@ -64,7 +64,7 @@ std::string LightTerm(const std::string& call, const std::string& index,
 // VTK's per-light uniform names (vtkOpenGLRenderer::GetLightingUniforms).
 std::string UniformLightCalls(int complexity, int lightCount, const std::string& visibilityCode)
 {
-  std::ostringstream s;
+  vtkFXRenderUtilities::CodeStream s;
   for (int i = 0; i < lightCount && complexity > 0; ++i)
   {
     const std::string n = std::to_string(i);
@@ -308,7 +308,7 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
   const bool lightTexture = complexity >= 2 && this->UsesLightTexture(ren);
   const bool hasEmission = this->UseEmission && gb->GetChannelTexture(GB::Emission) != nullptr;
 
-  std::ostringstream defines;
+  vtkFXRenderUtilities::CodeStream defines;
   // (FX_GATHER: for the effects' code, e.g. vtkFXSSAOPass's upsample)
   defines << vtkFXRenderUtilities::GatherDefines(true)
           << "#define FX_LIGHTING " << complexity << "\n"

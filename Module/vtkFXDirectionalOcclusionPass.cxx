@@ -189,7 +189,7 @@ std::string vtkFXDirectionalOcclusionPass::ChannelsReadCode()
   const std::string read = byDepth
     ? "  vec3 stored = fxJointUpsample(@occlusion, true, @occlusion, 3, textureSize(@occlusion, "
       "0), @step, ivec2(texCoord * vec2(@fullSize)), fxPixelDepth, " +
-      std::to_string(vtkFXBilateralBlurPass::DefaultDepthSigma) + ", g, @fullSize).rgb;\n"
+      vtkFXRenderUtilities::GLSLFloat(vtkFXBilateralBlurPass::DefaultDepthSigma) + ", g, @fullSize).rgb;\n"
     : this->GetInput("denoised").Texture
     ? "  vec3 stored = texture(@occlusion, texCoord * @scale + @offset).rgb;\n"
     : "  ivec2 size = textureSize(@occlusion, 0);\n"

@@ -553,7 +553,7 @@ bool vtkFXGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
 std::string vtkFXGBufferPass::ChannelWritesGLSL(
   bool lit, bool unlitEmits, const char* linearDepth) const
 {
-  std::ostringstream code;
+  vtkFXRenderUtilities::CodeStream code;
   int target = 0;
   for (int c = 0; c < NumberOfChannels; ++c)
   {
@@ -633,7 +633,7 @@ bool vtkFXGBufferPass::PostReplaceShaderValues(std::string&, std::string&,
   // the terms. Replay the mapper's own texture code on white to learn the
   // per-fragment texel, and store the textured terms.
   const std::string textureCode = ExtractTextureCode(fragmentShader);
-  std::ostringstream impl;
+  vtkFXRenderUtilities::CodeStream impl;
   impl << HookedMarker << "\n  vec4 fxColor = gl_FragData[0];\n";
   impl << "  vec4 fxTexture = vec4(1.0);\n";
   if (!IsBlank(textureCode))

@@ -580,11 +580,17 @@ void vtkFXPipelinePass::ActivateEffects(const std::vector<size_t>& order, vtkWin
   for (size_t i = 0; i < this->Effects.size(); ++i)
   {
     EffectSlot& slot = this->Effects[i];
-    if (slot.Active && !active[i])
+    // An effect that leaves the frame, or runs at another stage than last
+    // frame, frees what it made: a toon pass whose lines go off becomes
+    // composite code, and its Render, which would free the lines'
+    // textures, no longer runs.
+    const bool movedStage = slot.Active && active[i] && slot.Stage != slot.Effect->GetStage();
+    if (slot.Active && (!active[i] || movedStage))
     {
       slot.Effect->ReleaseGraphicsResources(window);
     }
     slot.Active = active[i];
+    slot.Stage = slot.Effect->GetStage();
     slot.Effect->SetGBuffer(active[i] && this->GBufferRan ? this->GBufferPass.Get() : nullptr);
   }
 }
@@ -856,9 +862,9 @@ void vtkFXPipelinePass::AddEffect(const char* name, vtkFXEffectPass* effect)
   {
     if (slot.Name == name)
     {
-      if (slot.Active && this->LastWindow && slot.Effect != effect)
+      if (slot.Active && slot.Effect != effect)
       {
-        slot.Effect->ReleaseGraphicsResources(this->LastWindow);
+        this->ReleaseEffect(slot.Effect);
       }
       slot.Effect = effect;
       slot.Active = false;
@@ -876,9 +882,9 @@ void vtkFXPipelinePass::RemoveEffect(const char* name)
     {
       continue;
     }
-    if (slot.Active && this->LastWindow)
+    if (slot.Active)
     {
-      slot.Effect->ReleaseGraphicsResources(this->LastWindow);
+      this->ReleaseEffect(slot.Effect);
     }
     // Out of the pipeline, it keeps nothing of it: no G-buffer, no
     // producers, no place among the composite's contributors.
@@ -1028,6 +1034,24 @@ unsigned int vtkFXPipelinePass::GetGBufferChannels() const
 void vtkFXPipelinePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Release(w, false);
+}
+
+void vtkFXPipelinePass::ReleaseEffect(vtkFXEffectPass* effect)
+{
+  // In the context of the window it drew in, as Release does (called from
+  // an application's controls, another window's context may be current);
+  // a window whose context is gone took the effect's objects with it.
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(this->LastWindow);
+  if (!window)
+  {
+    return;
+  }
+  window->PushContext();
+  if (window->IsCurrent())
+  {
+    effect->ReleaseGraphicsResources(window);
+  }
+  window->PopContext();
 }
 
 void vtkFXPipelinePass::Release(vtkWindow* w, bool keepSharedEffects)

@@ -245,6 +245,9 @@ protected:
   // ReleaseGraphicsResources, in w's context; with keepSharedEffects the
   // effects that another owner still holds keep theirs.
   void Release(vtkWindow* w, bool keepSharedEffects);
+  // An effect leaving the pipeline (removed or replaced) frees its GL
+  // objects in the context of the window it last drew in.
+  void ReleaseEffect(vtkFXEffectPass* effect);
   // The references to `effect` this pipeline holds (its slots, its own
   // occlusion passes).
   int OwnReferences(vtkFXEffectPass* effect) const;
@@ -260,6 +263,7 @@ protected:
     std::string Name;
     vtkSmartPointer<vtkFXEffectPass> Effect;
     bool Active = false; // ran in the last deferred frame
+    int Stage = -1;      // the stage it was scheduled at then
   };
   struct Connection; // an input resolved to a slot
   std::vector<size_t> OrderEffects(const vtkFXSceneInfo& scene, bool deferred);

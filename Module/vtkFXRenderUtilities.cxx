@@ -668,6 +668,19 @@ void vtkFXRenderUtilities::BoxCorner(const double box[6], int i, double corner[3
   corner[2] = box[4 + ((i >> 2) & 1)];
 }
 
+std::string vtkFXRenderUtilities::GLSLFloat(double value)
+{
+  if (!std::isfinite(value))
+  {
+    return "0.0";
+  }
+  CodeStream text;
+  text.precision(9);
+  text << value;
+  const std::string literal = text.str();
+  return literal.find_first_of(".e") == std::string::npos ? literal + ".0" : literal;
+}
+
 std::vector<vtkDataObject*> vtkFXRenderUtilities::Leaves(vtkDataObject* data)
 {
   std::vector<vtkDataObject*> leaves;

@@ -17,7 +17,9 @@
 #include "vtkSmartPointer.h"
 
 #include <functional>
+#include <locale>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -259,6 +261,29 @@ public:
    * or `data` itself (none for nullptr).
    */
   static std::vector<vtkDataObject*> Leaves(vtkDataObject* data);
+
+  /**
+   * `value` as a GLSL float literal, for code generated into shaders: with
+   * a decimal point or an exponent always (a float, not an int), the point
+   * a '.' whatever the program's locale, and 9 significant digits, which
+   * give a float back exactly. (std::to_string and printf follow the C
+   * locale: under a comma locale, such as a Qt application's in German,
+   * they wrote "0,02", and the shader that read it did not compile.)
+   * Callers pass finite values; a non-finite one gives 0.0, so that the
+   * shader still compiles.
+   */
+  static std::string GLSLFloat(double value);
+
+  /**
+   * A string stream for generated shader code, in the classic "C" locale
+   * whatever the program's global C++ locale (one with digit grouping
+   * would write 1024 as "1.024", one with a decimal comma 0.5 as "0,5").
+   */
+  class CodeStream : public std::ostringstream
+  {
+  public:
+    CodeStream() { this->imbue(std::locale::classic()); }
+  };
 
   /** What GetDrawnBounds knows of where a prop draws. */
   enum DrawnBoundsKind

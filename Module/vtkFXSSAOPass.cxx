@@ -156,7 +156,8 @@ std::string vtkFXSSAOPass::GetCompositeCode(int hook)
       const bool shadingNormals =
         this->GBuffer && this->GBuffer->GetChannelTexture(vtkFXGBufferPass::GeometricNormal);
       const std::string plane = std::string(shadingNormals ? "vec3(0.0)" : "n") + ", @fullSize";
-      const std::string sigma = std::to_string(vtkFXBilateralBlurPass::DefaultDepthSigma) + ", ";
+      const std::string sigma =
+        vtkFXRenderUtilities::GLSLFloat(vtkFXBilateralBlurPass::DefaultDepthSigma) + ", ";
       const std::string read = this->UpsamplesByDepth(this->CompositeSource())
         ? "\n#if FX_GATHER\n"
           "      float ao = fxPixelDepth > 0.0 ? fxJointUpsampleGathered(@occlusion, "
@@ -258,9 +259,18 @@ void vtkFXSSAOPass::UnbindCompositeResources()
   }
 }
 
+int vtkFXSSAOPass::GetHorizonSteps() const
+{
+  return std::max(1, this->NumberOfSamples / (2 * HorizonSlices));
+}
+
 int vtkFXSSAOPass::GetEffectiveNumberOfSamples() const
 {
-  if (this->Channels != 3 || this->GetEffectiveMethod() != Hemisphere)
+  if (this->GetEffectiveMethod() == Horizon)
+  {
+    return 2 * HorizonSlices * this->GetHorizonSteps();
+  }
+  if (this->Channels != 3)
   {
     return this->NumberOfSamples;
   }
@@ -378,14 +388,13 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   this->Occlusion->SetMinificationFilter(vtkTextureObject::Linear);
   this->Occlusion->SetMagnificationFilter(vtkTextureObject::Linear);
 
-  std::ostringstream defines;
-  const int slices = HorizonSlices;
+  vtkFXRenderUtilities::CodeStream defines;
   defines << "//VTK::System::Dec\n#define FX_SAMPLES " << this->GetEffectiveNumberOfSamples()
           << "\n#define FX_METHOD " << this->GetEffectiveMethod()
           << "\n#define FX_CHANNELS " << this->Channels << "\n#define FX_TILE " << this->TileSize
           << "\n#define FX_FALLOFF " << this->Falloff
-          << "\n#define FX_SLICES " << slices
-          << "\n#define FX_STEPS " << std::max(1, this->NumberOfSamples / (2 * slices)) << "\n"
+          << "\n#define FX_SLICES " << HorizonSlices
+          << "\n#define FX_STEPS " << this->GetHorizonSteps() << "\n"
           << this->GetExtensionDefines(ren);
   std::string fs = vtkFXSSAOFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str(), false);

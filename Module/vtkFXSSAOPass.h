@@ -82,8 +82,11 @@ public:
   vtkGetMacro(NumberOfSamples, int);
 
   /**
-   * Offset along the normal and depth tolerance, as a fraction of the
-   * radius (0..0.5, default 0.02): keeps a surface from occluding itself.
+   * Hemisphere method only: how far the sample kernel's centre is lifted
+   * along the normal, as a fraction of the radius (0..0.5, default 0.02),
+   * so that a surface does not occlude itself. The horizon method needs
+   * none: it measures each step's elevation above the receiver's tangent
+   * plane, on which the receiver's own surface lies.
    */
   vtkFXSetClampMacro(Bias, double, 0.0, 0.5);
   vtkGetMacro(Bias, double);
@@ -180,8 +183,11 @@ public:
   vtkBooleanMacro(DepthAwareUpsample, bool);
 
   /**
-   * The samples the estimator takes: NumberOfSamples, rounded up to a
-   * multiple of 3 (at most 63) by vtkFXDirectionalOcclusionPass.
+   * The depth fetches the estimator takes per pixel: NumberOfSamples with
+   * the hemisphere method, rounded up to a multiple of 3 (at most 63) by
+   * vtkFXDirectionalOcclusionPass; with the horizon method a multiple of 4
+   * (2 slices, steps on both sides), NumberOfSamples rounded down, 4 at
+   * the least.
    */
   int GetEffectiveNumberOfSamples() const;
 
@@ -265,6 +271,8 @@ protected:
   // At half resolution, Depth32F: 0 where a texel holds a surface (SkipBackground)
   vtkFXRenderUtilities::DepthMask SurfaceMask;
   bool MakeSurfaceMask(vtkOpenGLRenderWindow* window, vtkTextureObject* depth, int step);
+  /** Steps on each side of a horizon slice: NumberOfSamples / 4, at least 1. */
+  int GetHorizonSteps() const;
   /** What the shader writes where there is no surface. */
   void GetOpenValue(float value[4]) const;
 

@@ -163,17 +163,15 @@ std::string vtkFXToonPass::BandCode() const
 {
   // Crossing threshold i raises the level to threshold i + 1 (to 1 past
   // the last one): one step per threshold, by the rise.
-  std::ostringstream steps;
-  // (every digit a double has, in scientific notation: a threshold of 1e-12
-  // must not print as 0)
-  steps.precision(std::numeric_limits<double>::max_digits10);
-  steps.setf(std::ios::scientific, std::ios::floatfield);
+  // (GLSLFloat: a threshold of 1e-12 must not print as 0)
+  vtkFXRenderUtilities::CodeStream steps;
   const size_t n = this->BandThresholds.size();
   double level = 0.0;
   for (size_t i = 0; i < n; ++i)
   {
     const double next = i + 1 < n ? this->BandThresholds[i + 1] : 1.0;
-    steps << "  level += step(" << this->BandThresholds[i] << ", df) * " << next - level << ";\n";
+    steps << "  level += step(" << vtkFXRenderUtilities::GLSLFloat(this->BandThresholds[i])
+          << ", df) * " << vtkFXRenderUtilities::GLSLFloat(next - level) << ";\n";
     level = next;
   }
   if (this->BandThresholds.empty())
@@ -398,7 +396,7 @@ std::string vtkFXToonPass::MidpointCode(int first, int last)
     char Component;
     int X, Y;
   } texelsInBlock[4] = { { 'w', 0, 0 }, { 'z', 1, 0 }, { 'x', 0, 1 }, { 'y', 1, 1 } };
-  std::ostringstream blocks;
+  vtkFXRenderUtilities::CodeStream blocks;
   std::vector<Midpoint> midpoints;
   int block = 0;
   for (int dy = first; dy <= last; dy += 2)
@@ -419,7 +417,7 @@ std::string vtkFXToonPass::MidpointCode(int first, int last)
   std::stable_sort(midpoints.begin(), midpoints.end(), [](const Midpoint& a, const Midpoint& b) {
     return a.X2 * a.X2 + a.Y2 * a.Y2 < b.X2 * b.X2 + b.Y2 * b.Y2;
   });
-  std::ostringstream code;
+  vtkFXRenderUtilities::CodeStream code;
   code.setf(std::ios::fixed);
   code.precision(1);
   if (last - first + 1 <= MaximumUnrolledLineWindow)
@@ -520,7 +518,8 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
     color[i] = static_cast<float>(c >= 0.0 ? std::min(c, 65504.0) : 0.0);
   }
   program->SetUniform3f("fxLineColor", color);
-  vtkFXRenderUtilities::DrawTiles(this->LineTiles, program, window, viewport, size, this->TilesFlagged);
+  this->LineTilesCulled = vtkFXRenderUtilities::DrawTiles(
+    this->LineTiles, program, window, viewport, size, this->TilesFlagged);
   this->Edges->Deactivate();
   if (surfaceDepth)
   {

@@ -204,7 +204,7 @@ public:
   /**
    * Whether the last frame with lines drew them over flagged tiles only.
    */
-  bool GetLineTilesCulled() const { return this->TilesFlagged; }
+  bool GetLineTilesCulled() const { return this->LineTilesCulled; }
 
   /**
    * Whether the current OpenGL context can flag line tiles (image stores,
@@ -284,6 +284,9 @@ protected:
   bool UseTextureGather = true;
   int OutputRows = 1; // the image's rows (tiles of a scaled screenshot included)
   bool TilesFlagged = false; // this frame's edges pass flagged the tiles
+  // The last lines were drawn over the flagged tiles only (not where the
+  // target is multisampled: DrawTiles draws every pixel there)
+  bool LineTilesCulled = false;
   vtkSmartPointer<vtkTextureObject> Edges;
   vtkSmartPointer<vtkOpenGLFramebufferObject> EdgeFrameBuffer; // Edges as colour
   vtkSmartPointer<vtkOpenGLFramebufferObject> MarkFrameBuffer;  // none: image stores

@@ -13,6 +13,7 @@
 // - emission above 1 is kept in a float channel and survives, through the
 //   HDR target, a post-process that halves the image.
 #include "vtkFXAVSMPass.h"
+#include "vtkFXBilateralBlurPass.h"
 #include "vtkFXBloomPass.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXEffectPass.h"
@@ -269,6 +270,29 @@ vtkSmartPointer<Probe> AddProbe(vtkFXPipelinePass* pipeline, const char* name, i
   p->SetInputConnection("in", input);
   pipeline->AddEffect(name, p);
   return p;
+}
+
+// A blur whose source ran but wrote no texture (an occlusion texture the
+// driver could not allocate, say, which its own pass reports) says so
+// once, not every frame.
+int TestBlurWithoutTexture()
+{
+  FlatScene scene(0.8);
+  AddProbe(scene.Pipeline, "producer", vtkFXEffectPass::AfterGBuffer);
+  vtkNew<vtkFXBilateralBlurPass> blur;
+  blur->SetInputConnection("source", "producer.out");
+  scene.Pipeline->AddEffect("blur", blur);
+  vtkFXTest::EventCounter errors(blur);
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    scene.Centre();
+  }
+  const std::string passes = vtkFXTest::Passes(scene.Pipeline);
+  std::cout << "a blur whose source wrote no texture, three frames: passes " << passes << ", "
+            << errors.Count << " error(s): " << errors.Last << std::endl;
+  FX_CHECK(passes.find("producer,blur") != std::string::npos, "the blur ran: " << passes);
+  FX_CHECK(errors.Count == 1, errors.Count << " errors in three frames");
+  return EXIT_SUCCESS;
 }
 
 int TestStages()
@@ -1075,7 +1099,7 @@ int TestFrameStructure(int, char*[])
 {
   auto window = vtkFXTest::MakeWindow(400, 300);
   SharedWindow = window;
-  for (auto test : { TestOpenGLQueries, TestStages, TestConnections, TestHooks, TestManyLights,
+  for (auto test : { TestOpenGLQueries, TestStages, TestBlurWithoutTexture, TestConnections, TestHooks, TestManyLights,
          TestLayers, TestDepthPrepass, TestEmission, TestHDRIdentity, TestHDRRobustness,
          TestPipelineOwner })
   {

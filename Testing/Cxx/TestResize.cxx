@@ -5,6 +5,7 @@
 #include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
+#include "vtkFXSSAOPass.h"
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
 
@@ -93,6 +94,32 @@ bool MakeTwoWindows(TwoWindows& two)
   return true;
 }
 
+// What each of the first 512 names is in the current context (vertex array,
+// buffer, texture, query, framebuffer, program, sampler: a bit each). Two
+// contexts number their objects from 1, so the names of two windows'
+// pipelines overlap.
+std::vector<int> LiveNames()
+{
+  std::vector<int> alive;
+  for (GLuint name = 1; name <= 512; ++name)
+  {
+    alive.push_back((glIsVertexArray(name) ? 1 : 0) + (glIsBuffer(name) ? 2 : 0) +
+      (glIsTexture(name) ? 4 : 0) + (glIsQuery(name) ? 8 : 0) + (glIsFramebuffer(name) ? 16 : 0) +
+      (glIsProgram(name) ? 32 : 0) + (glIsSampler(name) ? 64 : 0));
+  }
+  return alive;
+}
+
+int ChangedNames(const std::vector<int>& before, const std::vector<int>& after)
+{
+  int changed = 0;
+  for (size_t i = 0; i < before.size() && i < after.size(); ++i)
+  {
+    changed += before[i] != after[i] ? 1 : 0;
+  }
+  return changed;
+}
+
 int CheckReleaseFromAnotherWindow()
 {
   TwoWindows two;
@@ -145,27 +172,10 @@ int CheckDeleteFromAnotherWindow()
   while (glGetError() != GL_NO_ERROR)
   {
   }
-  // Which of the first names are vertex arrays, buffers and textures in
-  // window 0's context (both contexts number from 1: the names overlap).
-  const auto names = []() {
-    std::vector<int> alive;
-    for (GLuint name = 1; name <= 512; ++name)
-    {
-      alive.push_back((glIsVertexArray(name) ? 1 : 0) + (glIsBuffer(name) ? 2 : 0) +
-        (glIsTexture(name) ? 4 : 0) + (glIsQuery(name) ? 8 : 0) + (glIsFramebuffer(name) ? 16 : 0) +
-        (glIsProgram(name) ? 32 : 0) + (glIsSampler(name) ? 64 : 0));
-    }
-    return alive;
-  };
-  const std::vector<int> namesBefore = names();
+  const std::vector<int> namesBefore = LiveNames();
   renderers[1]->SetPass(nullptr); // its last reference: deleted
   FX_CHECK(windows[0]->IsCurrent(), "the deletion left another window's context current");
-  const std::vector<int> namesAfter = names();
-  int lost = 0;
-  for (size_t i = 0; i < namesBefore.size(); ++i)
-  {
-    lost += namesBefore[i] != namesAfter[i] ? 1 : 0;
-  }
+  const int lost = ChangedNames(namesBefore, LiveNames());
   std::cout << "a pipeline deleted while another window is current: " << lost
             << " of the other window's first 512 names changed" << std::endl;
   FX_CHECK(lost == 0, lost << " of the other window's GL names deleted");
@@ -178,6 +188,38 @@ int CheckDeleteFromAnotherWindow()
             << warnings.Count << " warnings" << std::endl;
   FX_CHECK(glError == GL_NO_ERROR && warnings.Count == 0 && largest == 0,
     "deleting one window's pipeline touched another window's resources");
+  return EXIT_SUCCESS;
+}
+
+// The same when an effect leaves a pipeline between frames while another
+// window's context is current (an application's control turning ambient
+// occlusion off in one view of several): the effect frees its objects in
+// its own window's context, and the other window's next frame is the same.
+int CheckRemoveEffectFromAnotherWindow()
+{
+  TwoWindows two;
+  FX_CHECK(MakeTwoWindows(two), "no scene");
+  vtkSmartPointer<vtkRenderWindow>* windows = two.Windows;
+  const auto before = vtkFXScenes::Capture(windows[0]);
+  windows[0]->MakeCurrent();
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+  const std::vector<int> namesBefore = LiveNames();
+  two.Pipelines[1]->AmbientOcclusionOff();
+  FX_CHECK(windows[0]->IsCurrent(), "the removal left another window's context current");
+  const int lost = ChangedNames(namesBefore, LiveNames());
+  vtkFXTest::EventCounter warnings(two.Pipelines[0]->GetCompositePass(), vtkCommand::WarningEvent);
+  windows[0]->Render();
+  const GLenum glError = glGetError();
+  const int largest = vtkFXScenes::MaxDifference(before, vtkFXScenes::Capture(windows[0]));
+  std::cout << "ambient occlusion removed from a pipeline while another window is current: "
+            << lost << " of the other window's first 512 names changed, its next frame "
+            << largest << " levels off its last, GL error " << glError << ", " << warnings.Count
+            << " warnings" << std::endl;
+  FX_CHECK(lost == 0, lost << " of the other window's GL names deleted");
+  FX_CHECK(glError == GL_NO_ERROR && warnings.Count == 0 && largest == 0,
+    "removing one window's effect touched another window's resources");
   return EXIT_SUCCESS;
 }
 
@@ -279,5 +321,6 @@ int TestResize(int, char*[])
   }
   FX_CHECK(CheckReleaseFromAnotherWindow() == EXIT_SUCCESS, "");
   FX_CHECK(CheckDeleteFromAnotherWindow() == EXIT_SUCCESS, "");
+  FX_CHECK(CheckRemoveEffectFromAnotherWindow() == EXIT_SUCCESS, "");
   return EXIT_SUCCESS;
 }

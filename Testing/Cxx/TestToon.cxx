@@ -937,6 +937,40 @@ int CheckGrazingFloor(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
+// Lines switched off free the lines' textures: the pass is then composite
+// code only, and its Render, which freed them before, no longer runs (the
+// pipeline frees an effect that changes stage). In a multisampled window,
+// where the lines are drawn over every pixel, GetLineTilesCulled says so.
+int CheckLineResources()
+{
+  vtkNew<vtkFXToonPass> toon;
+  auto window = vtkFXTest::MakeWindow(200, 150);
+  FX_CHECK(!RenderBunny(window, toon).empty(), "the bunny did not render");
+  const bool hadEdges = toon->GetEdgeTexture() != nullptr;
+  toon->FeatureLinesOff();
+  window->Render();
+  const bool keptEdges = toon->GetEdgeTexture() != nullptr;
+  std::cout << "lines switched off: the edge texture " << (hadEdges ? "existed" : "DID NOT EXIST")
+            << " and " << (keptEdges ? "WAS KEPT" : "was freed") << std::endl;
+  FX_CHECK(hadEdges && !keptEdges, "the lines' textures outlive the lines");
+
+  window->MakeCurrent();
+  if (!vtkFXToonPass::CanFlagLineTiles())
+  {
+    return EXIT_SUCCESS; // (no culling to report on either path)
+  }
+  auto multisampled = vtkFXTest::MakeWindow(200, 150);
+  multisampled->SetMultiSamples(4);
+  vtkNew<vtkFXToonPass> lines;
+  FX_CHECK(!RenderBunny(multisampled, lines).empty(), "the bunny did not render");
+  multisampled->MakeCurrent();
+  std::cout << "multisampled window (" << multisampled->GetMultiSamples()
+            << " samples): tiles culled " << (lines->GetLineTilesCulled() ? "YES" : "no")
+            << std::endl;
+  FX_CHECK(!lines->GetLineTilesCulled(), "lines drawn over every pixel reported as culled");
+  return EXIT_SUCCESS;
+}
+
 // LineColor: red lines on the sphere's silhouette. Where the green
 // channel says a pixel is covered by c (> 0.3), its red channel is the
 // blend c x 255 + (1 - c) x plain, within 3 levels (8-bit rounding of
@@ -993,6 +1027,7 @@ int TestToon(int, char*[])
   FX_CHECK(CheckGrazingFloor(window) == EXIT_SUCCESS, "floor at grazing angles");
   FX_CHECK(CheckLinesBehindForwardProps(window) == EXIT_SUCCESS, "lines behind forward props");
   FX_CHECK(CheckLineColor(window) == EXIT_SUCCESS, "line colour");
+  FX_CHECK(CheckLineResources() == EXIT_SUCCESS, "line resources");
 
   // What a configuration needs and no more: bands alone read no linear
   // depth; lines of no kind (silhouettes and creases off) are no work.

@@ -1,0 +1,135 @@
+// The shaders vtkFX generates compile whatever the program's locale. A
+// host application may set its locale from the environment (Qt does, and
+// Python's locale.setlocale(LC_ALL, "")); under German, C's printf and
+// std::to_string write 0.02 as "0,02", and a C++ global locale also groups
+// digits ("1.024"). Code that wrote such numbers into GLSL made the
+// composite's shader fail to compile (no opaque props drawn) and the blur's
+// tap weights wrong. This test makes the same frames under the classic
+// locale and under de_DE.UTF-8 (C and C++ both; made by localedef when the
+// tests are configured, found through LOCPATH) and requires the same bytes:
+// ambient occlusion (the composite's depth-aware upsample and the blur's
+// weights), directional occlusion, and toon bands and lines.
+
+#include "vtkFXPipelinePass.h"
+#include "vtkFXRenderUtilities.h"
+#include "vtkFXScenes.h"
+#include "vtkFXTestUtilities.h"
+#include "vtkFXToonPass.h"
+
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
+
+#include <clocale>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <locale>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace
+{
+const char* const CommaLocale = "de_DE.UTF-8";
+
+// scene:corner drawn by a fresh pipeline with `effect` ("ao", "do" or
+// "toon"), so that every shader is generated anew.
+std::vector<unsigned char> RenderWith(vtkRenderWindow* window, const std::string& effect)
+{
+  window->GetRenderers()->RemoveAllItems();
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  std::string error;
+  if (!vtkFXScenes::Populate(renderer, "scene:corner", vtkFXScenes::Options(), error))
+  {
+    std::cerr << error << std::endl;
+    return {};
+  }
+  vtkNew<vtkFXPipelinePass> pipeline;
+  if (effect == "ao")
+  {
+    pipeline->AmbientOcclusionOn();
+  }
+  else if (effect == "do")
+  {
+    pipeline->DirectionalOcclusionOn();
+  }
+  else
+  {
+    vtkNew<vtkFXToonPass> toon;
+    pipeline->AddEffect("toon", toon);
+  }
+  renderer->SetPass(pipeline);
+  window->Render();
+  auto image = vtkFXScenes::Capture(window);
+  renderer->SetPass(nullptr);
+  return image;
+}
+
+// The helpers that write numbers into shader code, under the current
+// (comma) locale.
+int CheckLiterals()
+{
+  using U = vtkFXRenderUtilities;
+  const std::string sigma = U::GLSLFloat(0.02), one = U::GLSLFloat(1.0),
+                    tiny = U::GLSLFloat(1e-12), nan = U::GLSLFloat(std::nan(""));
+  U::CodeStream code;
+  code << 1024 << " " << 0.5;
+  std::cout << "under " << CommaLocale << ": std::to_string(0.02) '" << std::to_string(0.02)
+            << "', GLSLFloat: '" << sigma << "', '" << one << "', '" << tiny << "', '" << nan
+            << "'; CodeStream: '" << code.str() << "'" << std::endl;
+  FX_CHECK(std::to_string(0.02).find(',') != std::string::npos,
+    "the comma locale is not in effect: the test would prove nothing");
+  FX_CHECK(sigma == "0.02" && one == "1.0" && tiny == "1e-12" && nan == "0.0",
+    "GLSL literals written in the program's locale");
+  FX_CHECK(code.str() == "1024 0.5", "shader code written in the program's locale");
+  return EXIT_SUCCESS;
+}
+}
+
+int TestLocale(int, char*[])
+{
+  auto window = vtkFXTest::MakeWindow(200, 150);
+  const char* const effects[] = { "ao", "do", "toon" };
+  std::vector<std::vector<unsigned char>> classic;
+  for (const char* effect : effects)
+  {
+    classic.push_back(RenderWith(window, effect));
+    FX_CHECK(!classic.back().empty(), "scene:corner did not render");
+  }
+
+  // (a locale made for the tests: see Testing/CMakeLists.txt)
+  const bool cLocale = std::setlocale(LC_ALL, CommaLocale) != nullptr;
+  bool cxxLocale = false;
+  try
+  {
+    std::locale::global(std::locale(CommaLocale));
+    cxxLocale = true;
+  }
+  catch (const std::runtime_error&)
+  {
+  }
+  const char* locpath = std::getenv("LOCPATH");
+  FX_CHECK(cLocale && cxxLocale,
+    "no locale " << CommaLocale << " (LOCPATH " << (locpath ? locpath : "unset")
+                 << "; the tests' configuration makes it with localedef, from Debian's "
+                    "locales package)");
+  int result = CheckLiterals();
+  for (size_t i = 0; i < classic.size() && result == EXIT_SUCCESS; ++i)
+  {
+    const auto image = RenderWith(window, effects[i]);
+    const int largest =
+      image.size() == classic[i].size() ? vtkFXScenes::MaxDifference(classic[i], image) : 256;
+    std::cout << effects[i] << " under " << CommaLocale << ": largest difference " << largest
+              << " levels from the classic locale's frame" << std::endl;
+    if (largest != 0)
+    {
+      std::cerr << effects[i] << ": a different frame under " << CommaLocale << std::endl;
+      result = EXIT_FAILURE;
+    }
+  }
+  std::locale::global(std::locale::classic());
+  std::setlocale(LC_ALL, "C");
+  return result;
+}
