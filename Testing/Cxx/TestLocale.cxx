@@ -8,8 +8,12 @@
 // locale and under de_DE.UTF-8 (C and C++ both; made by localedef when the
 // tests are configured, found through LOCPATH) and requires the same bytes:
 // ambient occlusion (the composite's depth-aware upsample and the blur's
-// weights), directional occlusion, and toon bands and lines.
+// weights), directional occlusion, toon bands and lines, bloom, shadows of
+// translucent props, and 256 point lights (counts over 1000 in the light
+// lists' code).
 
+#include "vtkFXAVSMPass.h"
+#include "vtkFXBloomPass.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXRenderUtilities.h"
 #include "vtkFXScenes.h"
@@ -33,15 +37,25 @@ namespace
 {
 const char* const CommaLocale = "de_DE.UTF-8";
 
-// scene:corner drawn by a fresh pipeline with `effect` ("ao", "do" or
-// "toon"), so that every shader is generated anew.
-std::vector<unsigned char> RenderWith(vtkRenderWindow* window, const std::string& effect)
+struct Case
+{
+  const char* Scene;
+  const char* Effect; // ao, do, toon, bloom, avsm or none
+};
+const Case Cases[] = { { "scene:corner", "ao" }, { "scene:bumps", "do" },
+  { "scene:corner", "toon" }, { "scene:glow", "bloom" }, { "scene:isoshadow", "avsm" },
+  { "scene:pointlights", "none" } };
+
+// `scene` drawn by a fresh pipeline with `effect`, so that every shader is
+// generated anew.
+std::vector<unsigned char> RenderWith(
+  vtkRenderWindow* window, const std::string& scene, const std::string& effect)
 {
   window->GetRenderers()->RemoveAllItems();
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
   std::string error;
-  if (!vtkFXScenes::Populate(renderer, "scene:corner", vtkFXScenes::Options(), error))
+  if (!vtkFXScenes::Populate(renderer, scene, vtkFXScenes::Options(), error))
   {
     std::cerr << error << std::endl;
     return {};
@@ -55,10 +69,20 @@ std::vector<unsigned char> RenderWith(vtkRenderWindow* window, const std::string
   {
     pipeline->DirectionalOcclusionOn();
   }
-  else
+  else if (effect == "toon")
   {
     vtkNew<vtkFXToonPass> toon;
     pipeline->AddEffect("toon", toon);
+  }
+  else if (effect == "bloom")
+  {
+    vtkNew<vtkFXBloomPass> bloom;
+    pipeline->AddEffect("bloom", bloom);
+  }
+  else if (effect == "avsm")
+  {
+    vtkNew<vtkFXAVSMPass> avsm;
+    pipeline->AddEffect("avsm", avsm);
   }
   renderer->SetPass(pipeline);
   window->Render();
@@ -91,12 +115,11 @@ int CheckLiterals()
 int TestLocale(int, char*[])
 {
   auto window = vtkFXTest::MakeWindow(200, 150);
-  const char* const effects[] = { "ao", "do", "toon" };
   std::vector<std::vector<unsigned char>> classic;
-  for (const char* effect : effects)
+  for (const Case& c : Cases)
   {
-    classic.push_back(RenderWith(window, effect));
-    FX_CHECK(!classic.back().empty(), "scene:corner did not render");
+    classic.push_back(RenderWith(window, c.Scene, c.Effect));
+    FX_CHECK(!classic.back().empty(), c.Scene << " did not render");
   }
 
   // (a locale made for the tests: see Testing/CMakeLists.txt)
@@ -118,14 +141,17 @@ int TestLocale(int, char*[])
   int result = CheckLiterals();
   for (size_t i = 0; i < classic.size() && result == EXIT_SUCCESS; ++i)
   {
-    const auto image = RenderWith(window, effects[i]);
+    const Case& c = Cases[i];
+    const auto image = RenderWith(window, c.Scene, c.Effect);
     const int largest =
       image.size() == classic[i].size() ? vtkFXScenes::MaxDifference(classic[i], image) : 256;
-    std::cout << effects[i] << " under " << CommaLocale << ": largest difference " << largest
-              << " levels from the classic locale's frame" << std::endl;
+    std::cout << c.Scene << ", " << c.Effect << ", under " << CommaLocale
+              << ": largest difference " << largest << " levels from the classic locale's frame"
+              << std::endl;
     if (largest != 0)
     {
-      std::cerr << effects[i] << ": a different frame under " << CommaLocale << std::endl;
+      std::cerr << c.Scene << ", " << c.Effect << ": a different frame under " << CommaLocale
+                << std::endl;
       result = EXIT_FAILURE;
     }
   }

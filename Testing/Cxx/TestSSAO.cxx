@@ -320,6 +320,26 @@ int TestSSAO(int, char*[])
   auto window = vtkFXTest::MakeWindow(Width, Height);
   const double radius = 0.5;
 
+  // 0. The fetches each method takes: the hemisphere's samples as asked;
+  // the horizon's 2 slices x 2 sides x NumberOfSamples / 4 steps, one
+  // step at the least.
+  {
+    vtkNew<vtkFXSSAOPass> ssao;
+    const int asked[] = { 1, 3, 6, 16, 63, 64 };
+    const int horizon[] = { 4, 4, 4, 16, 60, 64 };
+    for (size_t i = 0; i < sizeof(asked) / sizeof(asked[0]); ++i)
+    {
+      ssao->SetNumberOfSamples(asked[i]);
+      ssao->SetMethod(vtkFXSSAOPass::Horizon);
+      const int h = ssao->GetEffectiveNumberOfSamples();
+      ssao->SetMethod(vtkFXSSAOPass::Hemisphere);
+      const int s = ssao->GetEffectiveNumberOfSamples();
+      FX_CHECK(h == horizon[i] && s == asked[i],
+        asked[i] << " samples asked: horizon " << h << " (expected " << horizon[i]
+                 << "), hemisphere " << s);
+    }
+  }
+
   const int falloffs[2] = { vtkFXSSAOPass::Binary, vtkFXSSAOPass::CubeRoot };
   const auto falloffName = vtkFXTest::FalloffName;
 
