@@ -675,6 +675,17 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
     {
       channels |= vtkFXGBufferPass::ChannelBit(vtkFXGBufferPass::GeometricNormal);
     }
+    // The composite lights at the renderer's complexity wherever a normal
+    // channel exists, also one only an effect or the debug view reads:
+    // then it needs the depth positional lights read, lit props or not
+    // (without it, it drew no opaque prop at all); the material channels
+    // no unlit pixel reads stay out.
+    using GB = vtkFXGBufferPass;
+    if (!scene.AnyLitProp && (channels & GB::ChannelBit(GB::Normal)))
+    {
+      channels |= composite->GetRequiredChannels(scene.LightingComplexity) &
+        GB::ChannelBit(GB::LinearDepth);
+    }
     this->GBufferPass->SetRequiredChannels(channels);
     this->GBufferPass->SetHDREmission(scene.AnyEmissionAboveOne);
     this->GBufferPass->SetHDRMaterial(scene.LargestColor > 1.0);

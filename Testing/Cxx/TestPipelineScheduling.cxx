@@ -10,9 +10,12 @@
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
+#include "vtkFXCompositePass.h"
+#include "vtkFXToonPass.h"
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
+#include "vtkLight.h"
 #include "vtkObjectFactory.h"
 #include "vtkTextureObject.h"
 #include "vtkPolyDataMapper.h"
@@ -142,6 +145,34 @@ int TestPipelineScheduling(int, char*[])
               << std::endl;
     FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "albedo",
       "channels nobody reads: " << Channels(pipeline->GetGBufferChannels()));
+    // An effect that reads normals (toon bands) there, under a positional
+    // light: the composite lights at the renderer's complexity wherever a
+    // normal channel exists, and gets the depth positional lights need
+    // (without it, it drew no opaque prop). Nothing it lights, so the
+    // frame is the one without the effect.
+    vtkNew<vtkLight> lamp;
+    lamp->SetPositional(true);
+    lamp->SetPosition(0.0, 3.0, 3.0);
+    renderer->AddLight(lamp);
+    window->Render();
+    const auto withoutBands = vtkFXScenes::Capture(window);
+    vtkNew<vtkFXToonPass> bands;
+    bands->FeatureLinesOff();
+    pipeline->AddEffect("bands", bands);
+    vtkFXTest::EventCounter compositeErrors(pipeline->GetCompositePass());
+    window->Render();
+    const int bandsDifference =
+      vtkFXScenes::MaxDifference(withoutBands, vtkFXScenes::Capture(window));
+    std::cout << "unlit and PBR, toon bands, a positional light: ["
+              << Channels(pipeline->GetGBufferChannels()) << "], " << compositeErrors.Count
+              << " composite error(s), " << bandsDifference << " levels off the frame without bands"
+              << std::endl;
+    FX_CHECK(compositeErrors.Count == 0 && bandsDifference == 0,
+      "normals without lit props under a positional light: " << compositeErrors.Last);
+    FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "albedo,normal,depth",
+      "the material channels no lit pixel reads: " << Channels(pipeline->GetGBufferChannels()));
+    pipeline->RemoveEffect("bands");
+    renderer->RemoveLight(lamp);
     for (auto& c : changed)
     {
       c.first->SetLighting(c.second < 100);
