@@ -313,9 +313,21 @@ int vtkFXGBufferPass::GetBytesPerPixel() const
   return bytes;
 }
 
+namespace
+{
+// An actor the G-buffer's hooks shade. Not a vtkSkybox: VTK draws the sky at
+// the far plane (window depth 1, the composite's background), through an
+// actor of its own that carries no render-pass keys; drawn forward, after
+// the composite, it shows where nothing else does, as VTK shows it.
+bool IsCapturedActor(vtkProp* prop)
+{
+  return vtkActor::SafeDownCast(prop) && !prop->IsA("vtkSkybox");
+}
+}
+
 bool vtkFXGBufferPass::CanCapture(vtkProp* prop)
 {
-  if (vtkActor::SafeDownCast(prop))
+  if (IsCapturedActor(prop))
   {
     return true;
   }
@@ -328,7 +340,7 @@ bool vtkFXGBufferPass::CanCapture(vtkProp* prop)
   prop->InitPathTraversal();
   while (vtkAssemblyPath* path = prop->GetNextPath())
   {
-    all = all && vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp()) != nullptr;
+    all = all && IsCapturedActor(path->GetLastNode()->GetViewProp());
   }
   return all;
 }
