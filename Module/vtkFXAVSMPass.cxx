@@ -183,6 +183,16 @@ bool StorageBuffersSupported()
   return vtkFXRenderUtilities::IsOpenGLSupported("GL_VERSION_4_3");
 }
 
+// Whether a geometry shader may declare the exact lists' storage blocks
+// (vtkFXAVSMLists.glsl declares four): OpenGL 4.3 guarantees fragment
+// shaders 8 but geometry shaders none.
+bool GeometryShaderReadsLists()
+{
+  GLint blocks = 0;
+  glGetIntegerv(GL_MAX_GEOMETRY_SHADER_STORAGE_BLOCKS, &blocks);
+  return blocks >= 4;
+}
+
 // VTK's point-gaussian splats (vtkPointGaussianGS.glsl: a triangle around
 // each point, facing the camera, with the offset from the centre in scale
 // units): the geometry shader gets `declarations`, `once` after it computes
@@ -1088,7 +1098,19 @@ bool vtkFXAVSMPass::PostReplaceShaderValues(
   }
   // A splat takes the brightest casting light's visibility at its centre,
   // looked up once per splat rather than per fragment: a cloud's splats
-  // overlap in many layers on screen.
+  // overlap in many layers on screen. (Exact lists where a geometry shader
+  // cannot read them: splats keep their colour, as unlit shaders do, where
+  // the program would fail to link and the splats vanish.)
+  if (this->Exact && Contains(geometryShader, "offsetVCGSOutput") && !GeometryShaderReadsLists())
+  {
+    if (!this->WarnedGeometryLists)
+    {
+      vtkWarningMacro("This OpenGL allows geometry shaders too few storage blocks for the exact "
+                      "lists: translucent splats receive no shadow in Exact mode.");
+      this->WarnedGeometryLists = true;
+    }
+    return true;
+  }
   const bool splat = ExtendSplatShaders(geometryShader, fragmentShader,
     "out float fxSplatTransmittanceGSOutput;\n" + this->CurveDefines(this->Exact) +
       (this->Exact ? vtkFXAVSMLists : "") + this->CurveCode(),
@@ -2094,6 +2116,18 @@ void AddTextureKey(vtkTexture* texture, std::vector<double>& key)
   }
 }
 
+// A prop that picks, as it renders, which of its mappers draws (by the
+// time the renderer allocates it, or ParaView's EnableLOD): what it drew
+// into the last maps is not known before the capture, so maps it casts
+// into are made every frame. (Keyed on its full-resolution mapper, the
+// coarse shadow of the last interactive frame stayed under the still
+// render.)
+bool SwitchesLevelOfDetail(vtkProp* prop)
+{
+  return prop->IsA("vtkLODActor") || prop->IsA("vtkQuadricLODActor") ||
+    prop->IsA("vtkLODProp3D") || prop->IsA("vtkPVLODActor");
+}
+
 // What an actor draws from its property, textures, shaders, mapper and
 // data; its transform is keyed apart (CaptureKey). Not its redraw time:
 // an assembly modifies its parts every frame (vtkAssembly pokes their
@@ -2196,6 +2230,10 @@ std::vector<double> vtkFXAVSMPass::CaptureKey()
       if (matrix)
       {
         key.insert(key.end(), matrix->GetData(), matrix->GetData() + 16);
+      }
+      if (SwitchesLevelOfDetail(part))
+      {
+        return std::vector<double>(); // (no key: never reused)
       }
       if (vtkActor* actor = vtkActor::SafeDownCast(part))
       {

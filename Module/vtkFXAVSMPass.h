@@ -323,8 +323,10 @@ public:
    * A frame that only moves the camera then skips the capture and the
    * resolve and costs the look-up alone. A camera light (the light kit's)
    * moves with the camera, so its shadow maps are made again every frame,
-   * as are those of data that changes, and of scenes whose bounds follow
-   * the camera (followers, cube axes). Data edited in place without
+   * as are those of data that changes, of scenes whose bounds follow
+   * the camera (followers, cube axes), and of casters that pick what they
+   * draw as they render (vtkLODActor, vtkQuadricLODActor, vtkLODProp3D,
+   * ParaView's vtkPVLODActor). Data edited in place without
    * Modified() is not seen (VTK's own mappers keep their buffers then
    * too): call Modified() on this pass to make the maps again.
    */
@@ -565,6 +567,7 @@ protected:
   vtkTimeStamp ShaderStageTime;
   double PhaseMilliseconds[3] = { 0.0, 0.0, 0.0 };
   bool WarnedUnsupported = false;
+  bool WarnedGeometryLists = false; // Exact splats left unshadowed (said once)
   bool ReuseShadowMaps = true;
   bool ReusedShadowMaps = false;
   // The key of the shadow maps in the buffers and curves, while they are

@@ -52,6 +52,9 @@
 #include "vtkActorCollection.h"
 #include "vtkAppendPolyData.h"
 #include "vtkCallbackCommand.h"
+#if VTKFX_HAS_RENDERING_LOD
+#include "vtkLODActor.h"
+#endif
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -1335,6 +1338,22 @@ int CheckShadowMapReuse(vtkRenderWindow* window)
   assembly->AddPart(assemblyPart);
   assembly->AddPart(Quad(-3, 0, 4.5, 0.4));
 
+  // A level-of-detail actor: it picks the mapper it draws as it renders,
+  // which no key can know before the capture. (Without VTK's RenderingLOD,
+  // as in ParaView's VTK, a plain actor stands in, and the steps below
+  // expect what a plain actor gets.)
+#if VTKFX_HAS_RENDERING_LOD
+  vtkNew<vtkLODActor> lod;
+  const bool lodSwitches = true;
+#else
+  vtkNew<vtkActor> lod;
+  const bool lodSwitches = false;
+#endif
+  vtkNew<vtkPolyDataMapper> lodMapper;
+  lodMapper->SetInputConnection(QuadSource(2.0, 8.0, 3.0)->GetOutputPort());
+  lod->SetMapper(lodMapper);
+  lod->GetProperty()->SetOpacity(0.5);
+
   vtkPlaneSource* source = vtkPlaneSource::SafeDownCast(slab->GetMapper()->GetInputAlgorithm());
   vtkCamera* camera = renderer->GetActiveCamera();
   const struct
@@ -1388,6 +1407,9 @@ int CheckShadowMapReuse(vtkRenderWindow* window)
       },
       false, true },
     { "a camera light, the camera turned", [&] { camera->Elevation(10.0); }, false, true },
+    { "a level-of-detail actor added", [&] { renderer->AddActor(lod); }, false, true },
+    { "a level-of-detail actor, nothing changed", [] {}, !lodSwitches, false },
+    { "the level-of-detail actor removed", [&] { renderer->RemoveActor(lod); }, false, true },
     { "reuse off", [&] { avsm->ReuseShadowMapsOff(); }, false, false },
     { "reuse off, nothing changed", [] {}, false, false },
   };
