@@ -14,6 +14,7 @@
 #include "vtkAlgorithm.h"
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
+#include "vtkBoundingBox.h"
 #include "vtkCamera.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
@@ -569,6 +570,26 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
   // from any other positional light, the six faces of a cube.
   double bounds[6];
   vtkFXRenderUtilities::ComputeVisiblePropBounds(ren, bounds);
+  // The casters too, also those the renderer's bounds leave out (UseBounds
+  // off: a large surface kept out of ResetCamera): outside the views they
+  // were clipped off, and cast nothing.
+  vtkBoundingBox box;
+  if (vtkMath::AreBoundsInitialized(bounds))
+  {
+    box.SetBounds(bounds);
+  }
+  for (vtkProp* caster : this->Casters)
+  {
+    double casterBounds[6];
+    if (vtkFXRenderUtilities::GetDrawnBounds(caster, casterBounds) == vtkFXRenderUtilities::DrawsWithin)
+    {
+      box.AddBounds(casterBounds);
+    }
+  }
+  if (box.IsValid())
+  {
+    box.GetBounds(bounds);
+  }
   double center[3] = { 0.0, 0.0, 0.0 };
   double radius = 1.0;
   if (vtkMath::AreBoundsInitialized(bounds))

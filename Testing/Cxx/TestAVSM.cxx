@@ -1277,6 +1277,25 @@ ShadowFrame RenderShadowFrame(vtkRenderWindow* window, vtkFXAVSMPass* avsm)
     vtkFXScenes::Capture(window) };
 }
 
+// A caster left out of the renderer's bounds (UseBounds off: a large
+// surface an application keeps out of ResetCamera) high above the props:
+// the light's view reaches it, and it shadows the ground by its opacity.
+// (Fitted to the other props' bounding sphere, the view's near plane cut
+// it off: no shadow at all.)
+int CheckCasterOutsideBounds(vtkRenderWindow* window)
+{
+  vtkNew<vtkFXPipelinePass> pipeline;
+  vtkNew<vtkFXAVSMPass> avsm;
+  vtkRenderer* renderer = GroundScene(window, false);
+  auto slab = Quad(-10, 0, 40, 0.3);
+  slab->UseBoundsOff();
+  renderer->AddActor(slab);
+  pipeline->AddEffect("avsm", avsm);
+  renderer->SetPass(pipeline);
+  const ShadowFrame frame = RenderShadowFrame(window, avsm);
+  return CheckHalves("a caster with UseBounds off, 40 units up", frame.Visibility, 0.7, 1e-3);
+}
+
 // Shadow maps kept between frames (ReuseShadowMaps): after each change
 // below, a frame either reuses the last maps or makes new ones, as
 // expected, and what it shows (visibility and image) equals the same frame
@@ -2165,6 +2184,7 @@ int TestAVSM(int, char*[])
   }
   FX_CHECK(CheckTwoLights(window) == EXIT_SUCCESS, "two casting lights");
   FX_CHECK(CheckShadowMapReuse(window) == EXIT_SUCCESS, "shadow maps kept between frames");
+  FX_CHECK(CheckCasterOutsideBounds(window) == EXIT_SUCCESS, "a caster outside the bounds");
   FX_CHECK(CheckShadowsBesideNonFiniteLight(window) == EXIT_SUCCESS, "a NaN light and shadows");
   FX_CHECK(CheckFarLight(window) == EXIT_SUCCESS, "a light far from the props");
 
