@@ -57,21 +57,9 @@ int TestBaselineImage(int argc, char* argv[])
     pipeline->GetDirectionalOcclusionPass()->SetBleeding(view == "do-bleed" ? 1.0 : 0.0);
     pipeline->GetCompositePass()->SetDebugOcclusion(view != "do-lit" && view != "do-bleed");
   }
-  else if (view == "toon" || view == "lines")
+  else if (view == "toon" || view == "lines" || view == "avsm" || view == "bloom")
   {
-    vtkNew<vtkFXToonPass> toon;
-    toon->SetBands(view == "toon");
-    pipeline->AddEffect("toon", toon);
-  }
-  else if (view == "avsm")
-  {
-    vtkNew<vtkFXAVSMPass> avsm;
-    pipeline->AddEffect("avsm", avsm);
-  }
-  else if (view == "bloom")
-  {
-    vtkNew<vtkFXBloomPass> bloom;
-    pipeline->AddEffect("bloom", bloom);
+    vtkFXTest::AddEffect(pipeline, view);
   }
   else if (view != "lit")
   {

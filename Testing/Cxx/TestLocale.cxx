@@ -12,13 +12,10 @@
 // translucent props, and 256 point lights (counts over 1000 in the light
 // lists' code).
 
-#include "vtkFXAVSMPass.h"
-#include "vtkFXBloomPass.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXRenderUtilities.h"
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
-#include "vtkFXToonPass.h"
 
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -61,28 +58,10 @@ std::vector<unsigned char> RenderWith(
     return {};
   }
   vtkNew<vtkFXPipelinePass> pipeline;
-  if (effect == "ao")
+  if (effect != "none" && !vtkFXTest::AddEffect(pipeline, effect))
   {
-    pipeline->AmbientOcclusionOn();
-  }
-  else if (effect == "do")
-  {
-    pipeline->DirectionalOcclusionOn();
-  }
-  else if (effect == "toon")
-  {
-    vtkNew<vtkFXToonPass> toon;
-    pipeline->AddEffect("toon", toon);
-  }
-  else if (effect == "bloom")
-  {
-    vtkNew<vtkFXBloomPass> bloom;
-    pipeline->AddEffect("bloom", bloom);
-  }
-  else if (effect == "avsm")
-  {
-    vtkNew<vtkFXAVSMPass> avsm;
-    pipeline->AddEffect("avsm", avsm);
+    std::cerr << "no effect " << effect << std::endl;
+    return {};
   }
   renderer->SetPass(pipeline);
   window->Render();

@@ -7,8 +7,11 @@
 #include "vtkCamera.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCameraPass.h"
+#include "vtkFXAVSMPass.h"
+#include "vtkFXBloomPass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
+#include "vtkFXToonPass.h"
 #include "vtkFXScenes.h"
 #include "vtkImageActor.h"
 #include "vtkImageData.h"
@@ -83,6 +86,40 @@ struct EventCounter
 using ErrorCounter = EventCounter;
 
 // An offscreen window with one sample per pixel (the G-buffer has one).
+// Adds to `pipeline` the effect `name` names, with its defaults: "ao"
+// (ambient occlusion and its blur), "do" (directional occlusion), "toon"
+// (bands and lines), "lines" (lines alone), "avsm" or "bloom". False for
+// any other name.
+inline bool AddEffect(vtkFXPipelinePass* pipeline, const std::string& name)
+{
+  if (name == "ao" || name == "do")
+  {
+    pipeline->SetAmbientOcclusion(name == "ao");
+    pipeline->SetDirectionalOcclusion(name == "do");
+    return true;
+  }
+  vtkSmartPointer<vtkFXEffectPass> effect;
+  if (name == "toon" || name == "lines")
+  {
+    auto toon = vtkSmartPointer<vtkFXToonPass>::New();
+    toon->SetBands(name == "toon");
+    effect = toon;
+  }
+  else if (name == "avsm")
+  {
+    effect = vtkSmartPointer<vtkFXAVSMPass>::New();
+  }
+  else if (name == "bloom")
+  {
+    effect = vtkSmartPointer<vtkFXBloomPass>::New();
+  }
+  if (effect)
+  {
+    pipeline->AddEffect(name == "lines" ? "toon" : name.c_str(), effect);
+  }
+  return effect != nullptr;
+}
+
 inline vtkSmartPointer<vtkRenderWindow> MakeWindow(int width, int height)
 {
   auto window = vtkSmartPointer<vtkRenderWindow>::New();
