@@ -249,10 +249,25 @@ void vtkFXLightTiles::Upload(vtkOpenGLRenderWindow* window)
   const int perRow = this->EntriesPerRowUsed;
   const int entries = static_cast<int>(this->EntryData.size() / entryFloats);
   const int rows = (entries + perRow - 1) / perRow;
-  const int columns = texelsPerEntry * std::min(entries, perRow);
+  // Whole rows, and rows to a power of two (within the context's limit),
+  // kept while they hold the entries: the count changes nearly every frame
+  // while the camera or the lights move, and a texture sized to it was
+  // allocated again each time. Only the rows in use are uploaded.
+  const int columns = texelsPerEntry * perRow;
+  const int format = this->EntriesAreRows ? vtkFXRenderUtilities::RGBA32F : vtkFXRenderUtilities::R32F;
+  int height = 1;
+  while (height < rows)
+  {
+    height *= 2;
+  }
+  height = std::max(rows, std::min(height, this->MaximumTextureSize));
+  if (this->Entries && static_cast<int>(this->Entries->GetWidth()) == columns &&
+    static_cast<int>(this->Entries->GetHeight()) >= rows)
+  {
+    height = static_cast<int>(this->Entries->GetHeight()); // (EnsureTexture checks the format)
+  }
   this->EntryData.resize(static_cast<size_t>(rows) * columns * (this->EntriesAreRows ? 4 : 1), 0.0f);
-  vtkFXRenderUtilities::EnsureTexture(this->Entries, window, columns, rows,
-    this->EntriesAreRows ? vtkFXRenderUtilities::RGBA32F : vtkFXRenderUtilities::R32F);
+  vtkFXRenderUtilities::EnsureTexture(this->Entries, window, columns, height, format);
   this->Entries->Activate();
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, columns, rows, this->EntriesAreRows ? GL_RGBA : GL_RED,
     GL_FLOAT, this->EntryData.data());

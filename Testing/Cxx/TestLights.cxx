@@ -220,6 +220,32 @@ int CheckSmallTextures(vtkRenderWindow* window)
   FX_CHECK(tiles.GetEntriesAreRows() && tiles.GetEntryData().size() == 17u * 16, "one shared list");
   FX_CHECK(uploadedAsBuilt(vtkFXLightTiles::EntryTexels) == EXIT_SUCCESS, "shared list uploaded");
   tiles.ReleaseGraphicsResources(window);
+
+  // The entries' texture is not allocated again for every count of entries
+  // (which changes nearly every frame while the lights or the camera move):
+  // whole rows, and a power of two of them, kept while they hold the lists.
+  vtkFXLightTiles growing;
+  std::vector<std::array<unsigned int, 3>> textures; // handle, width, height
+  for (size_t lights : { 17, 16, 12, 17, 9 })
+  {
+    const std::vector<vtkFXLightTiles::Light> some(everywhere.begin(), everywhere.begin() + lights);
+    FX_CHECK(growing.Build(some, identity, 64, 64, nullptr, 12), "lists of " << lights << " lights");
+    FX_CHECK(growing.GetEntriesAreRows(), "rows");
+    growing.Upload(glWindow);
+    vtkTextureObject* texture = growing.GetEntryTexture();
+    textures.push_back({ texture->GetHandle(), texture->GetWidth(), texture->GetHeight() });
+  }
+  std::cout << "entries' texture for 17, 16, 12, 17 and 9 lights over 16 tiles:";
+  for (const auto& t : textures)
+  {
+    std::cout << " " << t[1] << " x " << t[2] << " (" << t[0] << ")";
+  }
+  std::cout << std::endl;
+  FX_CHECK(std::all_of(textures.begin(), textures.end(), [&](const std::array<unsigned int, 3>& t) {
+    return t == textures[0];
+  }),
+    "the entries' texture was allocated again for another count of entries");
+  growing.ReleaseGraphicsResources(window);
   return EXIT_SUCCESS;
 }
 
