@@ -14,7 +14,6 @@
 #include "vtkAlgorithm.h"
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
-#include "vtkBoundingBox.h"
 #include "vtkCamera.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
@@ -570,26 +569,38 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
   // from any other positional light, the six faces of a cube.
   double bounds[6];
   vtkFXRenderUtilities::ComputeVisiblePropBounds(ren, bounds);
-  // The casters too, also those the renderer's bounds leave out (UseBounds
-  // off: a large surface kept out of ResetCamera): outside the views they
-  // were clipped off, and cast nothing.
-  vtkBoundingBox box;
-  if (vtkMath::AreBoundsInitialized(bounds))
-  {
-    box.SetBounds(bounds);
-  }
+  // The casters' own bounds, also of those the renderer's leave out
+  // (UseBounds off: a large surface kept out of ResetCamera). A view keeps
+  // the sphere's width (what can be shadowed) and reaches towards the
+  // light as far as a caster lies (what can shadow it): fitted to the
+  // sphere alone, such a caster above the props was clipped off and cast
+  // nothing; widened to hold it, the whole scene's shadows would lose
+  // resolution to a surface that is mostly elsewhere.
+  std::vector<std::array<double, 6>> casterBoxes;
   for (vtkProp* caster : this->Casters)
   {
-    double casterBounds[6];
-    if (vtkFXRenderUtilities::GetDrawnBounds(caster, casterBounds) == vtkFXRenderUtilities::DrawsWithin)
+    std::array<double, 6> box;
+    if (vtkFXRenderUtilities::GetDrawnBounds(caster, box.data()) == vtkFXRenderUtilities::DrawsWithin)
     {
-      box.AddBounds(casterBounds);
+      casterBoxes.push_back(box);
     }
   }
-  if (box.IsValid())
-  {
-    box.GetBounds(bounds);
-  }
+  // The smallest distance along `axis` from `origin` to a caster's box
+  // corner (+inf without casters).
+  const auto nearestCaster = [&casterBoxes](const double origin[3], const double axis[3]) {
+    double nearest = HUGE_VAL;
+    for (const auto& box : casterBoxes)
+    {
+      for (int i = 0; i < 8; ++i)
+      {
+        double corner[3];
+        vtkFXRenderUtilities::BoxCorner(box.data(), i, corner);
+        const double d[3] = { corner[0] - origin[0], corner[1] - origin[1], corner[2] - origin[2] };
+        nearest = std::min(nearest, vtkMath::Dot(d, axis));
+      }
+    }
+    return nearest;
+  };
   double center[3] = { 0.0, 0.0, 0.0 };
   double radius = 1.0;
   if (vtkMath::AreBoundsInitialized(bounds))
@@ -661,16 +672,21 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
           direction[a] = toCenter[a] / distance;
         }
       }
-      // glOrtho(-r, r, -r, r, r, 3r) from 2r before the centre: the square
-      // map covers the bounding sphere whatever the window's aspect.
-      const double position[3] = { center[0] - 2.0 * radius * direction[0],
-        center[1] - 2.0 * radius * direction[1], center[2] - 2.0 * radius * direction[2] };
+      // glOrtho(-r, r, -r, r, r, r + a + r) from a + r before the centre,
+      // a = r or, where a caster lies farther towards the light, its
+      // distance before the centre: the square map covers the bounding
+      // sphere whatever the window's aspect, and depth every caster that
+      // can shadow it.
+      const double ahead = std::max(radius, -nearestCaster(center, direction));
+      const double back = ahead + radius;
+      const double position[3] = { center[0] - back * direction[0],
+        center[1] - back * direction[1], center[2] - back * direction[2] };
+      const double nearFar[2] = { radius, back + radius };
       p->SetElement(0, 0, 1.0 / radius);
       p->SetElement(1, 1, 1.0 / radius);
-      p->SetElement(2, 2, -1.0 / radius);
-      p->SetElement(2, 3, -2.0);
+      p->SetElement(2, 2, -2.0 / (nearFar[1] - nearFar[0]));
+      p->SetElement(2, 3, -(nearFar[1] + nearFar[0]) / (nearFar[1] - nearFar[0]));
       p->SetElement(3, 3, 1.0);
-      const double nearFar[2] = { radius, 3.0 * radius };
       this->AddView(position, direction, p, false, nearFar);
     }
     else
@@ -693,7 +709,9 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
       }
       const double axial = spot ? vtkMath::Dot(toCenter, direction) : distance;
       const double farPlane = std::max(axial + radius, 1e-30);
-      const double nearPlane = std::max(cube ? 0.0 : axial - radius, 1e-3 * farPlane);
+      // (nearer where a caster lies between the light and the sphere)
+      const double nearPlane = std::max(
+        cube ? 0.0 : std::min(axial - radius, nearestCaster(from, direction)), 1e-3 * farPlane);
       // The cone's half angle; outside the sphere, the angle under which it
       // is seen: tan = r / sqrt(d^2 - r^2); a cube face: 45 degrees.
       const double f = spot

@@ -250,9 +250,10 @@ void vtkFXLightTiles::Upload(vtkOpenGLRenderWindow* window)
   const int entries = static_cast<int>(this->EntryData.size() / entryFloats);
   const int rows = (entries + perRow - 1) / perRow;
   // Whole rows, and rows to a power of two (within the context's limit),
-  // kept while they hold the entries: the count changes nearly every frame
-  // while the camera or the lights move, and a texture sized to it was
-  // allocated again each time. Only the rows in use are uploaded.
+  // kept while they hold the entries and are not four times what they
+  // need: the count changes nearly every frame while the camera or the
+  // lights move, and a texture sized to it was allocated again each time.
+  // Only the rows in use are uploaded.
   const int columns = texelsPerEntry * perRow;
   const int format = this->EntriesAreRows ? vtkFXRenderUtilities::RGBA32F : vtkFXRenderUtilities::R32F;
   int height = 1;
@@ -261,8 +262,9 @@ void vtkFXLightTiles::Upload(vtkOpenGLRenderWindow* window)
     height *= 2;
   }
   height = std::max(rows, std::min(height, this->MaximumTextureSize));
+  const int keptHeight = this->Entries ? static_cast<int>(this->Entries->GetHeight()) : 0;
   if (this->Entries && static_cast<int>(this->Entries->GetWidth()) == columns &&
-    static_cast<int>(this->Entries->GetHeight()) >= rows)
+    keptHeight >= rows && keptHeight <= 4 * rows)
   {
     height = static_cast<int>(this->Entries->GetHeight()); // (EnsureTexture checks the format)
   }

@@ -572,6 +572,7 @@ bool vtkFXPipelinePass::ReachesItself(size_t start, const std::vector<std::vecto
 
 void vtkFXPipelinePass::ActivateEffects(const std::vector<size_t>& order, vtkWindow* window)
 {
+  this->ReleasePendingEffects(window);
   std::vector<bool> active(this->Effects.size(), false);
   for (size_t i : order)
   {
@@ -1062,7 +1063,22 @@ void vtkFXPipelinePass::ReleaseEffect(vtkFXEffectPass* effect)
   {
     effect->ReleaseGraphicsResources(window);
   }
+  else
+  {
+    // (no context now, say a Qt window outside its paint: freed at the
+    // next frame, or with the pipeline's resources)
+    this->PendingReleases.push_back(effect);
+  }
   window->PopContext();
+}
+
+void vtkFXPipelinePass::ReleasePendingEffects(vtkWindow* window)
+{
+  for (vtkFXEffectPass* effect : this->PendingReleases)
+  {
+    effect->ReleaseGraphicsResources(window);
+  }
+  this->PendingReleases.clear();
 }
 
 void vtkFXPipelinePass::Release(vtkWindow* w, bool keepSharedEffects)
@@ -1086,6 +1102,7 @@ void vtkFXPipelinePass::Release(vtkWindow* w, bool keepSharedEffects)
       return;
     }
   }
+  this->ReleasePendingEffects(w);
   // The sequence only holds the passes of the last frame: release them all.
   this->CameraPass->ReleaseGraphicsResources(w);
   this->LightsPass->ReleaseGraphicsResources(w);

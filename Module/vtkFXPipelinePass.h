@@ -246,8 +246,11 @@ protected:
   // effects that another owner still holds keep theirs.
   void Release(vtkWindow* w, bool keepSharedEffects);
   // An effect leaving the pipeline (removed or replaced) frees its GL
-  // objects in the context of the window it last drew in.
+  // objects in the context of the window it last drew in, or, where that
+  // context cannot be made current now, at the next frame (or release).
   void ReleaseEffect(vtkFXEffectPass* effect);
+  void ReleasePendingEffects(vtkWindow* window);
+  std::vector<vtkSmartPointer<vtkFXEffectPass>> PendingReleases;
   // The references to `effect` this pipeline holds (its slots, its own
   // occlusion passes).
   int OwnReferences(vtkFXEffectPass* effect) const;

@@ -246,6 +246,23 @@ int CheckSmallTextures(vtkRenderWindow* window)
   }),
     "the entries' texture was allocated again for another count of entries");
   growing.ReleaseGraphicsResources(window);
+  // Rows of 16 entries (a 64-texel limit): 17 lights over 16 tiles take 17
+  // rows (32 allocated), 12 lights 12 rows (the 32 kept), 5 lights 5 rows
+  // (8: the 32 were four times too many).
+  growing.SetMaximumTextureSize(64);
+  std::vector<int> heights;
+  for (size_t lights : { 17, 12, 5 })
+  {
+    const std::vector<vtkFXLightTiles::Light> some(everywhere.begin(), everywhere.begin() + lights);
+    FX_CHECK(growing.Build(some, identity, 64, 64, nullptr, 12) && growing.GetEntriesPerRow() == 16,
+      "rows of 16 entries");
+    growing.Upload(glWindow);
+    heights.push_back(static_cast<int>(growing.GetEntryTexture()->GetHeight()));
+  }
+  std::cout << "entries' texture rows for 17, 12 and 5 lights, 16 entries to a row: " << heights[0]
+            << ", " << heights[1] << ", " << heights[2] << std::endl;
+  FX_CHECK(heights == std::vector<int>({ 32, 32, 8 }), "rows allocated");
+  growing.ReleaseGraphicsResources(window);
   return EXIT_SUCCESS;
 }
 

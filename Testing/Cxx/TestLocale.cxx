@@ -8,9 +8,10 @@
 // locale and under de_DE.UTF-8 (C and C++ both; made by localedef when the
 // tests are configured, found through LOCPATH) and requires the same bytes:
 // ambient occlusion (the composite's depth-aware upsample and the blur's
-// weights), directional occlusion, toon bands and lines, bloom, shadows of
-// translucent props, and 256 point lights (counts over 1000 in the light
-// lists' code).
+// weights), directional occlusion, toon bands and lines (which failed
+// without the locale-independent writing), and bloom, shadows of
+// translucent props and 256 point lights (whose code holds integers only
+// today; kept so that a float written into it later is caught).
 
 #include "vtkFXPipelinePass.h"
 #include "vtkFXRenderUtilities.h"
