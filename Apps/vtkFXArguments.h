@@ -30,6 +30,26 @@ inline bool ParseSize(const std::string& text, int& w, int& h)
   return true;
 }
 
+// The value after the option at argv[i], moving i to it: false, with i
+// unchanged, where there is none, it is empty, or it is the next option
+// ("--out --no-ground" wrote an image named --no-ground and drew the
+// ground).
+inline bool TakeValue(int argc, char* argv[], int& i, std::string& value)
+{
+  if (i + 1 >= argc)
+  {
+    return false;
+  }
+  const std::string next = argv[i + 1];
+  if (next.empty() || next.compare(0, 2, "--") == 0)
+  {
+    return false;
+  }
+  value = next;
+  ++i;
+  return true;
+}
+
 // A whole decimal number in [lo, hi], nothing after it.
 inline bool ParseInt(const std::string& text, int lo, int hi, int& value)
 {

@@ -201,13 +201,13 @@ int main(int argc, char* argv[])
     }
     else if (a == "--max-vtk-lights" || a == "--frames" || a == "--size" || a == "--out")
     {
-      if (i + 1 >= argc)
+      std::string v;
+      if (!vtkFXArguments::TakeValue(argc, argv, i, v))
       {
         std::cerr << "vtkfx-bench: " << a << " needs a value\n";
         return 2;
       }
-      const std::string v = argv[++i];
-      const bool ok = a == "--out" ? !v.empty()
+      const bool ok = a == "--out" ? true
         : a == "--max-vtk-lights" ? vtkFXArguments::ParseInt(v, 0, 1024, o.MaxVTKLights)
         : a == "--frames"         ? vtkFXArguments::ParseInt(v, 1, 100000, o.Frames)
                                   : vtkFXArguments::ParseSize(v, o.Width, o.Height);

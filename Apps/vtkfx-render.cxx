@@ -104,12 +104,11 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
   {
     const std::string a = argv[i];
     auto value = [&](std::string& out) {
-      if (i + 1 >= argc)
+      if (!vtkFXArguments::TakeValue(argc, argv, i, out))
       {
         error = a + " needs a value";
         return false;
       }
-      out = argv[++i];
       return true;
     };
     std::string v;
