@@ -21,9 +21,12 @@ struct vtkFXTimedSequencePass::Internals
   };
   struct Timing
   {
-    // Two timers per pass, used alternately, so that one frame's query can
-    // still be in flight while the next frame starts its own.
-    vtkOpenGLRenderTimer Timers[2];
+    // Timers per pass used in turn, so that the queries of frames the GPU
+    // has not finished yet stay in flight while later frames start their
+    // own (with two, a driver running two frames behind, with vsync or
+    // triple buffering, dropped every result and the times stayed -1).
+    static constexpr int TimersPerPass = 4;
+    vtkOpenGLRenderTimer Timers[TimersPerPass];
     int Next = 0;
     double LastMilliseconds = -1.0;
   };
@@ -64,7 +67,7 @@ struct vtkFXTimedSequencePass::Internals
   static void End(Timing& t)
   {
     t.Timers[t.Next].Stop();
-    t.Next = 1 - t.Next;
+    t.Next = (t.Next + 1) % Timing::TimersPerPass;
   }
 };
 
