@@ -231,7 +231,7 @@ std::string vtkFXCompositePass::EffectCode(int hook) const
 
 bool vtkFXCompositePass::UsesLightTexture(vtkOpenGLRenderer* ren) const
 {
-  return ren->GetLightingComplexity() >= 2 && ren->GetLightingCount() > this->MaximumUniformLights;
+  return this->LightingComplexity(ren) >= 2 && ren->GetLightingCount() > this->MaximumUniformLights;
 }
 
 int vtkFXCompositePass::LightingComplexity(vtkOpenGLRenderer* ren) const
@@ -305,7 +305,7 @@ std::string vtkFXCompositePass::BuildFragmentShader(vtkOpenGLRenderer* ren)
   // Effects' code may use the view-space position wherever depth exists.
   const bool needsPosition =
     complexity == 3 || (complexity == 2 && hasSpecular) || (anyHook && hasDepth);
-  const bool lightTexture = complexity >= 2 && this->UsesLightTexture(ren);
+  const bool lightTexture = this->UsesLightTexture(ren);
   const bool hasEmission = this->UseEmission && gb->GetChannelTexture(GB::Emission) != nullptr;
 
   vtkFXRenderUtilities::CodeStream defines;
@@ -555,18 +555,23 @@ double vtkFXCompositePass::GetMeanLightsPerTile() const
 void vtkFXCompositePass::SetUniforms(vtkShaderProgram* program, vtkOpenGLRenderer* ren)
 {
   vtkFXGBufferPass* gb = this->GBuffer;
-  const bool lightTexture = program->IsUniformUsed("fxLights");
-  if (lightTexture)
+  // (the path Render chose: a debug view's program leaves the light
+  // texture's uniforms out, and its textures are kept for the next frame
+  // all the same, where they were freed and made again every frame)
+  if (this->UsesLightTexture(ren))
   {
-    // (uploaded by Render, before the shader: its loops follow the tiles)
-    BindSampler(program, "fxLights", this->LightTexture);
-    program->SetUniformi("fxLightCount", this->UploadedLights);
-    program->SetUniformi("fxFirstPoint", this->FirstLightOfKind[0]);
-    program->SetUniformi("fxFirstSpot", this->FirstLightOfKind[1]);
-    if (this->LightTilesUsed)
+    if (program->IsUniformUsed("fxLights"))
     {
-      BindSampler(program, "fxLightTileHeaders", this->LightTiles->GetHeaderTexture());
-      BindSampler(program, "fxLightTileEntries", this->LightTiles->GetEntryTexture());
+      // (uploaded by Render, before the shader: its loops follow the tiles)
+      BindSampler(program, "fxLights", this->LightTexture);
+      program->SetUniformi("fxLightCount", this->UploadedLights);
+      program->SetUniformi("fxFirstPoint", this->FirstLightOfKind[0]);
+      program->SetUniformi("fxFirstSpot", this->FirstLightOfKind[1]);
+      if (this->LightTilesUsed)
+      {
+        BindSampler(program, "fxLightTileHeaders", this->LightTiles->GetHeaderTexture());
+        BindSampler(program, "fxLightTileEntries", this->LightTiles->GetEntryTexture());
+      }
     }
   }
   else
@@ -780,7 +785,7 @@ void vtkFXCompositePass::Render(const vtkRenderState* s)
   // entries (copies of rows, or indices) decides the shader's loops, and
   // measuring the tiles' depths draws with a program of its own.
   this->UploadedLights = 0;
-  if (this->LightingComplexity(ren) >= 2 && this->UsesLightTexture(ren))
+  if (this->UsesLightTexture(ren))
   {
     this->UploadedLights = this->UploadLightTexture(ren);
   }

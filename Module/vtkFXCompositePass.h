@@ -229,6 +229,13 @@ public:
    */
   double GetMeanLightsPerTile() const;
 
+  /**
+   * The lights' texture of the last frame on the light-texture path (more
+   * lights than VTK's uniforms serve), kept between frames; nullptr on
+   * VTK's uniforms.
+   */
+  vtkTextureObject* GetLightTexture() { return this->LightTexture; }
+
   ///@{
   /**
    * Effects whose composite code (vtkFXEffectPass::GetCompositeCode) runs

@@ -612,6 +612,22 @@ int TestManyLights()
     FX_CHECK(pipeline->GetLastSceneInfo().LightingComplexity == 3, "positional lighting");
     FX_CHECK(psnr >= 50.0 && diff <= 2, "matches VTK's forward render");
   }
+  // A debug view on the light-texture path: its program reads no light,
+  // and the lights' texture is kept from frame to frame (it was freed and
+  // made again every frame).
+  pipeline->GetCompositePass()->SetMaximumUniformLights(8);
+  pipeline->SetDebugChannel(vtkFXGBufferPass::Normal);
+  std::vector<vtkTextureObject*> kept;
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    window->Render();
+    kept.push_back(pipeline->GetCompositePass()->GetLightTexture());
+  }
+  std::cout << "20 lights, normal view: the lights' texture " << kept[0] << ", " << kept[1] << ", "
+            << kept[2] << std::endl;
+  FX_CHECK(kept[0] && kept[1] == kept[0] && kept[2] == kept[0],
+    "the lights' texture was not kept under a debug view");
+  pipeline->SetDebugChannel(-1);
   return EXIT_SUCCESS;
 }
 
