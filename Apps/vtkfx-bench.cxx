@@ -207,10 +207,10 @@ int main(int argc, char* argv[])
         std::cerr << "vtkfx-bench: " << a << " needs a value\n";
         return 2;
       }
-      const bool ok = a == "--out" ? true
-        : a == "--max-vtk-lights" ? vtkFXArguments::ParseInt(v, 0, 1024, o.MaxVTKLights)
+      const bool ok = a == "--out" ||
+        (a == "--max-vtk-lights" ? vtkFXArguments::ParseInt(v, 0, 1024, o.MaxVTKLights)
         : a == "--frames"         ? vtkFXArguments::ParseInt(v, 1, 100000, o.Frames)
-                                  : vtkFXArguments::ParseSize(v, o.Width, o.Height);
+                                  : vtkFXArguments::ParseSize(v, o.Width, o.Height));
       if (!ok)
       {
         std::cerr << "vtkfx-bench: bad " << a << " '" << v << "' ("

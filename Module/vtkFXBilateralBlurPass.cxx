@@ -17,7 +17,6 @@
 #include "vtkTextureObject.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
 
 vtkStandardNewMacro(vtkFXBilateralBlurPass);

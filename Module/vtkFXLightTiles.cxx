@@ -263,10 +263,10 @@ void vtkFXLightTiles::Upload(vtkOpenGLRenderWindow* window)
   }
   height = std::max(rows, std::min(height, this->MaximumTextureSize));
   const int keptHeight = this->Entries ? static_cast<int>(this->Entries->GetHeight()) : 0;
-  if (this->Entries && static_cast<int>(this->Entries->GetWidth()) == columns &&
-    keptHeight >= rows && keptHeight <= 4 * rows)
+  if (keptHeight >= rows && keptHeight <= 4 * rows &&
+    static_cast<int>(this->Entries->GetWidth()) == columns)
   {
-    height = static_cast<int>(this->Entries->GetHeight()); // (EnsureTexture checks the format)
+    height = keptHeight; // (EnsureTexture checks the format)
   }
   this->EntryData.resize(static_cast<size_t>(rows) * columns * (this->EntriesAreRows ? 4 : 1), 0.0f);
   vtkFXRenderUtilities::EnsureTexture(this->Entries, window, columns, height, format);

@@ -44,17 +44,25 @@ struct vtkFXTimedSequencePass::Internals
     return *slot;
   }
 
-  // Collects any finished measurement, then starts the next one.
-  static void Begin(Timing& t)
+  // Collects the finished measurements, oldest first (the ring from the
+  // next timer on), so that the newest is the one kept.
+  static void Harvest(Timing& t)
   {
-    for (auto& timer : t.Timers)
+    for (int k = 0; k < Timing::TimersPerPass; ++k)
     {
+      vtkOpenGLRenderTimer& timer = t.Timers[(t.Next + k) % Timing::TimersPerPass];
       if (timer.Started() && timer.Stopped() && timer.Ready())
       {
         t.LastMilliseconds = timer.GetElapsedMilliseconds();
         timer.Reset();
       }
     }
+  }
+
+  // Collects any finished measurement, then starts the next one.
+  static void Begin(Timing& t)
+  {
+    Harvest(t);
     vtkOpenGLRenderTimer& timer = t.Timers[t.Next];
     if (timer.Started())
     {
@@ -125,15 +133,8 @@ double vtkFXTimedSequencePass::GetPassMilliseconds(const char* name)
   {
     return -1.0;
   }
-  // Harvest results that completed since the last frame.
-  for (auto& timer : it->second->Timers)
-  {
-    if (timer.Started() && timer.Stopped() && timer.Ready())
-    {
-      it->second->LastMilliseconds = timer.GetElapsedMilliseconds();
-      timer.Reset();
-    }
-  }
+  // (results that completed since the last frame)
+  Internals::Harvest(*it->second);
   return it->second->LastMilliseconds;
 }
 

@@ -510,13 +510,9 @@ void vtkFXToonPass::DrawLines(const vtkRenderState*, vtkOpenGLRenderWindow* wind
   program->SetUniform2i("fxEdgeSize", size);
   program->SetUniformf(
     "fxHalfWidth", static_cast<float>(0.5 * this->GetEffectiveLineWidth(this->OutputRows)));
-  float color[3];
-  for (int i = 0; i < 3; ++i)
-  {
-    // NaN and negative colours would spread into the image: clamp them.
-    const double c = this->LineColor[i];
-    color[i] = static_cast<float>(c >= 0.0 ? std::min(c, 65504.0) : 0.0);
-  }
+  // (SetLineColor keeps it finite, within 0..65504)
+  const float color[3] = { static_cast<float>(this->LineColor[0]),
+    static_cast<float>(this->LineColor[1]), static_cast<float>(this->LineColor[2]) };
   program->SetUniform3f("fxLineColor", color);
   this->LineTilesCulled = vtkFXRenderUtilities::DrawTiles(
     this->LineTiles, program, window, viewport, size, this->TilesFlagged);

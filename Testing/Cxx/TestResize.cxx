@@ -5,7 +5,6 @@
 #include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
-#include "vtkFXSSAOPass.h"
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
 
@@ -16,6 +15,7 @@
 #include "vtkRendererCollection.h"
 
 #include <array>
+#include <functional>
 
 namespace
 {
@@ -152,6 +152,36 @@ int CheckReleaseFromAnotherWindow()
   return EXIT_SUCCESS;
 }
 
+// What `action` does to window 1's pipeline, with window 0's context
+// current, leaves window 0 alone: its context stays current, none of its
+// first 512 GL names changes, and its next frame is the same image without
+// a GL error or a warning. `what` names the action in the output.
+int CheckOtherWindowUntouched(TwoWindows& two, const std::function<void()>& action, const std::string& what)
+{
+  vtkRenderWindow* window = two.Windows[0];
+  const auto before = vtkFXScenes::Capture(window);
+  window->MakeCurrent();
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+  const std::vector<int> namesBefore = LiveNames();
+  action();
+  FX_CHECK(window->IsCurrent(), what << " left another window's context current");
+  const int lost = ChangedNames(namesBefore, LiveNames());
+  vtkFXTest::EventCounter warnings(two.Pipelines[0]->GetCompositePass(), vtkCommand::WarningEvent);
+  window->Render();
+  const GLenum glError = glGetError();
+  const int largest = vtkFXScenes::MaxDifference(before, vtkFXScenes::Capture(window));
+  std::cout << what << " while another window is current: " << lost
+            << " of the other window's first 512 names changed, its next frame " << largest
+            << " levels off its last, GL error " << glError << ", " << warnings.Count
+            << " warnings" << std::endl;
+  FX_CHECK(lost == 0, what << ": " << lost << " of the other window's GL names deleted");
+  FX_CHECK(glError == GL_NO_ERROR && warnings.Count == 0 && largest == 0,
+    what << " touched another window's resources");
+  return EXIT_SUCCESS;
+}
+
 // The same when the pipeline is deleted instead, without a release first
 // (an application replacing a renderer's pass, or dropping a view, while
 // another window is current): its destructor frees its GL objects in its
@@ -164,31 +194,9 @@ int CheckDeleteFromAnotherWindow()
 {
   TwoWindows two;
   FX_CHECK(MakeTwoWindows(two), "no scene");
-  vtkSmartPointer<vtkRenderWindow>* windows = two.Windows;
-  vtkSmartPointer<vtkRenderer>* renderers = two.Renderers;
-  const auto before = vtkFXScenes::Capture(windows[0]);
-  vtkFXPipelinePass* kept = two.Pipelines[0];
-  windows[0]->MakeCurrent();
-  while (glGetError() != GL_NO_ERROR)
-  {
-  }
-  const std::vector<int> namesBefore = LiveNames();
-  renderers[1]->SetPass(nullptr); // its last reference: deleted
-  FX_CHECK(windows[0]->IsCurrent(), "the deletion left another window's context current");
-  const int lost = ChangedNames(namesBefore, LiveNames());
-  std::cout << "a pipeline deleted while another window is current: " << lost
-            << " of the other window's first 512 names changed" << std::endl;
-  FX_CHECK(lost == 0, lost << " of the other window's GL names deleted");
-  vtkFXTest::EventCounter warnings(kept->GetCompositePass(), vtkCommand::WarningEvent);
-  windows[0]->Render();
-  const GLenum glError = glGetError();
-  const int largest = vtkFXScenes::MaxDifference(before, vtkFXScenes::Capture(windows[0]));
-  std::cout << "a pipeline deleted while another window is current: the other window's next "
-            << "frame " << largest << " levels off its last, GL error " << glError << ", "
-            << warnings.Count << " warnings" << std::endl;
-  FX_CHECK(glError == GL_NO_ERROR && warnings.Count == 0 && largest == 0,
-    "deleting one window's pipeline touched another window's resources");
-  return EXIT_SUCCESS;
+  // (its last reference: deleted)
+  return CheckOtherWindowUntouched(
+    two, [&two] { two.Renderers[1]->SetPass(nullptr); }, "a pipeline deleted");
 }
 
 // The same when an effect leaves a pipeline between frames while another
@@ -199,28 +207,8 @@ int CheckRemoveEffectFromAnotherWindow()
 {
   TwoWindows two;
   FX_CHECK(MakeTwoWindows(two), "no scene");
-  vtkSmartPointer<vtkRenderWindow>* windows = two.Windows;
-  const auto before = vtkFXScenes::Capture(windows[0]);
-  windows[0]->MakeCurrent();
-  while (glGetError() != GL_NO_ERROR)
-  {
-  }
-  const std::vector<int> namesBefore = LiveNames();
-  two.Pipelines[1]->AmbientOcclusionOff();
-  FX_CHECK(windows[0]->IsCurrent(), "the removal left another window's context current");
-  const int lost = ChangedNames(namesBefore, LiveNames());
-  vtkFXTest::EventCounter warnings(two.Pipelines[0]->GetCompositePass(), vtkCommand::WarningEvent);
-  windows[0]->Render();
-  const GLenum glError = glGetError();
-  const int largest = vtkFXScenes::MaxDifference(before, vtkFXScenes::Capture(windows[0]));
-  std::cout << "ambient occlusion removed from a pipeline while another window is current: "
-            << lost << " of the other window's first 512 names changed, its next frame "
-            << largest << " levels off its last, GL error " << glError << ", " << warnings.Count
-            << " warnings" << std::endl;
-  FX_CHECK(lost == 0, lost << " of the other window's GL names deleted");
-  FX_CHECK(glError == GL_NO_ERROR && warnings.Count == 0 && largest == 0,
-    "removing one window's effect touched another window's resources");
-  return EXIT_SUCCESS;
+  return CheckOtherWindowUntouched(two, [&two] { two.Pipelines[1]->AmbientOcclusionOff(); },
+    "ambient occlusion removed from a pipeline");
 }
 
 int TestResize(int, char*[])
