@@ -261,6 +261,25 @@ std::vector<Method> MakeMethods(int falloff)
   return methods;
 }
 
+// Says which visible props the reference could not trace: the scene's
+// figures leave them out, and the methods that draw them are compared
+// against a reference without them.
+void WarnSkippedProps(const vtkFXReferenceAO& reference, const std::string& input)
+{
+  const std::vector<std::string>& skipped = reference.GetSkippedProps();
+  if (skipped.empty())
+  {
+    return;
+  }
+  std::cerr << "\nvtkfx-bench: warning: the ray-traced reference of " << input << " leaves out "
+            << skipped.size() << " visible prop(s) it cannot trace:";
+  for (const std::string& name : skipped)
+  {
+    std::cerr << " " << name;
+  }
+  std::cerr << "; this scene's figures are measured without them\n";
+}
+
 // Ambient-only white materials: the image is the visibility term.
 void UseAmbientOnlyMaterials(vtkRenderer* renderer)
 {
@@ -570,6 +589,7 @@ void BenchBleeding(const Options& o, const std::string& input, double radius, in
     std::cerr << "vtkfx-bench: no bleeding to measure on " << input << " " << error << "\n";
     return;
   }
+  WarnSkippedProps(reference, input);
   const std::vector<float> truth =
     reference.TraceBleeding(runs[1].Renderer, o.Width, o.Height, radius, rays);
   const int tw = static_cast<int>(texture->GetWidth()), th = static_cast<int>(texture->GetHeight());
@@ -659,8 +679,8 @@ bool ReportCriteria(const std::vector<Method>& methods, const std::string& tag, 
   }
   out << std::fixed << tag << ": the default (" << fxDefault->Setting << ") against vtkSSAOPass\n"
       << std::setprecision(2) << "  PSNR " << fxDefault->PSNR << " dB, best vtkSSAOPass ("
-      << bestVTK->Setting << ") " << bestVTK->PSNR << " dB: " << std::showpos << margin
-      << std::noshowpos << " dB; +1 " << verdict(accurate) << ", +3 (aimed at) "
+      << bestVTK->Setting << ") " << bestVTK->PSNR << " dB: " << std::showpos
+      << std::setprecision(3) << margin << std::setprecision(2) << std::noshowpos << " dB; +1 " << verdict(accurate) << ", +3 (aimed at) "
       << verdict(margin >= 3.0) << "\n"
       << std::setprecision(3) << "  detail " << fxDefault->Detail << ", vtkSSAOPass "
       << vtk64Blur->Setting << " " << vtk64Blur->Detail << ": " << verdict(detailed) << "\n"
@@ -760,6 +780,7 @@ int BenchAO(const Options& o)
       std::cerr << "\nvtkfx-bench: " << error << "\n";
       return 1;
     }
+    WarnSkippedProps(reference, input);
     std::vector<float> shadingNormals;
     for (const auto& m : methods)
     {

@@ -6,12 +6,14 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkCompositePolyDataMapper2.h"
+#include "vtkDataArray.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMolecule.h"
 #include "vtkMoleculeMapper.h"
 #include "vtkNew.h"
 #include "vtkPeriodicTable.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -22,6 +24,8 @@
 #include "vtkTimerLog.h"
 #include "vtkTriangleFilter.h"
 #include "vtkUnsignedShortArray.h"
+#include "vtkVolume.h"
+#include "vtkVolumeCollection.h"
 
 #include <embree3/rtcore.h>
 
@@ -53,8 +57,10 @@ struct vtkFXReferenceAO::Internals
   }
 
   // Triangles of `poly` (any cells; strips and polygons are triangulated),
-  // transformed by `matrix` (world from model coordinates).
-  bool AddPolyData(vtkPolyData* poly, vtkMatrix4x4* matrix)
+  // transformed by `matrix` (world from model coordinates). With `smooth`
+  // (VTK interpolates the normals: Gouraud or Phong) and point normals, the
+  // triangles carry them, for the normal VTK shades and the G-buffer holds.
+  bool AddPolyData(vtkPolyData* poly, vtkMatrix4x4* matrix, bool smooth)
   {
     vtkNew<vtkTriangleFilter> triangles;
     triangles->SetInputData(poly);
@@ -98,7 +104,35 @@ struct vtkFXReferenceAO::Internals
         indices[3 * k + c] = static_cast<unsigned int>(n == 3 ? ids[c] : ids[0]);
       }
     }
-    this->Attach(geometry);
+    vtkDataArray* normals = smooth ? tri->GetPointData()->GetNormals() : nullptr;
+    if (normals && normals->GetNumberOfComponents() == 3)
+    {
+      // Normals transform by the inverse transpose of the matrix's linear part.
+      double linear[3][3], normalMatrix[3][3];
+      for (int r = 0; r < 3; ++r)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          linear[r][c] = matrix->GetElement(r, c);
+        }
+      }
+      vtkMath::Invert3x3(linear, normalMatrix);
+      vtkMath::Transpose3x3(normalMatrix, normalMatrix);
+      rtcSetGeometryVertexAttributeCount(geometry, 1);
+      float* out = static_cast<float*>(rtcSetNewGeometryBuffer(geometry,
+        RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), nPoints));
+      for (vtkIdType i = 0; i < nPoints; ++i)
+      {
+        double nm[3], w[3];
+        normals->GetTuple(i, nm);
+        vtkMath::Multiply3x3(normalMatrix, nm, w);
+        for (int c = 0; c < 3; ++c)
+        {
+          out[3 * i + c] = static_cast<float>(w[c]);
+        }
+      }
+    }
+    this->Attach(geometry, normals != nullptr && normals->GetNumberOfComponents() == 3);
     return true;
   }
 
@@ -183,7 +217,8 @@ struct vtkFXReferenceAO::Internals
     return true;
   }
 
-  void Attach(RTCGeometry geometry)
+  // (the scene keeps the geometry, and with it the handle kept here)
+  void Attach(RTCGeometry geometry, bool withNormals = false)
   {
     rtcCommitGeometry(geometry);
     const unsigned int id = rtcAttachGeometry(this->Scene, geometry);
@@ -191,13 +226,18 @@ struct vtkFXReferenceAO::Internals
     if (this->Albedo.size() <= id)
     {
       this->Albedo.resize(id + 1, { 0.0, 0.0, 0.0 });
+      this->Normals.resize(id + 1, nullptr);
     }
     this->Albedo[id] = this->CurrentAlbedo;
+    this->Normals[id] = withNormals ? geometry : nullptr;
   }
 
   // Per geometry: its actor's albedo (VTK's diffuse colour x Diffuse).
   std::array<double, 3> CurrentAlbedo = { 0.0, 0.0, 0.0 };
   std::vector<std::array<double, 3>> Albedo;
+  // Per geometry: itself where it carries point normals to interpolate,
+  // else null (the facet normal is the one VTK shades with).
+  std::vector<RTCGeometry> Normals;
 };
 
 vtkFXReferenceAO::vtkFXReferenceAO()
@@ -219,6 +259,7 @@ bool vtkFXReferenceAO::Build(vtkRenderer* renderer, std::string& error)
   this->Impl->Scene = rtcNewScene(this->Impl->Device);
   rtcSetSceneFlags(this->Impl->Scene, RTC_SCENE_FLAG_ROBUST);
   int added = 0;
+  this->Skipped.clear();
   vtkActorCollection* actors = renderer->GetActors();
   vtkCollectionSimpleIterator it;
   actors->InitTraversal(it);
@@ -228,8 +269,10 @@ bool vtkFXReferenceAO::Build(vtkRenderer* renderer, std::string& error)
     {
       continue;
     }
+    const int addedBefore = added;
     vtkNew<vtkMatrix4x4> matrix;
     actor->GetMatrix(matrix);
+    const bool smooth = actor->GetProperty()->GetInterpolation() != VTK_FLAT;
     double color[3];
     actor->GetProperty()->GetDiffuseColor(color);
     for (int c = 0; c < 3; ++c)
@@ -254,7 +297,7 @@ bool vtkFXReferenceAO::Build(vtkRenderer* renderer, std::string& error)
       {
         if (vtkPolyData* poly = vtkPolyData::SafeDownCast(leaves->GetCurrentDataObject()))
         {
-          added += this->Impl->AddPolyData(poly, matrix) ? 1 : 0;
+          added += this->Impl->AddPolyData(poly, matrix, smooth) ? 1 : 0;
         }
       }
     }
@@ -263,8 +306,21 @@ bool vtkFXReferenceAO::Build(vtkRenderer* renderer, std::string& error)
       mapper->Update();
       if (vtkPolyData* poly = mapper->GetInput())
       {
-        added += this->Impl->AddPolyData(poly, matrix) ? 1 : 0;
+        added += this->Impl->AddPolyData(poly, matrix, smooth) ? 1 : 0;
       }
+    }
+    if (added == addedBefore)
+    {
+      this->Skipped.push_back(actor->GetMapper()->GetClassName());
+    }
+  }
+  vtkVolumeCollection* volumes = renderer->GetVolumes();
+  volumes->InitTraversal(it);
+  while (vtkVolume* volume = volumes->GetNextVolume(it))
+  {
+    if (volume->GetVisibility())
+    {
+      this->Skipped.push_back(volume->GetClassName());
     }
   }
   rtcCommitScene(this->Impl->Scene);
@@ -309,8 +365,19 @@ double Hash(unsigned int a, unsigned int b)
   return (h & 0xffffffu) / 16777216.0;
 }
 
+// What a ray hit: its length, the facet's normal (unnormalised), and
+// where on which primitive of which geometry.
+struct Hit
+{
+  double T = 0.0;
+  double Normal[3] = { 0.0, 0.0, 0.0 };
+  unsigned int Geometry = RTC_INVALID_GEOMETRY_ID;
+  unsigned int Primitive = 0;
+  float U = 0.0f, V = 0.0f;
+};
+
 bool Intersect(RTCScene scene, const double o[3], const double d[3], double tnear, double tfar,
-  double& t, double normal[3], unsigned int* geometry = nullptr)
+  Hit& hit)
 {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -333,42 +400,80 @@ bool Intersect(RTCScene scene, const double o[3], const double d[3], double tnea
   {
     return false;
   }
-  t = rh.ray.tfar;
-  if (geometry)
+  hit.T = rh.ray.tfar;
+  hit.Geometry = rh.hit.geomID;
+  hit.Primitive = rh.hit.primID;
+  hit.U = rh.hit.u;
+  hit.V = rh.hit.v;
+  hit.Normal[0] = rh.hit.Ng_x;
+  hit.Normal[1] = rh.hit.Ng_y;
+  hit.Normal[2] = rh.hit.Ng_z;
+  return true;
+}
+
+// Turns unit vector v to the side of unit vector reference.
+void TurnTo(const double reference[3], double v[3])
+{
+  if (vtkMath::Dot(v, reference) < 0.0)
   {
-    *geometry = rh.hit.geomID;
+    v[0] = -v[0], v[1] = -v[1], v[2] = -v[2];
   }
-  normal[0] = rh.hit.Ng_x;
-  normal[1] = rh.hit.Ng_y;
-  normal[2] = rh.hit.Ng_z;
+}
+
+// The normals of a hit, on the side that ray direction d sees: the facet's,
+// and the one VTK shades with there, the geometry's point normals
+// interpolated where it carries them (VTK turns a back face's normal to
+// the viewer), else the facet's. Returns false for a degenerate facet.
+bool SeenNormals(const std::vector<RTCGeometry>& normals, const Hit& hit, const double d[3],
+  double facet[3], double shading[3])
+{
+  std::copy(hit.Normal, hit.Normal + 3, facet);
+  if (vtkMath::Normalize(facet) == 0.0)
+  {
+    return false;
+  }
+  const double towardsRay[3] = { -d[0], -d[1], -d[2] };
+  TurnTo(towardsRay, facet);
+  std::copy(facet, facet + 3, shading);
+  if (hit.Geometry < normals.size() && normals[hit.Geometry])
+  {
+    float n[3];
+    rtcInterpolate0(normals[hit.Geometry], hit.Primitive, hit.U, hit.V,
+      RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, 0, n, 3);
+    double s[3] = { n[0], n[1], n[2] };
+    if (vtkMath::Normalize(s) > 0.0 && std::isfinite(s[0] + s[1] + s[2]))
+    {
+      TurnTo(facet, s);
+      std::copy(s, s + 3, shading);
+    }
+  }
   return true;
 }
 
 // The surface a pixel shows, as every traced pixel starts from it: point,
-// geometric normal faced towards the viewer, the primary ray's length, and
-// the point its rays leave from.
+// geometric (facet) normal faced towards the viewer, the normal VTK shades
+// it with (SeenNormals), the primary ray's length, and the point its rays
+// leave from.
 struct VisibleSurface
 {
   double Point[3];
   double Normal[3];
+  double Shading[3];
   double Distance;
   double Start[3];
 };
 
-bool FindVisibleSurface(RTCScene scene, vtkMatrix4x4* inverse, int x, int y, int width,
-  int height, double radius, VisibleSurface& v)
+bool FindVisibleSurface(RTCScene scene, const std::vector<RTCGeometry>& normals,
+  vtkMatrix4x4* inverse, int x, int y, int width, int height, double radius, VisibleSurface& v)
 {
   double o[3], d[3];
   vtkFXReferenceAO::PixelRay(inverse, x, y, width, height, o, d);
-  if (!Intersect(scene, o, d, 0.0, 1e30, v.Distance, v.Normal) ||
-    vtkMath::Normalize(v.Normal) == 0.0)
+  Hit hit;
+  if (!Intersect(scene, o, d, 0.0, 1e30, hit) || !SeenNormals(normals, hit, d, v.Normal, v.Shading))
   {
     return false;
   }
-  if (vtkMath::Dot(v.Normal, d) > 0.0)
-  {
-    v.Normal[0] = -v.Normal[0], v.Normal[1] = -v.Normal[1], v.Normal[2] = -v.Normal[2];
-  }
+  v.Distance = hit.T;
   for (int c = 0; c < 3; ++c)
   {
     v.Point[c] = o[c] + v.Distance * d[c];
@@ -482,27 +587,31 @@ vtkFXReferenceAO::Result vtkFXReferenceAO::Trace(
   const int rays = side * side;
   std::vector<double> variance(result.Occlusion.size(), 0.0);
   RTCScene scene = this->Impl->Scene;
+  const std::vector<RTCGeometry>& normals = this->Impl->Normals;
   ForEachRow(height, threads, [&](int y) {
     for (int x = 0; x < width; ++x)
     {
       VisibleSurface v;
-      if (!FindVisibleSurface(scene, inverse, x, y, width, height, radius, v))
+      if (!FindVisibleSurface(scene, normals, inverse, x, y, width, height, radius, v))
       {
         continue;
       }
       const double* n = v.Normal;
       const unsigned int pixel = static_cast<unsigned int>(y * width + x);
       // The lobe's axis: the shading normal when given (turned to the
-      // geometric normal's side), else the geometric normal.
-      double axis[3] = { n[0], n[1], n[2] };
+      // geometric normal's side), else the normal the mesh is shaded with
+      // (its interpolated point normals, as the G-buffer's geometric
+      // normal; the facet's where it has none). Rays below the facet are
+      // left out of both sums: an open surface is 1 whatever its normals.
+      double axis[3] = { v.Shading[0], v.Shading[1], v.Shading[2] };
       if (shadingNormals && shadingNormals->size() >= 3 * (static_cast<size_t>(pixel) + 1))
       {
         double s[3] = { (*shadingNormals)[3 * pixel], (*shadingNormals)[3 * pixel + 1],
           (*shadingNormals)[3 * pixel + 2] };
         if (vtkMath::Normalize(s) > 0.0 && std::isfinite(s[0] + s[1] + s[2]))
         {
-          const double facing = vtkMath::Dot(s, n) < 0.0 ? -1.0 : 1.0;
-          axis[0] = facing * s[0], axis[1] = facing * s[1], axis[2] = facing * s[2];
+          TurnTo(n, s);
+          std::copy(s, s + 3, axis);
         }
       }
       const CosineLobe lobe(axis, side, pixel);
@@ -517,12 +626,12 @@ vtkFXReferenceAO::Result vtkFXReferenceAO::Trace(
           continue; // into the surface: outside the geometric hemisphere
         }
         ++counted;
-        double hitT, hitN[3];
+        Hit hit;
         double f = 0.0;
-        if (Intersect(scene, v.Start, w, 0.0, radius, hitT, hitN))
+        if (Intersect(scene, v.Start, w, 0.0, radius, hit))
         {
           f = falloff == Binary ? 1.0
-                                : 1.0 - std::cbrt(std::min(1.0, std::max(0.0, hitT / radius)));
+                                : 1.0 - std::cbrt(std::min(1.0, std::max(0.0, hit.T / radius)));
         }
         sum += f;
         sum2 += f * f;
@@ -647,43 +756,47 @@ std::vector<float> vtkFXReferenceAO::TraceBleeding(
   const int rays = side * side;
   RTCScene scene = this->Impl->Scene;
   const auto& albedo = this->Impl->Albedo;
+  const std::vector<RTCGeometry>& normals = this->Impl->Normals;
   ForEachRow(height, threads, [&](int y) {
     for (int x = 0; x < width; ++x)
     {
       VisibleSurface v;
-      if (!FindVisibleSurface(scene, inverse, x, y, width, height, radius, v))
+      if (!FindVisibleSurface(scene, normals, inverse, x, y, width, height, radius, v))
       {
         continue;
       }
       const unsigned int pixel = static_cast<unsigned int>(y * width + x);
-      const CosineLobe lobe(v.Normal, side, pixel);
+      const CosineLobe lobe(v.Shading, side, pixel);
       double sum[3] = { 0.0, 0.0, 0.0 };
+      int counted = 0; // (rays above the facet, as Trace counts them)
       for (int s = 0; s < rays; ++s)
       {
-        double w[3], hitT, hitN[3];
+        double w[3];
         lobe.Direction(s, w);
-        unsigned int geometry = 0;
-        if (!Intersect(scene, v.Start, w, 0.0, radius, hitT, hitN, &geometry) ||
-          vtkMath::Normalize(hitN) == 0.0 || geometry >= albedo.size())
+        if (vtkMath::Dot(w, v.Normal) <= 0.0)
         {
           continue;
         }
-        if (vtkMath::Dot(hitN, w) > 0.0)
+        ++counted;
+        Hit hit;
+        double facet[3], shading[3];
+        if (!Intersect(scene, v.Start, w, 0.0, radius, hit) || hit.Geometry >= albedo.size() ||
+          !SeenNormals(normals, hit, w, facet, shading))
         {
-          hitN[0] = -hitN[0], hitN[1] = -hitN[1], hitN[2] = -hitN[2]; // the side we see
+          continue;
         }
-        const double hit[3] = { v.Start[0] + hitT * w[0], v.Start[1] + hitT * w[1],
-          v.Start[2] + hitT * w[2] };
+        const double at[3] = { v.Start[0] + hit.T * w[0], v.Start[1] + hit.T * w[1],
+          v.Start[2] + hit.T * w[2] };
         double light[3];
-        DirectLight(lights, hit, hitN, light);
+        DirectLight(lights, at, shading, light);
         for (int c = 0; c < 3; ++c)
         {
-          sum[c] += albedo[geometry][c] * light[c];
+          sum[c] += albedo[hit.Geometry][c] * light[c];
         }
       }
       for (int c = 0; c < 3; ++c)
       {
-        result[3 * pixel + c] = static_cast<float>(sum[c] / rays);
+        result[3 * pixel + c] = static_cast<float>(sum[c] / std::max(1, counted));
       }
     }
   });

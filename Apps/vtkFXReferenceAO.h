@@ -44,13 +44,21 @@ public:
    */
   bool Build(vtkRenderer* renderer, std::string& error);
 
+  /**
+   * The visible props the last Build could not trace (their mapper's or
+   * their own class name; e.g. glyph and point-sprite mappers, volumes):
+   * figures measured against the reference leave them out.
+   */
+  const std::vector<std::string>& GetSkippedProps() const { return this->Skipped; }
+
   struct Result
   {
     int Width = 0;
     int Height = 0;
     std::vector<float> Occlusion;     // 1 = open, -1 = no surface; rows bottom-up
-    // Per pixel, sqrt(sample variance / rays): the standard error of an
-    // unstratified mean, an upper bound for the stratified one traced here.
+    // Per pixel, sqrt(variance of the rays' values / rays counted): the
+    // standard error of an unstratified mean, an upper bound for the
+    // stratified one traced here.
     std::vector<float> StandardError;
     double StandardErrorRMS = 0.0;    // RMS over covered pixels of StandardError
     int CoveredPixels = 0;
@@ -97,6 +105,7 @@ public:
     int raysPerPixel, int threads = 2) const;
 
 private:
+  std::vector<std::string> Skipped;
   struct Internals;
   std::unique_ptr<Internals> Impl;
 };

@@ -124,7 +124,7 @@ public:
    * Estimator (default Horizon). Measured with vtkfx-bench ao (640x480, half
    * resolution, blur radius 4, against the ray-traced reference of the same
    * falloff; see vtkFXPipelinePass::SetAmbientOcclusionQuality):
-   * - Binary: Horizon with 16 fetches is 2.3 to 4.3 dB ahead of the best
+   * - Binary: Horizon with 16 fetches is 2.3 to 4.6 dB ahead of the best
    *   vtkSSAOPass setting on the four bench scenes (README); Hemisphere
    *   with 8 (samples at distance R) is more accurate on scene:corner, but
    *   behind Horizon on the other three.

@@ -26,10 +26,13 @@
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
 #include "vtkCamera.h"
+#include "vtkFloatArray.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 
@@ -129,6 +132,43 @@ vtkSmartPointer<vtkMatrix4x4> InversePixelProjection(vtkRenderer* renderer, int 
   return inverse;
 }
 
+// The floor's pixels within R of the wall in `result` against
+// closedForm(h, R, falloff), within 4 standard errors plus 3e-3. Returns
+// the pixels compared, or -1 where one differs.
+template <typename ClosedForm>
+int CompareFloorNearWall(vtkRenderer* renderer, const vtkFXReferenceAO::Result& result, int w,
+  int h, double R, int falloff, ClosedForm closedForm, const std::string& what)
+{
+  auto inverse = InversePixelProjection(renderer, w, h);
+  double worst = 0.0;
+  int checked = 0;
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      const double distance = FloorDistance(inverse, x, y, w, h);
+      if (distance < 0.0 || distance > R)
+      {
+        continue;
+      }
+      const size_t i = static_cast<size_t>(y) * w + x;
+      const double expected = closedForm(distance, R, falloff);
+      worst = std::max(worst, std::fabs(result.Occlusion[i] - expected));
+      if (!(std::fabs(result.Occlusion[i] - expected) <= 4.0 * result.StandardError[i] + 3e-3))
+      {
+        std::cerr << what << ", pixel (" << x << "," << y << ") at h = " << distance
+                  << ": traced " << result.Occlusion[i] << ", closed form " << expected
+                  << std::endl;
+        return -1;
+      }
+      ++checked;
+    }
+  }
+  std::cout << vtkFXTest::FalloffName(falloff) << ", " << what << ": " << checked
+            << " floor pixels, worst difference " << worst << std::endl;
+  return checked;
+}
+
 // Directional occlusion: the floor's pixels within R of the wall against
 // TiltedCreaseOcclusion, for a shading normal tilted 40 degrees towards
 // the wall and away from it (both falloffs), within 4 standard errors plus
@@ -136,7 +176,6 @@ vtkSmartPointer<vtkMatrix4x4> InversePixelProjection(vtkRenderer* renderer, int 
 int CheckShadingNormals(
   vtkRenderer* renderer, const vtkFXReferenceAO& reference, int w, int h, double R)
 {
-  auto inverse = InversePixelProjection(renderer, w, h);
   for (int falloff : { vtkFXReferenceAO::Binary, vtkFXReferenceAO::CubeRoot })
   {
     for (double degrees : { 40.0, -40.0 })
@@ -150,31 +189,10 @@ int CheckShadingNormals(
           { static_cast<float>(std::sin(tilt)), 0.0f, static_cast<float>(std::cos(tilt)) });
       }
       const auto result = reference.Trace(renderer, w, h, R, 1024, falloff, 2, &normals);
-      double worst = 0.0;
-      int checked = 0;
-      for (int y = 0; y < h; ++y)
-      {
-        for (int x = 0; x < w; ++x)
-        {
-          const double distance = FloorDistance(inverse, x, y, w, h);
-          if (distance < 0.0 || distance > R)
-          {
-            continue;
-          }
-          const size_t i = static_cast<size_t>(y) * w + x;
-          const double expected = closedForm(distance, R, falloff);
-          worst = std::max(worst, std::fabs(result.Occlusion[i] - expected));
-          FX_CHECK(std::fabs(result.Occlusion[i] - expected) <= 4.0 * result.StandardError[i] + 3e-3,
-            "shading normal tilted " << degrees << " degrees, pixel (" << x << "," << y
-                                     << ") at h = " << distance << ": traced "
-                                     << result.Occlusion[i] << ", closed form " << expected);
-          ++checked;
-        }
-      }
-      std::cout << vtkFXTest::FalloffName(falloff) << ", shading normal tilted " << degrees
-                << " degrees " << (degrees > 0 ? "towards" : "away from") << " the wall: "
-                << checked << " floor pixels, worst difference " << worst << std::endl;
-      FX_CHECK(checked > 50, "floor pixels near the wall in view");
+      const int checked = CompareFloorNearWall(renderer, result, w, h, R, falloff, closedForm,
+        std::string("shading normal tilted ") + (degrees > 0 ? "towards" : "away from") +
+          " the wall");
+      FX_CHECK(checked > 50, "floor pixels near the wall in view, each as the closed form says");
     }
     const double toward = TiltedCrease(vtkMath::RadiansFromDegrees(40.0))(0.3 * R, R, falloff);
     const double away = TiltedCrease(vtkMath::RadiansFromDegrees(-40.0))(0.3 * R, R, falloff);
@@ -185,6 +203,52 @@ int CheckShadingNormals(
     FX_CHECK(away - toward > 0.1, "the tilts must differ: " << toward << " and " << away);
   }
   return EXIT_SUCCESS;
+}
+
+// The normal a mesh is shaded with: the floor's point normals tilted 40
+// degrees towards the wall. With VTK's default (Gouraud) interpolation the
+// reference's lobe follows them, as the G-buffer's normal does: the tilted
+// closed form, with no shading normals passed. With flat interpolation
+// VTK shades the facet's normal: the crease's own closed form.
+int CheckPointNormals(vtkRenderer* renderer, vtkActor* floor, int w, int h, double R)
+{
+  const double tilt = vtkMath::RadiansFromDegrees(40.0);
+  vtkPolyDataMapper* mapper = vtkPolyDataMapper::SafeDownCast(floor->GetMapper());
+  mapper->Update();
+  vtkNew<vtkPolyData> tilted;
+  tilted->DeepCopy(mapper->GetInput());
+  vtkNew<vtkFloatArray> normals;
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(tilted->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < tilted->GetNumberOfPoints(); ++i)
+  {
+    normals->SetTuple3(i, std::sin(tilt), 0.0, std::cos(tilt));
+  }
+  tilted->GetPointData()->SetNormals(normals);
+  vtkNew<vtkPolyDataMapper> tiltedMapper;
+  tiltedMapper->SetInputData(tilted);
+  vtkSmartPointer<vtkMapper> original = floor->GetMapper();
+  floor->SetMapper(tiltedMapper);
+  int status = EXIT_SUCCESS;
+  for (int interpolation : { VTK_GOURAUD, VTK_FLAT })
+  {
+    floor->GetProperty()->SetInterpolation(interpolation);
+    vtkFXReferenceAO reference;
+    std::string error;
+    FX_CHECK(reference.Build(renderer, error), error);
+    const int falloff = vtkFXReferenceAO::Binary;
+    const auto result = reference.Trace(renderer, w, h, R, 1024, falloff);
+    const int checked = interpolation == VTK_GOURAUD
+      ? CompareFloorNearWall(renderer, result, w, h, R, falloff, TiltedCrease(tilt),
+          "point normals tilted towards the wall")
+      : CompareFloorNearWall(renderer, result, w, h, R, falloff,
+          [](double d, double radius, int f) { return vtkFXTest::CreaseOcclusion(d, radius, f); },
+          "the same, shaded flat");
+    status = checked > 50 ? status : EXIT_FAILURE;
+  }
+  floor->SetMapper(original);
+  floor->GetProperty()->SetInterpolationToGouraud();
+  return status;
 }
 
 // One bounce: the wall coloured (1, 0.5, 0.25) with Diffuse 0.8, lit by a
@@ -250,7 +314,8 @@ int TestReferenceAO(int, char*[])
   const double R = 1.0;
   vtkNew<vtkRenderer> renderer;
   // Floor z = 0 for x < 0; wall x = 0 rising along z; both far larger than R.
-  renderer->AddActor(Plane(-20, -20, 0, 0, -20, 0, -20, 20, 0));
+  auto floor = Plane(-20, -20, 0, 0, -20, 0, -20, 20, 0);
+  renderer->AddActor(floor);
   renderer->AddActor(Plane(0, -20, 0, 0, 20, 0, 0, -20, 20));
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetFocalPoint(-1.5, 0, 0);
@@ -314,5 +379,7 @@ int TestReferenceAO(int, char*[])
   FX_CHECK(CheckShadingNormals(renderer, reference, w, h, R) == EXIT_SUCCESS,
     "directional occlusion's reference");
   FX_CHECK(CheckBleeding(renderer, w, h, R) == EXIT_SUCCESS, "bleeding's reference");
+  FX_CHECK(CheckPointNormals(renderer, floor, w, h, R) == EXIT_SUCCESS,
+    "the lobe around the normal the mesh is shaded with");
   return EXIT_SUCCESS;
 }
