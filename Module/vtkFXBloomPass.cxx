@@ -1,6 +1,7 @@
 #include "vtkFXBloomPass.h"
 
 #include "vtkFXBloomDownsampleFS.h"
+#include "vtkFXBloomMirror.h"
 #include "vtkFXBloomPrefilterFS.h"
 #include "vtkFXBloomUpsampleFS.h"
 #include "vtkFXGBufferPass.h"
@@ -231,6 +232,21 @@ void vtkFXBloomPass::LevelRect(int k, int rect[4]) const
   }
 }
 
+void vtkFXBloomPass::SetLevelExtent(vtkShaderProgram* program, const char* name, int k) const
+{
+  const float scale = 1.0f / static_cast<float>(1 << (k + 1));
+  const float extent[2] = { this->FullSize[0] * scale, this->FullSize[1] * scale };
+  program->SetUniform2f(name, extent);
+}
+
+std::string vtkFXBloomPass::WithMirror(const char* shader, const std::string& defines)
+{
+  std::string fs = shader;
+  vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", "//VTK::System::Dec\n" + defines, false);
+  vtkShaderProgram::Substitute(fs, "//VTK::FXBloomMirror::Dec", vtkFXBloomMirror, false);
+  return fs;
+}
+
 vtkTextureObject* vtkFXBloomPass::GetGlowTexture()
 {
   // What AddGlow reads: with one level, its own share is the whole glow.
@@ -342,6 +358,8 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
   vtkTextureObject* full = prefiltered ? this->Prefiltered.GetPointer() : emission;
   int width = static_cast<int>(full->GetWidth());
   int height = static_cast<int>(full->GetHeight());
+  this->FullSize[0] = width;
+  this->FullSize[1] = height;
   for (int k = 0; k < levels; ++k)
   {
     const int sourceSize[2] = { width, height };
@@ -352,14 +370,12 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
       level.Down, window, width, height, vtkFXRenderUtilities::RGBA16F);
     SetFilterAndMirror(level.Down);
 
-    std::string fs = vtkFXBloomDownsampleFS;
     const bool first = k == 0;
     const bool readsEmission = first && !prefiltered;
-    vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
-      std::string("//VTK::System::Dec\n#define FX_FIRST ") + (readsEmission ? "1" : "0") +
-        "\n#define FX_BOX " + (first ? "1" : "0") + "\n#define FX_KARIS " +
-        (first && this->FireflySuppression ? "1" : "0") + "\n",
-      false);
+    const std::string fs = WithMirror(vtkFXBloomDownsampleFS,
+      std::string("#define FX_FIRST ") + (readsEmission ? "1" : "0") + "\n#define FX_BOX " +
+        (first ? "1" : "0") + "\n#define FX_KARIS " +
+        (first && this->FireflySuppression ? "1" : "0") + "\n");
     vtkFXRenderUtilities::RenderTargetScope target(window, level.DownTarget, level.Down);
     // (a level that cannot be drawn, say for want of memory: no glow this
     // frame rather than the undefined contents of an unwritten level; and
@@ -378,6 +394,7 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
     }
     const float texel[2] = { 1.0f / sourceSize[0], 1.0f / sourceSize[1] };
     program->SetUniform2f("fxSourceTexel", texel);
+    this->SetLevelExtent(program, "fxSourceExtent", k - 1);
     vtkTextureObject* source = readsEmission ? emission
       : first                                ? this->Prefiltered.GetPointer()
                                              : this->Levels[k - 1]->Down.GetPointer();
@@ -411,9 +428,7 @@ bool vtkFXBloomPass::Upsample(vtkOpenGLRenderWindow* window, int levels)
     vtkFXRenderUtilities::EnsureTexture(level.Up, window, static_cast<int>(level.Down->GetWidth()),
       static_cast<int>(level.Down->GetHeight()), vtkFXRenderUtilities::RGBA16F);
     SetFilterAndMirror(level.Up);
-    std::string fs = vtkFXBloomUpsampleFS;
-    vtkShaderProgram::Substitute(
-      fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define FX_FINAL 0\n", false);
+    const std::string fs = WithMirror(vtkFXBloomUpsampleFS, "#define FX_FINAL 0\n");
     vtkFXRenderUtilities::RenderTargetScope target(window, level.UpTarget, level.Up);
     if (!target.IsComplete())
     {
@@ -433,6 +448,7 @@ bool vtkFXBloomPass::Upsample(vtkOpenGLRenderWindow* window, int levels)
     program->SetUniformi("fxLevel", level.Down->GetTextureUnit());
     const float texel[2] = { 1.0f / coarse->GetWidth(), 1.0f / coarse->GetHeight() };
     program->SetUniform2f("fxCoarseTexel", texel);
+    this->SetLevelExtent(program, "fxCoarseExtent", k + 1);
     program->SetUniformf("fxCoarseScale", coarsest ? share : 1.0f);
     const int origin[2] = { 0, 0 };
     program->SetUniform2i("fxOrigin", origin);
@@ -451,9 +467,7 @@ void vtkFXBloomPass::AddGlow(vtkOpenGLRenderWindow* window)
   {
     return;
   }
-  std::string fs = vtkFXBloomUpsampleFS;
-  vtkShaderProgram::Substitute(
-    fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define FX_FINAL 1\n", false);
+  const std::string fs = WithMirror(vtkFXBloomUpsampleFS, "#define FX_FINAL 1\n");
   vtkShaderProgram* program = this->ReadyProgram(Final, window, fs);
   if (!program)
   {
@@ -471,6 +485,7 @@ void vtkFXBloomPass::AddGlow(vtkOpenGLRenderWindow* window)
   program->SetUniformi("fxCoarse", glow->GetTextureUnit());
   const float texel[2] = { 1.0f / glow->GetWidth(), 1.0f / glow->GetHeight() };
   program->SetUniform2f("fxCoarseTexel", texel);
+  this->SetLevelExtent(program, "fxCoarseExtent", 0); // (the glow: level 0's Up, or its Down)
   program->SetUniformf("fxCoarseScale", 1.0f);
   program->SetUniform2i("fxOrigin", viewport);
   program->SetUniformf("fxIntensity", static_cast<float>(this->Intensity));

@@ -15,9 +15,13 @@
  * source (the emission plus the light above the threshold), with
  * FireflySuppression off (it deliberately takes energy from isolated
  * bright pixels). Each level's texel covers exactly 2 x 2 of the level
- * above, at odd sizes too, and the filters read the levels mirrored past
- * the image's borders, so light near a border or an odd edge weighs what
- * it weighs elsewhere (TestBloom: within 0.3%).
+ * above, at odd sizes too, and the filters read the levels mirrored at
+ * the image's own edges (not the levels' texture edges, which lie up to
+ * half a texel past it at odd sizes), so light near a border weighs about
+ * what it weighs elsewhere (TestBloom: inside the image within 0.3%; at
+ * the bottom and left edges 0.3%; at the top and right edges of odd sizes,
+ * where the pyramid's texels straddle the edge, up to 1.4%, and 3% in the
+ * corner where both are odd).
  *
  * The glow reaches about Radius x the height the renderer covers in the
  * image (its viewport's, or in a scaled screenshot, which
@@ -203,6 +207,7 @@ protected:
   vtkShaderProgram* ReadyProgram(int which, vtkOpenGLRenderWindow* window, const std::string& fs);
   void ComputeGlowRect(vtkRenderer* ren, int width, int height, int levels);
   void LevelRect(int k, int rect[4]) const;
+  static std::string WithMirror(const char* shader, const std::string& defines);
 
   double Intensity = 0.5;
   double Radius = 0.05;
@@ -224,6 +229,11 @@ protected:
   // pyramid and the final add draw there only.
   double EmissiveBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
   int GlowRect[4] = { 0, 0, 0, 0 };
+  // The full-resolution image the pyramid is built from, in pixels; and
+  // sets uniform `name` to its extent in the texels of level k (-1: full
+  // resolution), where the filters mirror (vtkFXBloomMirror.glsl).
+  int FullSize[2] = { 1, 1 };
+  void SetLevelExtent(vtkShaderProgram* program, const char* name, int k) const;
   unsigned int LinearSampler = 0; // GL sampler for reading the G-buffer's emission bilinearly
   vtkWeakPointer<vtkOpenGLRenderWindow> SamplerWindow; // whose context made it
   void ReleaseSampler();

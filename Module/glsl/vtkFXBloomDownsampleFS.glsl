@@ -25,6 +25,9 @@ in vec2 texCoord;
 uniform sampler2D fxSource;    // the level above (not FX_FIRST)
 uniform sampler2D fxEmission;  // FX_FIRST
 uniform vec2 fxSourceTexel;    // 1 / size of what is read
+uniform vec2 fxSourceExtent;   // the image's extent in what is read, in its texels
+
+//VTK::FXBloomMirror::Dec
 
 //VTK::Output::Dec
 
@@ -40,7 +43,7 @@ ivec2 fxCentreCorner()
 // Tap o: texel offsets from -2 to 2 around the centre corner.
 vec3 fxTap(ivec2 o)
 {
-  vec2 uv = fxSourceTexel * vec2(fxCentreCorner() + o);
+  vec2 uv = fxSourceTexel * fxMirrorInside(vec2(fxCentreCorner() + o), fxSourceExtent);
 #if FX_FIRST
   return texture(fxEmission, uv).rgb;
 #else

@@ -22,12 +22,21 @@ in vec2 texCoord;
 uniform sampler2D fxCoarse;   // up_k+1 (or the last down level)
 uniform sampler2D fxLevel;    // down_k (not FX_FINAL)
 uniform vec2 fxCoarseTexel;   // 1 / size of fxCoarse
+uniform vec2 fxCoarseExtent;  // the image's extent in fxCoarse, in its texels
 uniform float fxCoarseScale;  // factor on fxCoarse (w_N when it is the last down level)
 uniform float fxShare;        // w_k
 uniform float fxIntensity;    // FX_FINAL
 uniform ivec2 fxOrigin;       // the target's corner in the framebuffer
 
 //VTK::Output::Dec
+
+//VTK::FXBloomMirror::Dec
+
+// fxCoarse at `at` coarse texels, mirrored at the image's edges.
+vec3 fxCoarseAt(vec2 at)
+{
+  return texture(fxCoarse, fxCoarseTexel * fxMirrorInside(at, fxCoarseExtent)).rgb;
+}
 
 void main()
 {
@@ -38,17 +47,16 @@ void main()
   // This texel's centre at exactly half its position in the coarse level
   // (the inverse of the step down's mapping, also for odd sizes).
   vec2 fine = gl_FragCoord.xy - vec2(fxOrigin);
-  vec2 uv = 0.5 * fine * fxCoarseTexel;
-  vec2 t = 0.5 * fxCoarseTexel;
+  vec2 at = 0.5 * fine;
 #if FX_FINAL
   // (the glow term at most the largest half float: an intensity of 100 on
   // a source of 65504 gives 6.5e6, which a driver may store as +inf. The
   // sum with what the target holds can still overflow where that is near
   // 65504 itself; the write-back turns +inf into white.)
-  gl_FragData[0] = vec4(min(fxIntensity * fxCoarseScale * texture(fxCoarse, uv).rgb, vec3(65504.0)), 0.0);
+  gl_FragData[0] = vec4(min(fxIntensity * fxCoarseScale * fxCoarseAt(at), vec3(65504.0)), 0.0);
 #else
-  vec3 tent = texture(fxCoarse, uv + t).rgb + texture(fxCoarse, uv - t).rgb +
-    texture(fxCoarse, uv + vec2(t.x, -t.y)).rgb + texture(fxCoarse, uv + vec2(-t.x, t.y)).rgb;
+  vec3 tent = fxCoarseAt(at + vec2(0.5, 0.5)) + fxCoarseAt(at - vec2(0.5, 0.5)) +
+    fxCoarseAt(at + vec2(0.5, -0.5)) + fxCoarseAt(at + vec2(-0.5, 0.5));
   tent *= 0.25 * fxCoarseScale;
   gl_FragData[0] = vec4(fxShare * texelFetch(fxLevel, ivec2(fine), 0).rgb + tent, 1.0);
 #endif
