@@ -14,7 +14,9 @@
 #include "vtkFXTranslucentPass.h"
 
 #include "vtkActor.h"
+#include "vtkAssembly.h"
 #include "vtkAssemblyNode.h"
+#include "vtkProp3DCollection.h"
 #include "vtkAssemblyPath.h"
 #include "vtkCameraPass.h"
 #include "vtkPropCollection.h"
@@ -27,6 +29,7 @@
 #include "vtkOpenGLRenderer.h"
 #include "vtkOverlayPass.h"
 #include "vtkProp.h"
+#include "vtkPropAssembly.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderWindow.h"
@@ -87,6 +90,41 @@ void AddMaterialTerms(vtkActor* actor, vtkFXSceneInfo& scene, bool& emissive)
   }
 }
 
+// Whether VTK's volume step draws something of `prop`: a volume, a
+// vtkLODProp3D (whose levels may be volumes), or an assembly holding one
+// (vtkAssembly and vtkPropAssembly draw their volume parts there).
+bool DrawsVolumes(vtkProp* prop)
+{
+  if (prop->IsA("vtkVolume") || prop->IsA("vtkLODProp3D"))
+  {
+    return true;
+  }
+  vtkCollection* parts = nullptr;
+  if (auto* assembly = vtkAssembly::SafeDownCast(prop))
+  {
+    parts = assembly->GetParts();
+  }
+  else if (auto* propAssembly = vtkPropAssembly::SafeDownCast(prop))
+  {
+    parts = propAssembly->GetParts();
+  }
+  if (!parts)
+  {
+    return false;
+  }
+  vtkCollectionSimpleIterator it;
+  parts->InitTraversal(it);
+  while (vtkObject* part = parts->GetNextItemAsObject(it))
+  {
+    vtkProp* p = vtkProp::SafeDownCast(part);
+    if (p && p->GetVisibility() && DrawsVolumes(p))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 // Adds one prop of the renderer to the scene summary.
 void AnalyzeProp(vtkProp* prop, vtkFXSceneInfo& scene)
 {
@@ -102,15 +140,21 @@ void AnalyzeProp(vtkProp* prop, vtkFXSceneInfo& scene)
     }
     return;
   }
-  if (!prop->IsA("vtkActor") && !prop->IsA("vtkVolume") && !prop->IsA("vtkAssembly"))
+  if (!prop->IsA("vtkOpenGLActor") && !prop->IsA("vtkVolume") && !prop->IsA("vtkAssembly"))
   {
-    // Widgets' representations and other props may draw overlays too.
+    // Widgets' representations and other props may draw overlays too, and
+    // so may actors of classes other than VTK's own (vtkCubeAxesActor and
+    // vtkPolarAxesActor draw their 2D-mode labels there).
     scene.OverlayProps.push_back(prop);
   }
   if (prop->IsA("vtkVolume"))
   {
     scene.VolumeProps.push_back(prop);
     return;
+  }
+  if (DrawsVolumes(prop))
+  {
+    scene.VolumeProps.push_back(prop); // (its other parts are sorted below)
   }
   if (prop->HasTranslucentPolygonalGeometry())
   {
@@ -277,6 +321,8 @@ vtkFXSceneInfo vtkFXPipelinePass::AnalyzeScene(const vtkRenderState* s) const
   }
   scene.KeepsLowerDepth =
     s->GetRenderer()->GetPreserveDepthBuffer() || !s->GetRenderer()->GetErase();
+  scene.PeelsVolumes =
+    s->GetRenderer()->GetUseDepthPeeling() && s->GetRenderer()->GetUseDepthPeelingForVolumes();
   // The lights pass ran before the analysis: read what VTK decided.
   vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   if (ren && ren->GetLightingCount() > 0)
@@ -705,7 +751,10 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
   {
     lit->AddPass("forward-opaque", this->ForwardOpaquePass);
   }
-  if (!scene.TranslucentProps.empty())
+  // With depth peeling for volumes, VTK peels them with the translucent
+  // geometry and skips its volume step (vtkRenderer::UpdateGeometry).
+  const bool peeledVolumes = scene.PeelsVolumes && !scene.VolumeProps.empty();
+  if (!scene.TranslucentProps.empty() || peeledVolumes)
   {
     this->TranslucentPass->RemoveAllForwardShadingEffects();
     for (size_t i : order)
@@ -717,7 +766,7 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
     }
     lit->AddPass("translucent", this->TranslucentPass);
   }
-  if (!scene.VolumeProps.empty())
+  if (!scene.VolumeProps.empty() && !peeledVolumes)
   {
     lit->AddPass("volumes", this->VolumetricPass);
   }

@@ -27,8 +27,12 @@ struct vtkFXSceneInfo
   // also those VTK's frustum culler left out of the frame (they can still
   // shadow what the camera sees).
   std::vector<vtkProp*> TranslucentViewProps;
+  // Props VTK's volume step draws: volumes, vtkLODProp3D, assemblies
+  // holding a volume.
   std::vector<vtkProp*> VolumeProps;
-  std::vector<vtkProp*> OverlayProps;       // 2D props, widgets
+  // 2D props, widgets, actors of classes other than vtkOpenGLActor (which
+  // may draw overlays: vtkCubeAxesActor's 2D mode)
+  std::vector<vtkProp*> OverlayProps;
   // Props with light-independent colour: unlit opaque props (their colour is
   // their emission) and props with vtkFXGBufferPass::EMISSIVE_COLOR().
   std::vector<vtkProp*> EmissiveProps;
@@ -46,6 +50,10 @@ struct vtkFXSceneInfo
   // The renderer keeps the depth of the layers below (PreserveDepthBuffer,
   // or Erase off): what they drew can hide the G-buffer's surfaces.
   bool KeepsLowerDepth = false;
+  // The renderer peels volumes with its translucent geometry
+  // (UseDepthPeeling and UseDepthPeelingForVolumes): VTK draws them in its
+  // translucent step, not in the volume step.
+  bool PeelsVolumes = false;
 };
 
 #endif
