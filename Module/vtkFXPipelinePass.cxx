@@ -1,5 +1,6 @@
 #include "vtkFXPipelinePass.h"
 
+#include "vtkFXAntiAliasingPass.h"
 #include "vtkFXBilateralBlurPass.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXDirectionalOcclusionPass.h"
@@ -218,6 +219,7 @@ vtkFXPipelinePass::vtkFXPipelinePass()
   this->TranslucentPass = vtkSmartPointer<vtkFXTranslucentPass>::New();
   this->VolumetricPass = vtkSmartPointer<vtkVolumetricPass>::New();
   this->OverlayPass = vtkSmartPointer<vtkOverlayPass>::New();
+  this->AntiAliasingPass = vtkSmartPointer<vtkFXAntiAliasingPass>::New();
   this->ForwardOpaquePass = vtkSmartPointer<vtkFXForwardOpaquePass>::New();
   this->SelectionPass = vtkSmartPointer<vtkFXSelectionPass>::New();
 
@@ -323,6 +325,7 @@ vtkFXSceneInfo vtkFXPipelinePass::AnalyzeScene(const vtkRenderState* s) const
     s->GetRenderer()->GetPreserveDepthBuffer() || !s->GetRenderer()->GetErase();
   scene.PeelsVolumes =
     s->GetRenderer()->GetUseDepthPeeling() && s->GetRenderer()->GetUseDepthPeelingForVolumes();
+  scene.UsesFXAA = s->GetRenderer()->GetUseFXAA();
   // The lights pass ran before the analysis: read what VTK decided.
   vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   if (ren && ren->GetLightingCount() > 0)
@@ -698,6 +701,11 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
     this->HDRTargetPass->ReleaseGraphicsResources(window);
   }
   this->HDRTargetRan = postProcess;
+  if (this->AntiAliasingRan && !scene.UsesFXAA)
+  {
+    this->AntiAliasingPass->ReleaseGraphicsResources(window);
+  }
+  this->AntiAliasingRan = scene.UsesFXAA;
 
   this->AddEffectPasses(this->Sequence, order, E::LightSpace);
   vtkFXCompositePass* composite = this->CompositePass;
@@ -775,6 +783,10 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
   {
     this->HDRTargetPass->SetGBuffer(deferred ? this->GBufferPass.Get() : nullptr);
     this->Sequence->AddPass("hdr-target", this->HDRTargetPass);
+  }
+  if (scene.UsesFXAA)
+  {
+    this->Sequence->AddPass("fxaa", this->AntiAliasingPass);
   }
   if (!scene.OverlayProps.empty())
   {
@@ -1161,6 +1173,8 @@ void vtkFXPipelinePass::Release(vtkWindow* w, bool keepSharedEffects)
   this->TranslucentPass->ReleaseGraphicsResources(w);
   this->VolumetricPass->ReleaseGraphicsResources(w);
   this->OverlayPass->ReleaseGraphicsResources(w);
+  this->AntiAliasingPass->ReleaseGraphicsResources(w);
+  this->AntiAliasingRan = false;
   for (EffectSlot& slot : this->Effects)
   {
     if (!keepSharedEffects || slot.Effect->GetReferenceCount() <= this->OwnReferences(slot.Effect))

@@ -70,6 +70,7 @@ class vtkLightsPass;
 class vtkOpaquePass;
 class vtkRenderer;
 class vtkOverlayPass;
+class vtkFXAntiAliasingPass;
 class vtkVolumetricPass;
 class vtkWindow;
 
@@ -312,6 +313,8 @@ protected:
   vtkSmartPointer<vtkFXTranslucentPass> TranslucentPass;
   vtkSmartPointer<vtkVolumetricPass> VolumetricPass;
   vtkSmartPointer<vtkOverlayPass> OverlayPass;
+  vtkSmartPointer<vtkFXAntiAliasingPass> AntiAliasingPass;
+  bool AntiAliasingRan = false;
   vtkSmartPointer<vtkRenderPass> SelectionPass;
   vtkSmartPointer<vtkRenderPass> ForwardOpaquePass;
 

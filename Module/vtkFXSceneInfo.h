@@ -54,6 +54,7 @@ struct vtkFXSceneInfo
   // (UseDepthPeeling and UseDepthPeelingForVolumes): VTK draws them in its
   // translucent step, not in the volume step.
   bool PeelsVolumes = false;
+  bool UsesFXAA = false; // the renderer's UseFXAA (vtkFXAntiAliasingPass)
 };
 
 #endif
