@@ -26,6 +26,7 @@
 #include "vtkLightsPass.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkHiddenLineRemovalPass.h"
 #include "vtkOpaquePass.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOverlayPass.h"
@@ -214,6 +215,7 @@ vtkFXPipelinePass::vtkFXPipelinePass()
   this->HDRTargetPass = vtkSmartPointer<vtkFXHDRTargetPass>::New();
   this->LightsPass = vtkSmartPointer<vtkLightsPass>::New();
   this->OpaquePass = vtkSmartPointer<vtkOpaquePass>::New();
+  this->HiddenLinePass = vtkSmartPointer<vtkHiddenLineRemovalPass>::New();
   this->GBufferPass = vtkSmartPointer<vtkFXGBufferPass>::New();
   this->CompositePass = vtkSmartPointer<vtkFXCompositePass>::New();
   this->TranslucentPass = vtkSmartPointer<vtkFXTranslucentPass>::New();
@@ -326,6 +328,9 @@ vtkFXSceneInfo vtkFXPipelinePass::AnalyzeScene(const vtkRenderState* s) const
   scene.PeelsVolumes =
     s->GetRenderer()->GetUseDepthPeeling() && s->GetRenderer()->GetUseDepthPeelingForVolumes();
   scene.UsesFXAA = s->GetRenderer()->GetUseFXAA();
+  scene.RemovesHiddenLines = s->GetRenderer()->GetUseHiddenLineRemoval() &&
+    vtkHiddenLineRemovalPass::WireframePropsExist(
+      scene.OpaqueProps.data(), static_cast<int>(scene.OpaqueProps.size()));
   // The lights pass ran before the analysis: read what VTK decided.
   vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   if (ren && ren->GetLightingCount() > 0)
@@ -745,6 +750,14 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
     this->GBufferPass->SetHDREmission(scene.AnyEmissionAboveOne);
     this->GBufferPass->SetHDRMaterial(scene.LargestColor > 1.0);
     composite->SetMaterialColorScale(scene.LargestColor); // (clamped: inf becomes 65504)
+    // (colour masked off, the hidden-line pass's depth-only draw leaves
+    // every channel alone)
+    vtkRenderPass* draw = scene.RemovesHiddenLines ? this->HiddenLinePass.Get()
+                                                   : static_cast<vtkRenderPass*>(this->OpaquePass.Get());
+    if (this->GBufferPass->GetDelegatePass() != draw)
+    {
+      this->GBufferPass->SetDelegatePass(draw);
+    }
     this->Sequence->AddPass("gbuffer", this->GBufferPass);
     this->AddEffectPasses(this->Sequence, order, E::AfterGBuffer);
   }

@@ -70,6 +70,7 @@ class vtkLightsPass;
 class vtkOpaquePass;
 class vtkRenderer;
 class vtkOverlayPass;
+class vtkHiddenLineRemovalPass;
 class vtkFXAntiAliasingPass;
 class vtkVolumetricPass;
 class vtkWindow;
@@ -308,6 +309,9 @@ protected:
   vtkSmartPointer<vtkFXHDRTargetPass> HDRTargetPass;
   vtkSmartPointer<vtkLightsPass> LightsPass;
   vtkSmartPointer<vtkOpaquePass> OpaquePass;
+  // The G-buffer's draw while the renderer's UseHiddenLineRemoval meets a
+  // wireframe prop (VTK's own pass: surfaces into depth, then the lines).
+  vtkSmartPointer<vtkHiddenLineRemovalPass> HiddenLinePass;
   vtkSmartPointer<vtkFXGBufferPass> GBufferPass;
   vtkSmartPointer<vtkFXCompositePass> CompositePass;
   vtkSmartPointer<vtkFXTranslucentPass> TranslucentPass;

@@ -55,6 +55,8 @@ struct vtkFXSceneInfo
   // translucent step, not in the volume step.
   bool PeelsVolumes = false;
   bool UsesFXAA = false; // the renderer's UseFXAA (vtkFXAntiAliasingPass)
+  // The renderer's UseHiddenLineRemoval, with a wireframe prop to apply it to
+  bool RemovesHiddenLines = false;
 };
 
 #endif

@@ -209,7 +209,7 @@ void AddVolumeThrough(vtkRenderer* renderer, const char* holder)
 // time), volumes held by an assembly or a vtkLODProp3D (never drawn: the
 // volume step ran for vtkVolume props only), vtkCubeAxesActor's labels
 // in 2D mode (its overlay step: the pipeline ran it for 2D props only),
-// and the renderer's FXAA (ignored before).
+// and the renderer's hidden-line removal and FXAA (both ignored before).
 int CheckStepsOutsideOpaque(vtkRenderWindow* window)
 {
   int failures = 0;
@@ -274,6 +274,27 @@ int CheckStepsOutsideOpaque(vtkRenderWindow* window)
     },
     &passes);
   report("vtkCubeAxesActor in 2D mode", r, passes, "overlay", "");
+  // Hidden-line removal (the renderer's UseHiddenLineRemoval): a wireframe
+  // sphere's back lines hidden by its own surface, as VTK hides them (they
+  // showed through before).
+  r = CompareWithVTK(
+    window,
+    [](vtkRenderer* renderer) {
+      vtkNew<vtkSphereSource> sphere;
+      sphere->SetThetaResolution(16);
+      sphere->SetPhiResolution(12);
+      vtkNew<vtkPolyDataMapper> mapper;
+      mapper->SetInputConnection(sphere->GetOutputPort());
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      actor->GetProperty()->SetRepresentationToWireframe();
+      renderer->AddActor(actor);
+      renderer->UseHiddenLineRemovalOn();
+      renderer->ResetCamera();
+    },
+    &passes);
+  report("a wireframe sphere with hidden-line removal", r, passes, "gbuffer", "");
+
   // The renderer's FXAA, as VTK runs it. FXAA moves edge pixels by tens of
   // levels, and where the two inputs differ by a level or two it may
   // decide an edge differently: PSNR at least 50 dB, no bound per pixel;
