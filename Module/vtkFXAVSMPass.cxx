@@ -272,7 +272,7 @@ bool vtkFXAVSMPass::HasWork(const vtkFXSceneInfo& scene)
       break;
     }
     std::array<double, 6> bounds;
-    const int kind = DrawnExtent(prop, -1.0, bounds.data());
+    const int kind = vtkFXRenderUtilities::GetReachedBounds(prop, -1.0, bounds.data());
     if (kind == vtkFXRenderUtilities::DrawsAnywhere)
     {
       this->ReceiversAnywhere = true;
@@ -748,140 +748,12 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
 
 namespace
 {
-// The largest scale of a point-gaussian mapper's splats (the scale array's
-// largest value, or its magnitude's when the component is out of range,
-// 1 where a piece lacks the array, through the scale function when there
-// is one, times the scale factor).
-double SplatScale(vtkPointGaussianMapper* splats)
-{
-  const double factor = std::fabs(splats->GetScaleFactor());
-  if (!splats->GetScaleArray())
-  {
-    return factor;
-  }
-  double largest = 0.0;
-  for (vtkDataObject* leaf : vtkFXRenderUtilities::Leaves(splats->GetInputDataObject(0, 0)))
-  {
-    auto* set = vtkDataSet::SafeDownCast(leaf);
-    if (!set)
-    {
-      continue;
-    }
-    vtkDataArray* values = set->GetPointData()->GetArray(splats->GetScaleArray());
-    if (!values || values->GetNumberOfTuples() == 0)
-    {
-      // (VTK sizes the splats of a piece without the array as 1, through
-      // the scale function)
-      largest = std::max(largest, set->GetNumberOfPoints() > 0 ? 1.0 : 0.0);
-      continue;
-    }
-    const int component = splats->GetScaleArrayComponent();
-    const bool one = values->GetNumberOfComponents() == 1 ||
-      (component >= 0 && component < values->GetNumberOfComponents());
-    const double* range = values->GetRange(one ? std::max(0, component) : -1);
-    largest = std::max({ largest, std::fabs(range[0]), std::fabs(range[1]) });
-  }
-  if (vtkPiecewiseFunction* function = splats->GetScaleFunction())
-  {
-    largest = 0.0;
-    for (int i = 0; i < function->GetSize(); ++i)
-    {
-      double node[4];
-      function->GetNodeValue(i, node);
-      largest = std::max(largest, std::fabs(node[1]));
-    }
-  }
-  return largest * factor;
-}
-
 // Whether every value in [begin, end) is finite.
 bool AllFinite(const double* begin, const double* end)
 {
   return std::all_of(begin, end, [](double v) { return std::isfinite(v); });
 }
 
-// How far along any world axis `matrix` takes a point at distance 1 from
-// another: its rows' largest length (a sphere's box grows by the radius
-// times row i's length along axis i, sheared or not; 1 without a matrix).
-double Stretch(vtkMatrix4x4* matrix)
-{
-  double stretch = matrix ? 0.0 : 1.0;
-  for (int r = 0; matrix && r < 3; ++r)
-  {
-    stretch = std::max(stretch,
-      std::sqrt(matrix->GetElement(r, 0) * matrix->GetElement(r, 0) +
-        matrix->GetElement(r, 1) * matrix->GetElement(r, 1) +
-        matrix->GetElement(r, 2) * matrix->GetElement(r, 2)));
-  }
-  return stretch;
-}
-}
-
-int vtkFXAVSMPass::DrawnExtent(vtkProp* prop, double splatReach, double bounds[6])
-{
-  // The prop's bounds (vtkFXRenderUtilities::GetDrawnBounds: splats'
-  // centres included), grown by its splats' reach (a splat reaches
-  // splatReach times its scale, or where splatReach < 0, its triangle's
-  // corner, twice its TriangleScale: an opaque splat's extent), down to
-  // the visible parts of assemblies, as CaptureKey walks them. Anywhere
-  // where the bounds do not hold what is drawn: a 3D prop without bounds,
-  // an assembly part with UseBounds off or without bounds (its assembly's
-  // bounds leave it out), points or lines wider than a pixel (they reach
-  // past the bounds sideways, and sphere or tube impostors write depths
-  // nearer the viewer).
-  using RU = vtkFXRenderUtilities;
-  const int kind = RU::GetDrawnBounds(prop, bounds);
-  if (kind != RU::DrawsWithin)
-  {
-    return kind;
-  }
-  double reach = 0.0;
-  prop->InitPathTraversal();
-  while (vtkAssemblyPath* path = prop->GetNextPath())
-  {
-    vtkProp* part = path->GetLastNode()->GetViewProp();
-    if (part != prop && !part->GetVisibility())
-    {
-      continue; // (not drawn)
-    }
-    double partBounds[6];
-    const int partKind = part == prop ? kind : RU::GetDrawnBounds(part, partBounds);
-    if (partKind == RU::DrawsNothing)
-    {
-      continue;
-    }
-    if (!part->GetUseBounds() || partKind == RU::DrawsAnywhere)
-    {
-      vtkMath::UninitializeBounds(bounds);
-      return RU::DrawsAnywhere;
-    }
-    vtkActor* actor = vtkActor::SafeDownCast(part);
-    if (!actor)
-    {
-      continue;
-    }
-    if (actor->GetProperty()->GetPointSize() > 1.0f || actor->GetProperty()->GetLineWidth() > 1.0f)
-    {
-      vtkMath::UninitializeBounds(bounds);
-      return RU::DrawsAnywhere;
-    }
-    if (auto* splats = vtkPointGaussianMapper::SafeDownCast(actor->GetMapper()))
-    {
-      const double scale = SplatScale(splats);
-      const double perScale = splatReach < 0.0 ? 2.0 * splats->GetTriangleScale() : splatReach;
-      reach = std::max(reach, perScale * scale * Stretch(RU::PathMatrix(prop, path)));
-    }
-  }
-  for (int i = 0; i < 6; ++i)
-  {
-    bounds[i] += i % 2 ? reach : -reach;
-  }
-  if (!AllFinite(bounds, bounds + 6))
-  {
-    vtkMath::UninitializeBounds(bounds);
-    return RU::DrawsAnywhere;
-  }
-  return RU::DrawsWithin;
 }
 
 void vtkFXAVSMPass::MeasureCasters()
@@ -892,7 +764,7 @@ void vtkFXAVSMPass::MeasureCasters()
   {
     CasterExtent extent;
     extent.Kind = vtkFXRenderUtilities::GetDrawnBounds(prop, extent.Bounds);
-    extent.ReachKind = DrawnExtent(prop, this->SplatRadius, extent.Reached);
+    extent.ReachKind = vtkFXRenderUtilities::GetReachedBounds(prop, this->SplatRadius, extent.Reached);
     this->CasterExtents.push_back(extent);
   }
 }
@@ -1796,7 +1668,7 @@ void vtkFXAVSMPass::ComputeShadowedPixels(
   // ground would otherwise carry the box down to its lowest corner), then
   // seen by the viewer: the pieces' corners bound their image, unless one
   // reaches the viewer's plane. (Props drawn past what their bounds say
-  // made the box the whole view, or set ReceiversAnywhere: DrawnExtent.)
+  // made the box the whole view, or set ReceiversAnywhere: vtkFXRenderUtilities::GetReachedBounds.)
   rect[0] = rect[1] = 0;
   rect[2] = width;
   rect[3] = height;

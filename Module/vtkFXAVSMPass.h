@@ -468,11 +468,6 @@ protected:
   void AddView(const double position[3], const double direction[3], vtkMatrix4x4* projection,
     bool perspective, const double nearFar[2]);
   void ComputeCasterDepthRange(LightView& view) const; // its SliceRange and ShadowedBox
-  // Where `prop` is drawn: its bounds grown by its splats' reach (splatReach
-  // times their scale; below 0, their triangles'), as a
-  // vtkFXRenderUtilities::DrawnBoundsKind (DrawsAnywhere when that cannot
-  // be told).
-  static int DrawnExtent(vtkProp* prop, double splatReach, double bounds[6]);
   // This frame's CasterExtents, from Casters.
   void MeasureCasters();
   struct CasterExtent

@@ -97,13 +97,15 @@ void vtkFXBloomPass::ReleaseSampler()
 
 bool vtkFXBloomPass::HasWork(const vtkFXSceneInfo& scene)
 {
-  // Where the glow can be: around the emissive props (see ComputeGlowRect).
+  // Where the glow can be: around what the emissive props draw, splats
+  // whole (see ComputeGlowRect); anywhere when that cannot be told (wide
+  // points or lines reach past the bounds by pixels).
   vtkBoundingBox emissive;
   bool anywhere = false;
   for (vtkProp* prop : scene.EmissiveProps)
   {
     double b[6];
-    const int kind = vtkFXRenderUtilities::GetDrawnBounds(prop, b);
+    const int kind = vtkFXRenderUtilities::GetReachedBounds(prop, -1.0, b);
     anywhere = anywhere || kind == vtkFXRenderUtilities::DrawsAnywhere;
     if (kind == vtkFXRenderUtilities::DrawsWithin)
     {

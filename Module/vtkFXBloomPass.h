@@ -49,8 +49,9 @@
  * emission channel is read (and allocated) only while some visible prop
  * emits.
  * Cost: one pass per level down and up, drawn only over the part of the
- * image the glow can reach (the emissive props' screen rectangle widened by
- * 4 deviations of the widest level; the whole image with a threshold), the first at half resolution with
+ * image the glow can reach (the screen rectangle of what the emissive props
+ * draw, splats whole, widened by 4 deviations of the widest level; the whole
+ * image with a threshold, or points or lines wider than a pixel), the first at half resolution with
  * 4 bilinear source reads per texel, the next with 13, each next one
  * at a quarter of the texels of the one before, 4 bilinear reads per
  * texel up; one full-resolution pass of 1 bilinear read, blended. With a

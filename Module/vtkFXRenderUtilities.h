@@ -308,6 +308,20 @@ public:
   static int GetDrawnBounds(vtkProp* prop, double bounds[6]);
 
   /**
+   * Where `prop` draws: GetDrawnBounds grown by its splats' reach (a splat
+   * reaches splatReach times its scale, or where splatReach < 0, its
+   * triangle's corner, twice its TriangleScale: an opaque splat's extent),
+   * down to the visible parts of assemblies. DrawsAnywhere where the
+   * bounds do not hold what is drawn: a 3D prop without bounds, an
+   * assembly part with UseBounds off or without bounds (its assembly's
+   * bounds leave it out), points or lines wider than a pixel (they reach
+   * past the bounds sideways, and sphere or tube impostors write depths
+   * nearer the viewer). Used for the shadows' light views and the glow's
+   * rectangle.
+   */
+  static int GetReachedBounds(vtkProp* prop, double splatReach, double bounds[6]);
+
+  /**
    * GetDrawnBounds of a vtkPropAssembly: the union of its visible parts'
    * that use bounds (DrawsAnywhere when one does).
    */

@@ -14,6 +14,10 @@
 // - light above a threshold glows by the soft knee's weights.
 #include "vtkFXBloomPass.h"
 #include "vtkFXHDRTargetPass.h"
+#include "vtkPolyData.h"
+#include "vtkCellArray.h"
+#include "vtkPoints.h"
+#include "vtkPointGaussianMapper.h"
 #include "vtkFXEffectPass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
@@ -228,6 +232,76 @@ int CheckEnergy(vtkRenderWindow* window)
     }
     FX_CHECK(std::fabs(added / (0.5 * source) - 1.0) < 0.05, "image gained " << added);
     window->GetRenderers()->GetFirstRenderer()->SetPass(nullptr);
+  }
+  return EXIT_SUCCESS;
+}
+
+// What emits is drawn past the emissive props' bounds: a splat reaches its
+// radius past its centre (the bounds VTK gives), a wide point a few pixels.
+// The glow is drawn in a rectangle around what they reach; around the
+// centres alone it cut the glow off in a square (a splat of radius 0.4
+// lost most of its glow). One unlit, opaque splat (its colour is its
+// emission) at a small glow radius: the glow's total is the emission's.
+int CheckSplatGlow(vtkRenderWindow* window)
+{
+  window->SetSize(400, 300);
+  for (const bool widePoint : { false, true })
+  {
+    window->GetRenderers()->RemoveAllItems();
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    vtkNew<vtkPoints> points;
+    points->InsertNextPoint(0.0, 0.0, 0.0);
+    vtkNew<vtkPolyData> poly;
+    poly->SetPoints(points);
+    vtkNew<vtkActor> actor;
+    if (widePoint)
+    {
+      vtkNew<vtkCellArray> vertex;
+      const vtkIdType id = 0;
+      vertex->InsertNextCell(1, &id);
+      poly->SetVerts(vertex);
+      vtkNew<vtkPolyDataMapper> mapper;
+      mapper->SetInputData(poly);
+      actor->SetMapper(mapper);
+      actor->GetProperty()->SetPointSize(40.0f);
+    }
+    else
+    {
+      vtkNew<vtkPointGaussianMapper> mapper;
+      mapper->SetInputData(poly);
+      mapper->EmissiveOff();
+      mapper->SetScaleFactor(0.4);
+      mapper->SetSplatShaderCode("//VTK::Color::Impl\n"
+                                 "  if (dot(offsetVCVSOutput.xy, offsetVCVSOutput.xy) > 1.0) { discard; }\n");
+      actor->SetMapper(mapper);
+    }
+    actor->GetProperty()->LightingOff();
+    actor->GetProperty()->SetColor(0.5, 0.4, 0.3);
+    renderer->AddActor(actor);
+    renderer->SetBackground(0.0, 0.0, 0.0);
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->SetPosition(0.0, 0.0, 3.0);
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    renderer->ResetCameraClippingRange(-1.0, 1.0, -1.0, 1.0, -1.0, 1.0);
+    vtkNew<vtkFXPipelinePass> pipeline;
+    vtkNew<vtkFXBloomPass> bloom;
+    bloom->FireflySuppressionOff();
+    bloom->SetRadius(0.005);
+    pipeline->AddEffect("bloom", bloom);
+    renderer->SetPass(pipeline);
+    window->Render();
+    FX_CHECK(vtkFXTest::Passes(pipeline).find("bloom") != std::string::npos,
+      vtkFXTest::Passes(pipeline));
+    const double source = Sum(
+      vtkFXTest::Download(pipeline->GetGBufferPass()->GetChannelTexture(GB::Emission), 4), 4, 3);
+    const double glow = GlowTotal(bloom);
+    std::cout << (widePoint ? "a 40-pixel point" : "a splat of radius 0.4")
+              << ": emission " << source << ", glow " << glow << " (ratio " << glow / source
+              << ")" << std::endl;
+    FX_CHECK(source > 100.0, "the splat emits " << source);
+    FX_CHECK(std::fabs(glow / source - 1.0) < 0.02, "glow " << glow << " for " << source);
+    renderer->SetPass(nullptr);
   }
   return EXIT_SUCCESS;
 }
@@ -667,6 +741,7 @@ int TestBloom(int, char*[])
   FX_CHECK(CheckThreshold(window) == EXIT_SUCCESS, "threshold");
   FX_CHECK(CheckThresholdOddSize(window) == EXIT_SUCCESS, "threshold, odd size");
   FX_CHECK(CheckEdgeEnergy(window) == EXIT_SUCCESS, "light at the image's edges");
+  FX_CHECK(CheckSplatGlow(window) == EXIT_SUCCESS, "splats and wide points glow whole");
   FX_CHECK(CheckEmissionAndThreshold(window) == EXIT_SUCCESS, "emission and threshold");
   FX_CHECK(CheckThresholdWithoutOpaqueProps(window) == EXIT_SUCCESS, "threshold, no opaque prop");
   FX_CHECK(CheckHiddenEmitter(window) == EXIT_SUCCESS, "hidden emitter");
