@@ -683,8 +683,7 @@ bool vtkFXCompositePass::CanUseDepthPrepass(vtkOpenGLRenderer* ren)
   // everywhere: what the camera pass leaves when the renderer and its
   // window erase and the renderer does not preserve its depth; the
   // composite is the first to draw)
-  if (!this->UseDepthPrepass || !ren->GetErase() ||
-    !ren->GetRenderWindow()->GetErase() || ren->GetPreserveDepthBuffer() ||
+  if (!this->UseDepthPrepass || vtkFXRenderUtilities::KeepsEarlierDepth(ren) ||
     !CanHoldDepthBelowOne())
   {
     return false;

@@ -125,7 +125,7 @@ void vtkFXHDRTargetPass::Render(const vtkRenderState* s)
   const int width = std::max(viewport[2], 1);
   const int height = std::max(viewport[3], 1);
 
-  const bool keepDepth = ren->GetPreserveDepthBuffer() || !ren->GetErase() ||
+  const bool keepDepth = vtkFXRenderUtilities::KeepsEarlierDepth(ren) ||
     (this->GBuffer && !this->GBuffer->GetFrameComplete());
   this->DepthFormat = vtkFXRenderUtilities::GetReadDepthFormat(window);
   vtkFXRenderUtilities::EnsureTexture(

@@ -323,8 +323,7 @@ vtkFXSceneInfo vtkFXPipelinePass::AnalyzeScene(const vtkRenderState* s) const
       scene.TranslucentViewProps.push_back(prop);
     }
   }
-  scene.KeepsLowerDepth =
-    s->GetRenderer()->GetPreserveDepthBuffer() || !s->GetRenderer()->GetErase();
+  scene.KeepsLowerDepth = vtkFXRenderUtilities::KeepsEarlierDepth(s->GetRenderer());
   scene.PeelsVolumes =
     s->GetRenderer()->GetUseDepthPeeling() && s->GetRenderer()->GetUseDepthPeelingForVolumes();
   scene.UsesFXAA = s->GetRenderer()->GetUseFXAA();

@@ -904,6 +904,12 @@ int vtkFXRenderUtilities::GetReachedBounds(vtkProp* prop, double splatReach, dou
   return RU::DrawsWithin;
 }
 
+bool vtkFXRenderUtilities::KeepsEarlierDepth(vtkRenderer* renderer)
+{
+  return renderer->GetPreserveDepthBuffer() || !renderer->GetErase() ||
+    (renderer->GetRenderWindow() && !renderer->GetRenderWindow()->GetErase());
+}
+
 int vtkFXRenderUtilities::GetPartsBounds(vtkPropAssembly* group, double bounds[6])
 {
   vtkBoundingBox box;

@@ -322,6 +322,14 @@ public:
   static int GetReachedBounds(vtkProp* prop, double splatReach, double bounds[6]);
 
   /**
+   * Whether the framebuffer holds depth from before this renderer's frame
+   * (the layers below, or an earlier frame): the renderer preserves its
+   * depth, or it or its window does not erase (vtkCameraPass clears only
+   * when both do).
+   */
+  static bool KeepsEarlierDepth(vtkRenderer* renderer);
+
+  /**
    * GetDrawnBounds of a vtkPropAssembly: the union of its visible parts'
    * that use bounds (DrawsAnywhere when one does).
    */

@@ -47,8 +47,9 @@ struct vtkFXSceneInfo
   bool AnyPerturbedNormal = false; // an opaque prop's shading normal is not its mesh normal
                                    // (vtkFXGBufferPass::PerturbsNormal)
   int LightingComplexity = 0;    // vtkOpenGLRenderer's, 0 when no light is on
-  // The renderer keeps the depth of the layers below (PreserveDepthBuffer,
-  // or Erase off): what they drew can hide the G-buffer's surfaces.
+  // The renderer keeps the depth of the layers below or of an earlier frame
+  // (PreserveDepthBuffer, or Erase off on it or its window): what they
+  // drew can hide the G-buffer's surfaces.
   bool KeepsLowerDepth = false;
   // The renderer peels volumes with its translucent geometry
   // (UseDepthPeeling and UseDepthPeelingForVolumes): VTK draws them in its

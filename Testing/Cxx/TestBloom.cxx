@@ -14,6 +14,7 @@
 // - light above a threshold glows by the soft knee's weights.
 #include "vtkFXBloomPass.h"
 #include "vtkFXHDRTargetPass.h"
+#include "vtkToneMappingPass.h"
 #include "vtkPolyData.h"
 #include "vtkCellArray.h"
 #include "vtkPoints.h"
@@ -303,6 +304,102 @@ int CheckSplatGlow(vtkRenderWindow* window)
     FX_CHECK(std::fabs(glow / source - 1.0) < 0.02, "glow " << glow << " for " << source);
     renderer->SetPass(nullptr);
   }
+  return EXIT_SUCCESS;
+}
+
+// A lit sphere, `color`, at depth z, in front of the camera at z = 3.
+vtkSmartPointer<vtkActor> LitSphere(double z, double r, double g, double b)
+{
+  auto actor = Sphere(0.0, 0.5, nullptr);
+  actor->SetPosition(0.0, 0.0, z);
+  actor->GetProperty()->SetColor(r, g, b);
+  return actor;
+}
+
+// The HDR target keeps what the frame around the pipeline expects of it.
+// - Inside vtkToneMappingPass, whose framebuffer is float: the lit values
+//   above 1 reach the tone mapping with a post-process effect on as
+//   without (the write-back clamped them to 1: highlights flattened).
+// - With the window's Erase off (multiple exposures): an earlier frame's
+//   depth hides what lies behind it with the effect on as without (the
+//   target cleared the depth unless the renderer's own Erase was off).
+// The effect: bloom with a threshold nothing reaches (the target is kept,
+// no glow is added).
+int CheckTargetKeepsFrame(vtkRenderWindow* window)
+{
+  window->SetSize(200, 150);
+  std::vector<unsigned char> images[2];
+  for (const bool effect : { false, true })
+  {
+    window->GetRenderers()->RemoveAllItems();
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    renderer->AddActor(LitSphere(0.0, 1.0, 1.0, 1.0));
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToCameraLight();
+    light->SetIntensity(3.0);
+    renderer->AddLight(light);
+    renderer->ResetCamera();
+    vtkNew<vtkFXPipelinePass> pipeline;
+    vtkNew<vtkFXBloomPass> bloom;
+    bloom->SetThreshold(1e4);
+    if (effect)
+    {
+      pipeline->AddEffect("bloom", bloom);
+    }
+    vtkNew<vtkToneMappingPass> toneMapping;
+    toneMapping->SetToneMappingType(vtkToneMappingPass::Reinhard);
+    toneMapping->SetDelegatePass(pipeline);
+    renderer->SetPass(toneMapping);
+    window->Render();
+    FX_CHECK((vtkFXTest::Passes(pipeline).find("hdr-target") != std::string::npos) == effect,
+      vtkFXTest::Passes(pipeline));
+    images[effect ? 1 : 0] = vtkFXScenes::Capture(window);
+    renderer->SetPass(nullptr);
+    toneMapping->ReleaseGraphicsResources(window);
+  }
+  const int toneMapped = vtkFXScenes::MaxDifference(images[0], images[1]);
+  std::cout << "tone mapping around the pipeline: largest difference with the HDR target "
+            << toneMapped << "/255" << std::endl;
+  FX_CHECK(toneMapped <= 1, "the HDR target changed the tone-mapped frame by " << toneMapped);
+
+  // Two exposures with the window's Erase off: a red sphere near the
+  // camera, then a green one behind it, drawn where the red one does not hide it.
+  for (const bool effect : { false, true })
+  {
+    window->GetRenderers()->RemoveAllItems();
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    auto front = LitSphere(0.5, 1.0, 0.0, 0.0);
+    renderer->AddActor(front);
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->SetPosition(0.0, 0.0, 3.0);
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetClippingRange(0.5, 10.0);
+    vtkNew<vtkFXPipelinePass> pipeline;
+    vtkNew<vtkFXBloomPass> bloom;
+    bloom->SetThreshold(1e4);
+    if (effect)
+    {
+      pipeline->AddEffect("bloom", bloom);
+    }
+    renderer->SetPass(pipeline);
+    window->EraseOn();
+    window->Render();
+    renderer->RemoveActor(front);
+    auto back = LitSphere(-0.5, 0.0, 1.0, 0.0);
+    back->SetPosition(0.3, 0.0, -0.5);
+    renderer->AddActor(back);
+    window->EraseOff();
+    window->Render();
+    images[effect ? 1 : 0] = vtkFXScenes::Capture(window);
+    window->EraseOn();
+    renderer->SetPass(nullptr);
+  }
+  const int exposures = vtkFXScenes::MaxDifference(images[0], images[1]);
+  std::cout << "two exposures, the window's Erase off: largest difference with the HDR target "
+            << exposures << "/255" << std::endl;
+  FX_CHECK(exposures <= 1, "the HDR target changed the second exposure by " << exposures);
   return EXIT_SUCCESS;
 }
 
@@ -742,6 +839,7 @@ int TestBloom(int, char*[])
   FX_CHECK(CheckThresholdOddSize(window) == EXIT_SUCCESS, "threshold, odd size");
   FX_CHECK(CheckEdgeEnergy(window) == EXIT_SUCCESS, "light at the image's edges");
   FX_CHECK(CheckSplatGlow(window) == EXIT_SUCCESS, "splats and wide points glow whole");
+  FX_CHECK(CheckTargetKeepsFrame(window) == EXIT_SUCCESS, "the HDR target keeps the frame's values");
   FX_CHECK(CheckEmissionAndThreshold(window) == EXIT_SUCCESS, "emission and threshold");
   FX_CHECK(CheckThresholdWithoutOpaqueProps(window) == EXIT_SUCCESS, "threshold, no opaque prop");
   FX_CHECK(CheckHiddenEmitter(window) == EXIT_SUCCESS, "hidden emitter");
