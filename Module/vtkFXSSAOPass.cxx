@@ -374,12 +374,22 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   vtkRenderer* ren = s->GetRenderer();
   vtkTextureObject* depth = this->GBuffer ? this->GBuffer->GetChannelTexture(GB::LinearDepth) : nullptr;
   vtkTextureObject* normal = this->GBuffer ? this->GBuffer->GetGeometricNormalTexture() : nullptr;
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   if (!depth || !normal)
   {
-    vtkErrorMacro("vtkFXSSAOPass needs a G-buffer with normal and linear depth channels.");
+    // (used alone, without vtkFXPipelinePass's scheduling) No output rather
+    // than last frame's, which the composite would read at another size or
+    // from another view.
+    if (!this->WarnedNoChannels)
+    {
+      vtkErrorMacro("vtkFXSSAOPass needs a G-buffer with normal and linear depth channels; "
+                    "no occlusion.");
+      this->WarnedNoChannels = true;
+    }
+    vtkFXRenderUtilities::Release(this->Occlusion, window);
     return;
   }
-  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  this->WarnedNoChannels = false;
   const int fullWidth = static_cast<int>(depth->GetWidth());
   const int fullHeight = static_cast<int>(depth->GetHeight());
   const int step = this->HalfResolution ? 2 : 1;
@@ -431,6 +441,12 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
         const bool made = this->MakeSurfaceMask(window, depth, step);
         this->SurfaceMaskFailedSize[0] = made ? 0 : size[0];
         this->SurfaceMaskFailedSize[1] = made ? 0 : size[1];
+        if (!made)
+        {
+          vtkWarningMacro("vtkFXSSAOPass could not make its " << size[0] << " x " << size[1]
+                                                              << " surface mask; every pixel "
+                                                                 "runs the estimator.");
+        }
         surfaces = made ? this->SurfaceMask.Texture.Get() : nullptr;
       }
     }

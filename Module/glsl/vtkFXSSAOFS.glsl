@@ -243,8 +243,16 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
   // 6400 x 4800 lost the wall's occlusion and showed rings at 512 texels,
   // 35 levels off the 400 x 300 image in 20-pixel cells; TestSSAOScale.
   float worldPerNdc = length(fxRayOrigin[1] + depth * fxRayDirection[1]);
-  float radiusTexels = clamp(fxRadius / worldPerNdc * 0.5 * float(fxGBufferSize.x), 1.0,
-    length(vec2(fxGBufferSize)));
+  float fullRadiusTexels = fxRadius / worldPerNdc * 0.5 * float(fxGBufferSize.x);
+  float radiusTexels = clamp(fullRadiusTexels, 1.0, length(vec2(fxGBufferSize)));
+  // The steps' reach as a fraction of R: 1, or less where the image's
+  // diagonal bounds them. Offsets are measured in units of that reach
+  // (for R far beyond the image, in units of R they fell below 1e-15,
+  // where the squares' floor bent every elevation: an open plane seen at
+  // 30 degrees read 0.62 under R = 1e20, TestSSAO), and distances to R
+  // through its square.
+  float reach = radiusTexels < fullRadiusTexels ? radiusTexels / fullRadiusTexels : 1.0;
+  float reachSquared = reach * reach;
   // Horizons fade out over the last part of R: XeGTAO's 61.5% for the
   // near-weighted falloff; for visibility within R (FX_FALLOFF 0) a step at
   // R, as the definition says (a 10% fade biased the crease of TestSSAO
@@ -259,7 +267,7 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
   const float falloffMul = -1.0 / falloffRange;
   const float falloffAdd = (1.0 - falloffRange) / falloffRange + 1.0;
 #endif
-  float inverseRadius = 1.0 / fxRadius;
+  float inverseReach = 1.0 / (fxRadius * max(reach, 1e-30));
   // The tile entry: the first slice's direction, at (jitter / FX_SLICES) x pi
   // for the entry's jitter within its stratum, and the steps' offset (both
   // computed once on the CPU, vtkFXSSAOPass::SetKernelUniforms). The offset
@@ -338,8 +346,8 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
         }
         vec3 o, d;
         fxTexelRay(q, o, d);
-        vec3 delta = (o + sampleDepth * d - p) * inverseRadius;
-        float distanceSquared = dot(delta, delta);
+        vec3 delta = (o + sampleDepth * d - p) * inverseReach;
+        float distanceSquared = dot(delta, delta) * reachSquared; // (in units of R)
         // The texel is off the slice by up to fxStep / sqrt 2 texels: slide it
         // into the slice plane along the receiver's tangent plane, which
         // keeps its height above that plane, so a flat receiver's own

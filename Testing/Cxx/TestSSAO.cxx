@@ -604,6 +604,31 @@ int TestSSAO(int, char*[])
     FX_CHECK(pattern < 1e-4, "no noise-tile pattern on an open plane (horizon-based)");
   }
 
+  // 3b. The same plane under a radius far beyond the scene (1e20 against a
+  // plane a few units wide: a user's setting, or a default radius from the
+  // bounds of one huge prop): the steps stop at the image's diagonal, and
+  // their offsets, in units of R, were below 1e-15, where a square's floor
+  // of 1e-30 bent every elevation towards the view: a tilted open plane
+  // read as occluded.
+  for (double elevation : { 30.0, 10.0 })
+  {
+    Setup s = MakeSetup(window);
+    ViewPlane(s, elevation);
+    vtkFXSSAOPass* ssao = s.Pipeline->GetSSAOPass();
+    ssao->SetMethod(vtkFXSSAOPass::Horizon);
+    ssao->SetFalloff(vtkFXSSAOPass::Binary);
+    ssao->SetRadius(1e20);
+    ssao->SetHalfResolution(false);
+    window->Render();
+    const auto ao = OcclusionAtPixels(ssao->GetOutputTexture());
+    const auto world = WorldPositions(s.Renderer, s.Pipeline->GetGBufferPass());
+    int inside = 0;
+    const float lowest = LowestOnPlane(ao, world, radius, inside);
+    std::cout << "horizon, plane at " << elevation << " degrees, radius 1e20: lowest raw " << lowest
+              << " over " << inside << " pixels" << std::endl;
+    FX_CHECK(inside > 1000 && lowest >= 0.99f, "a flat plane is unoccluded under a huge radius");
+  }
+
   // 4. Where occluders leave the tile's pattern in the raw estimate (the
   // crease's floor and wall), the box kernel of radius 2, which holds each
   // tile entry once up to the depth weights, leaves less of it than the
