@@ -18,17 +18,20 @@
  *
  * Cost: 12 bytes per pixel (colour 8, depth 4), a blit in and a full-screen
  * pass out; the depth is copied in only when the renderer keeps the depth of
- * the layers below (PreserveDepthBuffer, or Erase off), otherwise cleared.
+ * the layers below or of an earlier frame (PreserveDepthBuffer, or Erase off
+ * on it or its window), otherwise cleared.
  *
  * The depth texture has the format of the window's depth buffer, so that
  * both blits (the copy in, and VTK's translucent pass copying the target's
  * depth into its own texture, of the format it picks from the window) find
  * the formats they need equal; a multisampled window's depth is resolved.
  *
- * Limitations: the depth of the layers below is kept only when the window's
- * depth buffer can be copied (a warning says when it cannot); the target covers the renderer's viewport from (0, 0), so a volume
- * in a renderer whose viewport does not start at the window's corner is
- * placed as VTK 9.1's own image-processing passes place it (wrongly).
+ * The target covers the renderer's viewport from (0, 0); volumes drawn
+ * into it read their corner from the GL viewport (vtkFXVolumePass), so a
+ * renderer whose viewport is offset in the window draws them in place.
+ *
+ * Limitation: the depth of the layers below is kept only when the window's
+ * depth buffer can be copied (a warning says when it cannot).
  */
 #ifndef vtkFXHDRTargetPass_h
 #define vtkFXHDRTargetPass_h

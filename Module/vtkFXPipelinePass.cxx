@@ -13,6 +13,7 @@
 #include "vtkFXSelectionPass.h"
 #include "vtkFXTimedSequencePass.h"
 #include "vtkFXTranslucentPass.h"
+#include "vtkFXVolumePass.h"
 
 #include "vtkActor.h"
 #include "vtkAssembly.h"
@@ -37,7 +38,6 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
-#include "vtkVolumetricPass.h"
 
 #include <algorithm>
 #include <sstream>
@@ -219,7 +219,7 @@ vtkFXPipelinePass::vtkFXPipelinePass()
   this->GBufferPass = vtkSmartPointer<vtkFXGBufferPass>::New();
   this->CompositePass = vtkSmartPointer<vtkFXCompositePass>::New();
   this->TranslucentPass = vtkSmartPointer<vtkFXTranslucentPass>::New();
-  this->VolumetricPass = vtkSmartPointer<vtkVolumetricPass>::New();
+  this->VolumetricPass = vtkSmartPointer<vtkFXVolumePass>::New();
   this->OverlayPass = vtkSmartPointer<vtkOverlayPass>::New();
   this->AntiAliasingPass = vtkSmartPointer<vtkFXAntiAliasingPass>::New();
   this->ForwardOpaquePass = vtkSmartPointer<vtkFXForwardOpaquePass>::New();

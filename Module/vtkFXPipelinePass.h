@@ -72,7 +72,7 @@ class vtkRenderer;
 class vtkOverlayPass;
 class vtkHiddenLineRemovalPass;
 class vtkFXAntiAliasingPass;
-class vtkVolumetricPass;
+class vtkFXVolumePass;
 class vtkWindow;
 
 class VTKFX_EXPORT vtkFXPipelinePass : public vtkRenderPass
@@ -315,7 +315,7 @@ protected:
   vtkSmartPointer<vtkFXGBufferPass> GBufferPass;
   vtkSmartPointer<vtkFXCompositePass> CompositePass;
   vtkSmartPointer<vtkFXTranslucentPass> TranslucentPass;
-  vtkSmartPointer<vtkVolumetricPass> VolumetricPass;
+  vtkSmartPointer<vtkFXVolumePass> VolumetricPass;
   vtkSmartPointer<vtkOverlayPass> OverlayPass;
   vtkSmartPointer<vtkFXAntiAliasingPass> AntiAliasingPass;
   bool AntiAliasingRan = false;

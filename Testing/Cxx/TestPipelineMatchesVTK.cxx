@@ -6,6 +6,7 @@
 // pixel may differ by more than MaxDifference grey levels. Both images come
 // from the same window in the same process. So must it inside vtkSSAAPass
 // (its delegate draws into a larger framebuffer of its own).
+#include "vtkFXBloomPass.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
@@ -294,6 +295,41 @@ int CheckStepsOutsideOpaque(vtkRenderWindow* window)
     },
     &passes);
   report("a wireframe sphere with hidden-line removal", r, passes, "gbuffer", "");
+
+  // A volume in a renderer on the window's right half, with a post-process
+  // effect on (a glow threshold nothing reaches keeps the HDR target,
+  // whose viewport starts at 0): the ray caster reads its corner from the
+  // GL viewport (vtkFXVolumePass); it took the renderer's place in the
+  // window, copied its depth from outside the target and cast its rays
+  // from the wrong texels.
+  {
+    window->GetRenderers()->RemoveAllItems();
+    vtkNew<vtkRenderer> left;
+    left->SetViewport(0.0, 0.0, 0.5, 1.0);
+    left->SetBackground(0.2, 0.2, 0.3);
+    window->AddRenderer(left);
+    vtkNew<vtkRenderer> right;
+    right->SetViewport(0.5, 0.0, 1.0, 1.0);
+    window->AddRenderer(right);
+    std::string error;
+    vtkFXScenes::Populate(right, "scene:volume", vtkFXScenes::Options(), error);
+    window->Render();
+    const auto forward = vtkFXScenes::Capture(window);
+    vtkNew<vtkFXPipelinePass> pipeline;
+    vtkNew<vtkFXBloomPass> bloom;
+    bloom->SetThreshold(1e4);
+    pipeline->AddEffect("bloom", bloom);
+    right->SetPass(pipeline);
+    window->Render();
+    const auto deferred = vtkFXScenes::Capture(window);
+    passes = vtkFXTest::Passes(pipeline);
+    unsigned char background[3];
+    vtkFXScenes::BackgroundBytes(right, background);
+    r.PSNR = vtkFXScenes::PSNR(forward, deferred, background);
+    r.MaxDifference = vtkFXScenes::MaxDifference(forward, deferred);
+    right->SetPass(nullptr);
+    report("a volume in the right half's renderer, inside the HDR target", r, passes, "hdr-target", "");
+  }
 
   // The renderer's FXAA, as VTK runs it. FXAA moves edge pixels by tens of
   // levels, and where the two inputs differ by a level or two it may
