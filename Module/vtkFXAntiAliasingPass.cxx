@@ -7,7 +7,10 @@
 
 vtkStandardNewMacro(vtkFXAntiAliasingPass);
 
-vtkFXAntiAliasingPass::vtkFXAntiAliasingPass() = default;
+vtkFXAntiAliasingPass::vtkFXAntiAliasingPass()
+  : Filter(vtkSmartPointer<vtkOpenGLFXAAFilter>::New())
+{
+}
 
 vtkFXAntiAliasingPass::~vtkFXAntiAliasingPass() = default;
 
@@ -19,10 +22,6 @@ void vtkFXAntiAliasingPass::Render(const vtkRenderState* s)
   {
     return;
   }
-  if (!this->Filter)
-  {
-    this->Filter = vtkSmartPointer<vtkOpenGLFXAAFilter>::New();
-  }
   // (as vtkRenderer::UpdateGeometry configures its own filter)
   if (renderer->GetFXAAOptions())
   {
@@ -33,8 +32,5 @@ void vtkFXAntiAliasingPass::Render(const vtkRenderState* s)
 
 void vtkFXAntiAliasingPass::ReleaseGraphicsResources(vtkWindow*)
 {
-  if (this->Filter)
-  {
-    this->Filter->ReleaseGraphicsResources();
-  }
+  this->Filter->ReleaseGraphicsResources();
 }

@@ -16,9 +16,7 @@
 #include "vtkFXVolumePass.h"
 
 #include "vtkActor.h"
-#include "vtkAssembly.h"
 #include "vtkAssemblyNode.h"
-#include "vtkProp3DCollection.h"
 #include "vtkAssemblyPath.h"
 #include "vtkCameraPass.h"
 #include "vtkPropCollection.h"
@@ -32,7 +30,6 @@
 #include "vtkOpenGLRenderer.h"
 #include "vtkOverlayPass.h"
 #include "vtkProp.h"
-#include "vtkPropAssembly.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderWindow.h"
@@ -92,41 +89,6 @@ void AddMaterialTerms(vtkActor* actor, vtkFXSceneInfo& scene, bool& emissive)
   }
 }
 
-// Whether VTK's volume step draws something of `prop`: a volume, a
-// vtkLODProp3D (whose levels may be volumes), or an assembly holding one
-// (vtkAssembly and vtkPropAssembly draw their volume parts there).
-bool DrawsVolumes(vtkProp* prop)
-{
-  if (prop->IsA("vtkVolume") || prop->IsA("vtkLODProp3D"))
-  {
-    return true;
-  }
-  vtkCollection* parts = nullptr;
-  if (auto* assembly = vtkAssembly::SafeDownCast(prop))
-  {
-    parts = assembly->GetParts();
-  }
-  else if (auto* propAssembly = vtkPropAssembly::SafeDownCast(prop))
-  {
-    parts = propAssembly->GetParts();
-  }
-  if (!parts)
-  {
-    return false;
-  }
-  vtkCollectionSimpleIterator it;
-  parts->InitTraversal(it);
-  while (vtkObject* part = parts->GetNextItemAsObject(it))
-  {
-    vtkProp* p = vtkProp::SafeDownCast(part);
-    if (p && p->GetVisibility() && DrawsVolumes(p))
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
 // Adds one prop of the renderer to the scene summary.
 void AnalyzeProp(vtkProp* prop, vtkFXSceneInfo& scene)
 {
@@ -154,7 +116,7 @@ void AnalyzeProp(vtkProp* prop, vtkFXSceneInfo& scene)
     scene.VolumeProps.push_back(prop);
     return;
   }
-  if (DrawsVolumes(prop))
+  if (!vtkFXRenderUtilities::GetVolumesDrawn(prop).empty())
   {
     scene.VolumeProps.push_back(prop); // (its other parts are sorted below)
   }

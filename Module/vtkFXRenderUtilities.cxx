@@ -849,9 +849,8 @@ double Stretch(vtkMatrix4x4* matrix)
 
 int vtkFXRenderUtilities::GetReachedBounds(vtkProp* prop, double splatReach, double bounds[6])
 {
-  using RU = vtkFXRenderUtilities;
-  const int kind = RU::GetDrawnBounds(prop, bounds);
-  if (kind != RU::DrawsWithin)
+  const int kind = GetDrawnBounds(prop, bounds);
+  if (kind != DrawsWithin)
   {
     return kind;
   }
@@ -865,15 +864,15 @@ int vtkFXRenderUtilities::GetReachedBounds(vtkProp* prop, double splatReach, dou
       continue; // (not drawn)
     }
     double partBounds[6];
-    const int partKind = part == prop ? kind : RU::GetDrawnBounds(part, partBounds);
-    if (partKind == RU::DrawsNothing)
+    const int partKind = part == prop ? kind : GetDrawnBounds(part, partBounds);
+    if (partKind == DrawsNothing)
     {
       continue;
     }
-    if (!part->GetUseBounds() || partKind == RU::DrawsAnywhere)
+    if (!part->GetUseBounds() || partKind == DrawsAnywhere)
     {
       vtkMath::UninitializeBounds(bounds);
-      return RU::DrawsAnywhere;
+      return DrawsAnywhere;
     }
     vtkActor* actor = vtkActor::SafeDownCast(part);
     if (!actor)
@@ -883,13 +882,13 @@ int vtkFXRenderUtilities::GetReachedBounds(vtkProp* prop, double splatReach, dou
     if (actor->GetProperty()->GetPointSize() > 1.0f || actor->GetProperty()->GetLineWidth() > 1.0f)
     {
       vtkMath::UninitializeBounds(bounds);
-      return RU::DrawsAnywhere;
+      return DrawsAnywhere;
     }
     if (auto* splats = vtkPointGaussianMapper::SafeDownCast(actor->GetMapper()))
     {
       const double scale = SplatScale(splats);
       const double perScale = splatReach < 0.0 ? 2.0 * splats->GetTriangleScale() : splatReach;
-      reach = std::max(reach, perScale * scale * Stretch(RU::PathMatrix(prop, path)));
+      reach = std::max(reach, perScale * scale * Stretch(PathMatrix(prop, path)));
     }
   }
   for (int i = 0; i < 6; ++i)
@@ -899,9 +898,28 @@ int vtkFXRenderUtilities::GetReachedBounds(vtkProp* prop, double splatReach, dou
   if (!std::all_of(bounds, bounds + 6, [](double v) { return std::isfinite(v); }))
   {
     vtkMath::UninitializeBounds(bounds);
-    return RU::DrawsAnywhere;
+    return DrawsAnywhere;
   }
-  return RU::DrawsWithin;
+  return DrawsWithin;
+}
+
+std::vector<vtkProp*> vtkFXRenderUtilities::GetVolumesDrawn(vtkProp* prop)
+{
+  if (prop->IsA("vtkLODProp3D"))
+  {
+    return { prop };
+  }
+  std::vector<vtkProp*> volumes;
+  prop->InitPathTraversal();
+  while (vtkAssemblyPath* path = prop->GetNextPath())
+  {
+    vtkProp* part = path->GetLastNode()->GetViewProp();
+    if (part && part->IsA("vtkVolume") && (part == prop || part->GetVisibility()))
+    {
+      volumes.push_back(part);
+    }
+  }
+  return volumes;
 }
 
 bool vtkFXRenderUtilities::KeepsEarlierDepth(vtkRenderer* renderer)

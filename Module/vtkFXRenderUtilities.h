@@ -322,6 +322,15 @@ public:
   static int GetReachedBounds(vtkProp* prop, double splatReach, double bounds[6]);
 
   /**
+   * The props through which `prop` draws volumes in VTK's volume step, each
+   * holding the mapper's property keys: every vtkVolume on its paths (itself,
+   * or a visible part of an assembly), or the prop itself for a
+   * vtkLODProp3D, which hands its keys to the level it draws. Empty when it
+   * draws none.
+   */
+  static std::vector<vtkProp*> GetVolumesDrawn(vtkProp* prop);
+
+  /**
    * Whether the framebuffer holds depth from before this renderer's frame
    * (the layers below, or an earlier frame): the renderer preserves its
    * depth, or it or its window does not erase (vtkCameraPass clears only
