@@ -1,5 +1,7 @@
 #include "vtkFXBloomPass.h"
 
+#include "vtkFXCompositePass.h"
+
 #include "vtkFXBloomDownsampleFS.h"
 #include "vtkFXBloomMirror.h"
 #include "vtkFXBloomPrefilterFS.h"
@@ -130,6 +132,10 @@ bool vtkFXBloomPass::HasWork(const vtkFXSceneInfo& scene)
   const bool forward3D = std::any_of(scene.ForwardOpaqueProps.begin(),
     scene.ForwardOpaqueProps.end(), [](vtkProp* prop) { return !vtkActor2D::SafeDownCast(prop); });
   this->MasksHiddenEmission = this->ReadsEmission && (forward3D || scene.KeepsLowerDepth);
+  // Translucent props and volumes drawn over an emitter dim its glow by
+  // what they let through (vtkFXCompositePass::SetMarksTransmittance),
+  // where their screen rectangles meet the emitters'.
+  this->DimsEmissionByCoverage = this->ReadsEmission && this->MayCoverEmitters(scene);
   // A threshold reads the lit image, whatever drew it (translucent props
   // and volumes too, with no opaque prop).
   const bool source = this->ReadsEmission || this->Threshold >= 0.0;
@@ -189,6 +195,45 @@ double vtkFXBloomPass::GetLevelSigma(int k)
   return std::sqrt(variance);
 }
 
+bool vtkFXBloomPass::ProjectToScreen(
+  vtkRenderer* ren, const double bounds[6], double ndcMin[3], double ndcMax[3])
+{
+  vtkMatrix4x4* m = ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
+    ren->GetTiledAspectRatio(), -1, 1);
+  return vtkFXRenderUtilities::ProjectBox(bounds, &m->Element[0][0], ndcMin, ndcMax) == 0;
+}
+
+bool vtkFXBloomPass::MayCoverEmitters(const vtkFXSceneInfo& scene) const
+{
+  if (scene.TranslucentProps.empty() && scene.VolumeProps.empty())
+  {
+    return false;
+  }
+  double emitters[2][3];
+  if (!scene.Renderer || !vtkMath::AreBoundsInitialized(this->EmissiveBounds) ||
+    !ProjectToScreen(scene.Renderer, this->EmissiveBounds, emitters[0], emitters[1]))
+  {
+    return true; // the emitters may be anywhere on screen
+  }
+  for (const auto* props : { &scene.TranslucentProps, &scene.VolumeProps })
+  {
+    for (vtkProp* prop : *props)
+    {
+      double b[6], lo[3], hi[3];
+      const int kind = vtkFXRenderUtilities::GetReachedBounds(prop, -1.0, b);
+      if (kind == vtkFXRenderUtilities::DrawsAnywhere ||
+        (kind == vtkFXRenderUtilities::DrawsWithin &&
+          (!ProjectToScreen(scene.Renderer, b, lo, hi) ||
+            (lo[0] <= emitters[1][0] && hi[0] >= emitters[0][0] && lo[1] <= emitters[1][1] &&
+              hi[1] >= emitters[0][1]))))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 void vtkFXBloomPass::ComputeGlowRect(vtkRenderer* ren, int width, int height, int levels)
 {
   int* rect = this->GlowRect;
@@ -200,10 +245,8 @@ void vtkFXBloomPass::ComputeGlowRect(vtkRenderer* ren, int width, int height, in
   {
     return; // lit light may glow anywhere
   }
-  vtkMatrix4x4* m = ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
-    ren->GetTiledAspectRatio(), -1, 1);
   double lo[3], hi[3];
-  if (vtkFXRenderUtilities::ProjectBox(this->EmissiveBounds, &m->Element[0][0], lo, hi) > 0)
+  if (!ProjectToScreen(ren, this->EmissiveBounds, lo, hi))
   {
     return; // reaches behind the camera: anywhere
   }
@@ -267,10 +310,15 @@ vtkShaderProgram* vtkFXBloomPass::ReadyProgram(
 }
 
 bool vtkFXBloomPass::Prefilter(vtkOpenGLRenderWindow* window, vtkTextureObject* color,
-  vtkTextureObject* emission, vtkTextureObject* targetDepth)
+  vtkTextureObject* emission, vtkTextureObject* targetDepth, vtkTextureObject* coverage)
 {
   vtkTextureObject* surfaceDepth = this->GBuffer ? this->GBuffer->GetDepthTexture() : nullptr;
   vtkTextureObject* full = color ? color : emission;
+  // (the target's alpha, read where it is the emission's size)
+  coverage = emission && coverage && coverage->GetWidth() == emission->GetWidth() &&
+      coverage->GetHeight() == emission->GetHeight()
+    ? coverage
+    : nullptr;
   const int width = static_cast<int>(full->GetWidth());
   const int height = static_cast<int>(full->GetHeight());
   // (a multisampled depth cannot be read as a plain texture: no mask)
@@ -286,7 +334,7 @@ bool vtkFXBloomPass::Prefilter(vtkOpenGLRenderWindow* window, vtkTextureObject* 
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
     std::string("//VTK::System::Dec\n#define FX_EMISSION ") + (emission ? "1" : "0") +
       "\n#define FX_THRESHOLD " + (color ? "1" : "0") + "\n#define FX_MASK " +
-      (mask ? "1" : "0") + "\n",
+      (mask ? "1" : "0") + "\n#define FX_COVERAGE " + (coverage ? "1" : "0") + "\n",
     false);
   vtkFXRenderUtilities::RenderTargetScope target(window, this->PrefilterTarget, this->Prefiltered);
   vtkShaderProgram* program = target.IsComplete()
@@ -296,6 +344,17 @@ bool vtkFXBloomPass::Prefilter(vtkOpenGLRenderWindow* window, vtkTextureObject* 
   {
     return false;
   }
+  // Only what is read: the glow's rectangle and the reach of the first
+  // step down past it (its texels run 2 past the
+  // rectangle's, 2 pixels each, and their 4x4 boxes 1 pixel further).
+  const int size[2] = { width, height };
+  int rect[4];
+  for (int a = 0; a < 2; ++a)
+  {
+    rect[a] = std::max(0, this->GlowRect[a] - 6);
+    rect[a + 2] = std::min(size[a], this->GlowRect[a + 2] + 6);
+  }
+  vtkFXRenderUtilities::ScissorScope scissor(window->GetState(), rect);
   std::vector<vtkTextureObject*> bound;
   const auto bind = [&](const char* name, vtkTextureObject* texture) {
     texture->Activate();
@@ -311,6 +370,11 @@ bool vtkFXBloomPass::Prefilter(vtkOpenGLRenderWindow* window, vtkTextureObject* 
   if (emission)
   {
     bind("fxEmission", emission);
+  }
+  if (coverage)
+  {
+    bind("fxCoverage", coverage);
+    program->SetUniformf("fxAlphaMark", static_cast<float>(vtkFXCompositePass::TransmittanceMark));
   }
   if (mask)
   {
@@ -333,7 +397,7 @@ void vtkFXBloomPass::ReleasePrefilter(vtkWindow* window)
 }
 
 bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject* color,
-  vtkTextureObject* targetDepth, int levels)
+  vtkTextureObject* targetDepth, vtkTextureObject* coverage, int levels)
 {
   vtkTextureObject* emission =
     this->ReadsEmission && this->GBuffer ? this->GBuffer->GetChannelTexture(GB::Emission) : nullptr;
@@ -347,9 +411,10 @@ bool vtkFXBloomPass::Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject*
   // channel, bilinearly, through the sampler object (without sampler
   // objects, before GL 3.3, through the prefilter too, which fetches
   // texels).
-  const bool prefiltered = threshold || (emission && (targetDepth || !this->LinearSampler));
+  const bool prefiltered =
+    threshold || (emission && (targetDepth || coverage || !this->LinearSampler));
   if (prefiltered &&
-    !this->Prefilter(window, threshold ? color : nullptr, emission, targetDepth))
+    !this->Prefilter(window, threshold ? color : nullptr, emission, targetDepth, coverage))
   {
     return false;
   }
@@ -566,7 +631,11 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
   // the G-buffer's.
   vtkTextureObject* targetDepth =
     this->MasksHiddenEmission && target ? target->GetDepthAttachmentAsTextureObject() : nullptr;
-  if (this->Downsample(window, color, targetDepth, levels) && this->Upsample(window, levels))
+  // The target's alpha, which tells the emitters' transmittance
+  // (vtkFXCompositePass::SetMarksTransmittance).
+  vtkTextureObject* coverage = this->DimsEmissionByCoverage ? color : nullptr;
+  if (this->Downsample(window, color, targetDepth, coverage, levels) &&
+    this->Upsample(window, levels))
   {
     this->AddGlow(window);
   }

@@ -39,10 +39,20 @@
  * Emission hidden by what is drawn in front of its surface (opaque props
  * the G-buffer does not capture, drawn forward; the depth of the layers
  * below) does not glow: where such props or layers are in the frame, the
- * prefilter compares the G-buffer's depth with the target's.
+ * prefilter compares the G-buffer's depth with the target's. Translucent
+ * props and volumes drawn over an emitter dim its glow as they dim the
+ * emitter, by the fraction T of its light they let through: the composite
+ * marks the lit surfaces' alpha, which the translucent and volume steps'
+ * blending scales by T, and the prefilter reads T back (exact for VTK's
+ * volumes and depth peeling, within 0.001 for its order-independent
+ * transparency; see vtkFXCompositePass::SetMarksTransmittance). Only when
+ * such a prop's screen rectangle meets the emitters' (GetReadsTransmittance).
+ * Cost then: the HDR target and the prefilter (one full-resolution pass
+ * over the glow's rectangle, two texel reads).
  *
  * Stage PostProcess; vtkFXPipelinePass keeps its HDR target while it runs
- * with a threshold, or with emission that may be hidden (GetNeedsHDRTarget).
+ * with a threshold, or with emission that may be hidden or dimmed
+ * (GetNeedsHDRTarget).
  * Work: when a visible prop is emissive (vtkFXSceneInfo::EmissiveProps) or
  * a threshold is set; otherwise the pass, its textures and the emission
  * channel are left out and the image is exactly the one without bloom. The
@@ -179,9 +189,16 @@ public:
    */
   bool GetNeedsHDRTarget() override
   {
-    return this->Threshold >= 0.0 || this->MasksHiddenEmission;
+    return this->Threshold >= 0.0 || this->MasksHiddenEmission || this->DimsEmissionByCoverage;
   }
   unsigned int GetRequiredChannels() override;
+
+  /**
+   * Whether translucent props or volumes may be drawn over an emitter
+   * this frame (from HasWork): the glow then reads the emitters'
+   * transmittance.
+   */
+  bool GetReadsTransmittance() override { return this->DimsEmissionByCoverage; }
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -193,20 +210,30 @@ protected:
   struct Level;
   // (`targetDepth`: the depth of the target the glow goes onto, where
   // the emission of hidden surfaces must be left out; else nullptr)
+  // (`coverage`: the target's colour, whose alpha is 1 - T over the
+  // emitters, when something may be drawn over them; else nullptr)
   bool Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject* color,
-    vtkTextureObject* targetDepth, int levels);
+    vtkTextureObject* targetDepth, vtkTextureObject* coverage, int levels);
   /**
    * With a threshold, or emission to mask by depth: the glow's source per
    * full-resolution texel, into Prefiltered (`color` with a threshold,
    * `targetDepth` to mask, else nullptr).
    */
   bool Prefilter(vtkOpenGLRenderWindow* window, vtkTextureObject* color,
-    vtkTextureObject* emission, vtkTextureObject* targetDepth);
+    vtkTextureObject* emission, vtkTextureObject* targetDepth, vtkTextureObject* coverage);
   void ReleasePrefilter(vtkWindow* window);
   bool Upsample(vtkOpenGLRenderWindow* window, int levels);
   void AddGlow(vtkOpenGLRenderWindow* window); // adds GetGlowTexture()
   vtkShaderProgram* ReadyProgram(int which, vtkOpenGLRenderWindow* window, const std::string& fs);
   void ComputeGlowRect(vtkRenderer* ren, int width, int height, int levels);
+  // The normalized device coordinates `bounds` cover in the renderer's
+  // view; false when they reach the camera's plane (anywhere on screen).
+  static bool ProjectToScreen(
+    vtkRenderer* ren, const double bounds[6], double ndcMin[3], double ndcMax[3]);
+  // Whether a translucent prop or a volume may be drawn over an emitter:
+  // their screen rectangles meet (or one cannot be told). From HasWork,
+  // after EmissiveBounds.
+  bool MayCoverEmitters(const vtkFXSceneInfo& scene) const;
   void LevelRect(int k, int rect[4]) const;
   static std::string WithMirror(const char* shader, const std::string& defines);
 
@@ -218,6 +245,7 @@ protected:
   bool FireflySuppression = true;
   bool ReadsEmission = true; // this frame: UseEmission and some prop emits (HasWork)
   bool MasksHiddenEmission = false; // this frame: something may hide an emitter (HasWork)
+  bool DimsEmissionByCoverage = false; // this frame: something may be drawn over an emitter
   bool WarnedNoLitImage = false; // a threshold without an HDR target (said once)
 
   std::vector<std::unique_ptr<Level>> Levels;

@@ -643,10 +643,19 @@ void vtkFXCompositePass::Draw(vtkOpenGLRenderer* ren)
     state->vtkglDepthMask(GL_FALSE);
   }
   // Blend like VTK's opaque pass, so that opacity < 1 forced opaque
-  // (vtkActor::ForceOpaque) shows the background as it does forward.
+  // (vtkActor::ForceOpaque) shows the background as it does forward;
+  // alpha scaled by the mark while it is asked for (SetMarksTransmittance).
   state->vtkglEnable(GL_BLEND);
-  state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA,
+    this->MarksTransmittance ? GL_CONSTANT_ALPHA : GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  float blendColor[4];
+  glGetFloatv(GL_BLEND_COLOR, blendColor);
+  if (this->MarksTransmittance)
+  {
+    glBlendColor(0.0f, 0.0f, 0.0f, static_cast<float>(TransmittanceMark));
+  }
   this->Quad.Helper->Render();
+  glBlendColor(blendColor[0], blendColor[1], blendColor[2], blendColor[3]);
 }
 
 namespace

@@ -117,6 +117,30 @@ public:
 
   ///@{
   /**
+   * Mark the lit surfaces' alpha so that what is drawn over them later
+   * tells how much of their light it lets through (default off; the
+   * pipeline turns it on, with its HDR target, while an effect asks,
+   * vtkFXEffectPass::GetReadsTransmittance). The composite then blends
+   * alpha with TransmittanceMark x the surface's opacity in place of its
+   * opacity, so an opaque surface's pixel holds K = TransmittanceMark;
+   * VTK's translucent and volume steps blend alpha as
+   * a' = f + (1 - a_s) a with f in [0, 1] (f = a_s for "over", its
+   * volumes' rays and depth peeling; a_s^2 for the final blend of VTK
+   * 9.1's order-independent transparency), so the pixel ends at T K + f,
+   * T the fraction of the surface's light that reaches the image, and
+   * T = (a - 1) / (K - 1), exactly for "over" and within 1 / (K - 1)
+   * for the other. An opaque prop drawn forward over it leaves 1: T = 0.
+   * Colours blend as without the mark, and the HDR target's write-back
+   * clamps alpha to 1, which is what an opaque surface's pixel holds
+   * under "over" blending.
+   */
+  vtkSetMacro(MarksTransmittance, bool);
+  vtkGetMacro(MarksTransmittance, bool);
+  static constexpr double TransmittanceMark = 1024.0; // (exact in a half float, as is K - 1)
+  ///@}
+
+  ///@{
+  /**
    * Write the depth in a pre-pass and light only the pixels that hold a
    * surface (default on): the lighting pass then draws at the far plane
    * against that depth with the test GL_GREATER, which rejects the
@@ -296,6 +320,7 @@ protected:
   bool UseSpecular = true;
   bool UseAmbient = true;
   bool UseEmission = false;
+  bool MarksTransmittance = false;
 
   // Each misconfiguration is reported once.
   bool WarnedSpecularWithoutDepth = false;

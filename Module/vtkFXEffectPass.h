@@ -148,6 +148,15 @@ public:
    */
   virtual bool GetNeedsHDRTarget() { return true; }
 
+  /**
+   * Whether the effect, at the PostProcess stage, reads from the HDR
+   * target's alpha how much of each lit surface's light the translucent
+   * props and volumes drawn over it let through
+   * (vtkFXCompositePass::SetMarksTransmittance; default no). Asked after
+   * HasWork; such an effect needs the HDR target.
+   */
+  virtual bool GetReadsTransmittance() { return false; }
+
   ///@{
   /**
    * Effects that change how VTK's own forward step shades translucent

@@ -271,6 +271,7 @@ vtkFXHDRTargetPass* vtkFXPipelinePass::GetHDRTargetPass()
 vtkFXSceneInfo vtkFXPipelinePass::AnalyzeScene(const vtkRenderState* s) const
 {
   vtkFXSceneInfo scene;
+  scene.Renderer = s->GetRenderer();
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     AnalyzeProp(s->GetPropArray()[i], scene);
@@ -656,11 +657,14 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
   }
   this->ActivateEffects(order, window);
 
-  bool postProcess = false; // a post-process effect needs the HDR target
+  bool postProcess = false;   // a post-process effect needs the HDR target
+  bool transmittance = false; // and one reads the lit surfaces' transmittance there
   for (size_t i : order)
   {
     E* effect = this->Effects[i].Effect;
-    postProcess = postProcess || (effect->GetStage() == E::PostProcess && effect->GetNeedsHDRTarget());
+    const bool inTarget = effect->GetStage() == E::PostProcess && effect->GetNeedsHDRTarget();
+    postProcess = postProcess || inTarget;
+    transmittance = transmittance || (inTarget && effect->GetReadsTransmittance());
   }
   if (this->HDRTargetRan && !postProcess)
   {
@@ -682,6 +686,7 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
     composite->SetUseAmbient(scene.AnyAmbient);
     composite->SetUseSpecular(scene.AnySpecular);
     composite->SetUseEmission(scene.AnyEmissiveColor);
+    composite->SetMarksTransmittance(transmittance);
     // (no prop the composite lights: no normal or depth for lighting)
     unsigned int channels =
       composite->GetRequiredChannels(scene.AnyLitProp ? scene.LightingComplexity : 0);

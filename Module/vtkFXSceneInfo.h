@@ -17,9 +17,11 @@
 
 class vtkLight;
 class vtkProp;
+class vtkRenderer;
 
 struct vtkFXSceneInfo
 {
+  vtkRenderer* Renderer = nullptr; // whose frame (its camera places the props on screen)
   std::vector<vtkProp*> OpaqueProps;        // captured by the G-buffer
   std::vector<vtkProp*> ForwardOpaqueProps; // opaque, drawn forward (vtkFXForwardOpaquePass)
   std::vector<vtkProp*> TranslucentProps;   // with translucent polygonal geometry

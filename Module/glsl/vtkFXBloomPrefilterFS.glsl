@@ -33,6 +33,14 @@ uniform float fxKnee;         // knee x threshold
 // depth read as a float and written back may differ by 3e-8.)
 uniform sampler2D fxSurfaceDepth;
 uniform sampler2D fxTargetDepth;
+// FX_COVERAGE: the target's colour, whose alpha over an emitter is
+// T fxAlphaMark + f, f in [0, 1] (vtkFXCompositePass::SetMarksTransmittance:
+// the composite wrote fxAlphaMark there, and what was drawn over it since
+// blended alpha with the factor 1 - a_s on what was there), T the fraction
+// of the emitter's light that reaches the image: its emission glows T
+// times, as the emitter shows T times.
+uniform float fxAlphaMark;
+uniform sampler2D fxCoverage;
 
 //VTK::Output::Dec
 
@@ -61,6 +69,10 @@ void main()
   vec3 emission = vec3(0.0);
 #if FX_EMISSION
   emission = texelFetch(fxEmission, texel, 0).rgb;
+#if FX_COVERAGE
+  float alpha = texelFetch(fxCoverage, texel, 0).a;
+  emission *= isnan(alpha) ? 1.0 : clamp((alpha - 1.0) / (fxAlphaMark - 1.0), 0.0, 1.0);
+#endif
 #if FX_MASK
   bool hidden =
     texelFetch(fxSurfaceDepth, texel, 0).r > texelFetch(fxTargetDepth, texel, 0).r + 1e-7;

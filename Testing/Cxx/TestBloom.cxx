@@ -41,6 +41,13 @@
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkGPUVolumeRayCastMapper.h"
+#include "vtkImageData.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPlaneSource.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 #include "vtkTextActor.h"
 #include "vtkOpenGLState.h"
 #include "vtkFXOpenGL.h"
@@ -811,6 +818,149 @@ int CheckHiddenEmitter(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
+// What is drawn over an emitter after the opaque layer dims its glow by its
+// transmittance T, as it dims the emitter itself: a translucent plane of
+// opacity 0.5 filling the view in front of the sphere (T = 0.5 exactly,
+// under VTK's order-independent transparency and under depth peeling) and
+// a slab of volume between them (opaque: T = 0; black, so it adds no
+// light). The glow is measured against the sphere's glow with nothing in
+// front; the plane's edges lie outside the view, so every emissive pixel
+// sees T. A plane beside the sphere on screen dims nothing and costs
+// nothing: no HDR target for it.
+vtkSmartPointer<vtkActor> TranslucentPlane(double opacity, double xMin = -3.0)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(xMin, -3.0, 0.5);
+  plane->SetPoint1(3.0, -3.0, 0.5);
+  plane->SetPoint2(xMin, 3.0, 0.5);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(plane->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.2, 0.2, 0.2);
+  actor->GetProperty()->SetOpacity(opacity);
+  return actor;
+}
+
+vtkSmartPointer<vtkVolume> BlackSlab(double opacity, double unitDistance)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(5, 5, 3);
+  image->SetSpacing(1.5, 1.5, 0.1);
+  image->SetOrigin(-3.0, -3.0, 0.45);
+  image->AllocateScalars(VTK_FLOAT, 1);
+  auto* values = static_cast<float*>(image->GetScalarPointer());
+  std::fill(values, values + 75, 1.0f);
+  vtkNew<vtkGPUVolumeRayCastMapper> mapper;
+  mapper->SetInputData(image);
+  vtkNew<vtkPiecewiseFunction> opacities;
+  opacities->AddPoint(0.0, opacity);
+  opacities->AddPoint(2.0, opacity);
+  vtkNew<vtkColorTransferFunction> colors;
+  colors->AddRGBPoint(0.0, 0.0, 0.0, 0.0);
+  colors->AddRGBPoint(2.0, 0.0, 0.0, 0.0);
+  auto volume = vtkSmartPointer<vtkVolume>::New();
+  volume->SetMapper(mapper);
+  volume->GetProperty()->SetScalarOpacity(opacities);
+  volume->GetProperty()->SetColor(colors);
+  volume->GetProperty()->SetScalarOpacityUnitDistance(unitDistance);
+  return volume;
+}
+
+int CheckEmitterBehindTranslucency(vtkRenderWindow* window)
+{
+  const double emission[3] = { 4.0, 3.0, 2.0 };
+  struct Case
+  {
+    const char* Name;
+    double Expected, Tolerance;
+    bool Target; // whether the HDR target is expected
+    std::function<void(vtkRenderer*)> Arrange;
+  };
+  const Case cases[] = {
+    { "nothing in front", 1.0, 1e-9, false, [](vtkRenderer*) {} },
+    { "a translucent plane beside it", 1.0, 1e-9, false,
+      [](vtkRenderer* renderer) { renderer->AddActor(TranslucentPlane(0.5, 0.45)); } },
+    { "a translucent plane (opacity 0.5)", 0.5, 0.02, true,
+      [](vtkRenderer* renderer) { renderer->AddActor(TranslucentPlane(0.5)); } },
+    { "the same plane, depth peeling", 0.5, 0.02, true,
+      [](vtkRenderer* renderer) {
+        renderer->AddActor(TranslucentPlane(0.5));
+        renderer->UseDepthPeelingOn();
+      } },
+    { "an opaque volume", 0.0, 0.01, true,
+      [](vtkRenderer* renderer) { renderer->AddVolume(BlackSlab(1.0, 0.01)); } },
+    { "a volume of optical depth ln 2", 0.5, 0.03, true,
+      [](vtkRenderer* renderer) { renderer->AddVolume(BlackSlab(0.5, 0.2)); } },
+  };
+  double whole = 0.0;
+  for (const Case& c : cases)
+  {
+    vtkNew<vtkFXPipelinePass> pipeline;
+    vtkNew<vtkFXBloomPass> bloom;
+    bloom->FireflySuppressionOff();
+    std::vector<unsigned char> without, with;
+    RenderWithoutAndWith(window, emission, pipeline, bloom, without, with, [&c](vtkRenderer* renderer) {
+      c.Arrange(renderer);
+      renderer->ResetCameraClippingRange();
+    });
+    const std::string passes = vtkFXTest::Passes(pipeline);
+    const double glow = GlowTotal(bloom);
+    whole = whole > 0.0 ? whole : glow;
+    std::cout << "an emitter behind " << c.Name << ": glow " << glow << " of " << whole << " ("
+              << glow / whole << ", expected " << c.Expected << ") (" << passes << ")" << std::endl;
+    FX_CHECK(whole > 1000.0, "no glow");
+    FX_CHECK(std::fabs(glow / whole - c.Expected) <= c.Tolerance,
+      c.Name << ": glow " << glow / whole << " of the whole, expected " << c.Expected);
+    FX_CHECK((pipeline->GetHDRTargetBytesPerPixel() > 0) == c.Target, c.Name << ": " << passes);
+    FX_CHECK(std::string(c.Name).find("plane") == std::string::npos ||
+        passes.find("translucent") != std::string::npos,
+      c.Name << ": the plane was not drawn: " << passes);
+    window->GetRenderers()->GetFirstRenderer()->SetPass(nullptr);
+  }
+  // The mark leaves colours alone: a dim emitter on a grey background
+  // behind a plane of opacity 0 (under order-independent transparency and
+  // under depth peeling) or a volume of opacity 0 gives the image it gives
+  // with nothing in front (which brings the HDR target and the mark; a
+  // mark that scaled colours, 1024 x the emitter's less 1023 x the
+  // background, would show as 0).
+  const double dim[3] = { 0.2, 0.1, 0.05 };
+  std::vector<unsigned char> alone;
+  for (int what = 0; what < 4; ++what)
+  {
+    vtkNew<vtkFXPipelinePass> pipeline;
+    vtkNew<vtkFXBloomPass> bloom;
+    std::vector<unsigned char> without, with;
+    RenderWithoutAndWith(window, dim, pipeline, bloom, without, with, [what](vtkRenderer* renderer) {
+      renderer->SetBackground(0.5, 0.5, 0.5);
+      if (what == 1 || what == 2)
+      {
+        renderer->AddActor(TranslucentPlane(0.0));
+        renderer->SetUseDepthPeeling(what == 2);
+      }
+      else if (what == 3)
+      {
+        renderer->AddVolume(BlackSlab(0.0, 0.2));
+      }
+      renderer->ResetCameraClippingRange();
+    });
+    const std::string passes = vtkFXTest::Passes(pipeline);
+    window->GetRenderers()->GetFirstRenderer()->SetPass(nullptr);
+    if (what == 0)
+    {
+      alone = with;
+      continue;
+    }
+    const int difference = vtkFXScenes::MaxDifference(alone, with);
+    std::cout << "a dim emitter behind a plane or volume of opacity 0 (" << what
+              << "): largest difference " << difference << " from nothing in front (" << passes
+              << ")" << std::endl;
+    FX_CHECK(passes.find("hdr-target") != std::string::npos, passes);
+    FX_CHECK(difference <= 1, "case " << what << ": opacity 0 changed the image by " << difference);
+  }
+  return EXIT_SUCCESS;
+}
+
 int CheckBadParameters()
 {
   vtkNew<vtkFXBloomPass> bloom;
@@ -843,6 +993,7 @@ int TestBloom(int, char*[])
   FX_CHECK(CheckEmissionAndThreshold(window) == EXIT_SUCCESS, "emission and threshold");
   FX_CHECK(CheckThresholdWithoutOpaqueProps(window) == EXIT_SUCCESS, "threshold, no opaque prop");
   FX_CHECK(CheckHiddenEmitter(window) == EXIT_SUCCESS, "hidden emitter");
+  FX_CHECK(CheckEmitterBehindTranslucency(window) == EXIT_SUCCESS, "emitter behind translucency");
   FX_CHECK(CheckBadParameters() == EXIT_SUCCESS, "bad parameters");
   // A screenshot at scale 2 of a 200x150 viewport is 300 rows high: the
   // glow reaches as far in it as in a 400x300 viewport.
