@@ -7,6 +7,7 @@
 // framebuffer clamps to [0, 1] itself, and a float one (vtkToneMappingPass
 // or a float vtkFramebufferPass around the pipeline) keeps the HDR values
 // its tone mapping reads (a clamp to 1 flattened every highlight there).
+// FX_WRITE_DEPTH: the depth too (else vtkFXHDRTargetPass blitted it).
 
 in vec2 texCoord;
 uniform sampler2D fxColor;
@@ -19,5 +20,7 @@ void main()
   vec4 c = texture(fxColor, texCoord);
   c = mix(c, vec4(0.0), bvec4(isnan(c.r), isnan(c.g), isnan(c.b), isnan(c.a)));
   gl_FragData[0] = clamp(c, vec4(0.0), vec4(65504.0, 65504.0, 65504.0, 1.0));
+#if FX_WRITE_DEPTH
   gl_FragDepth = texture(fxDepth, texCoord).r;
+#endif
 }

@@ -717,6 +717,7 @@ int TestDepthPrepass()
   auto window = FreshWindow(400, 300);
   for (const std::string input : { "scene:mixed", "scene:splats", "scene:volume", "scene:glyphs" })
   {
+    std::vector<float> depthWithoutEffect; // (one pass)
     // none, ambient occlusion, and a post-process effect (the composite
     // then draws into the HDR target)
     for (int effect : { 0, 1, 2 })
@@ -780,6 +781,26 @@ int TestDepthPrepass()
       // depth: one grey level.)
       FX_CHECK(colourDifference[2] <= 1 && depthDifference[2] <= 2.5e-7f,
         input << ": the depth blit changed the image");
+      // The HDR target writes back the depth it was drawn with (a blit
+      // where the window takes one): the window's depth buffer is the one
+      // the frame without the target leaves.
+      if (effect == 0)
+      {
+        depthWithoutEffect = depth[0];
+      }
+      else if (effect == 2)
+      {
+        float targetDifference = 0.0f;
+        for (size_t i = 0; i < depth[0].size(); ++i)
+        {
+          targetDifference =
+            std::max(targetDifference, std::abs(depthWithoutEffect[i] - depth[0][i]));
+        }
+        std::cout << input << ": the window's depth after the HDR target differs by "
+                  << targetDifference << " from the frame without it" << std::endl;
+        FX_CHECK(targetDifference <= 2.5e-7f, input << ": the HDR target changed the depth by "
+                                                    << targetDifference);
+      }
     }
   }
   // A window asked for 4 samples: with the pre-pass (a blit where the
