@@ -108,10 +108,11 @@ Result RenderAndCompare(vtkRenderWindow* window, const std::string& input, bool 
 // opaque step. It vanished from the image when the G-buffer took it.
 // VTK's forward render of the scene `setup` makes against the pipeline's;
 // `passes` gets the steps the pipeline ran; `between`, when given, changes
-// the renderer after VTK's render.
+// the renderer after VTK's render; `configure`, the pipeline.
 template <typename Setup>
 Result CompareWithVTK(vtkRenderWindow* window, Setup setup, std::string* passes = nullptr,
-  const std::function<void(vtkRenderer*)>& between = nullptr)
+  const std::function<void(vtkRenderer*)>& between = nullptr,
+  const std::function<void(vtkFXPipelinePass*)>& configure = nullptr)
 {
   window->GetRenderers()->RemoveAllItems();
   vtkNew<vtkRenderer> renderer;
@@ -124,6 +125,10 @@ Result CompareWithVTK(vtkRenderWindow* window, Setup setup, std::string* passes 
     between(renderer);
   }
   vtkNew<vtkFXPipelinePass> pipeline;
+  if (configure)
+  {
+    configure(pipeline);
+  }
   renderer->SetPass(pipeline);
   window->Render();
   const auto deferred = vtkFXScenes::Capture(window);
@@ -138,6 +143,24 @@ Result CompareWithVTK(vtkRenderWindow* window, Setup setup, std::string* passes 
   result.MaxDifference = vtkFXScenes::MaxDifference(forward, deferred);
   renderer->SetPass(nullptr);
   return result;
+}
+
+// A sphere over VTK's gradient background, which VTK draws when it clears
+// the renderer's viewport.
+void AddSphereOverGradient(vtkRenderer* renderer)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(24);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  renderer->AddActor(actor);
+  renderer->GradientBackgroundOn();
+  renderer->SetBackground(0.1, 0.1, 0.3);
+  renderer->SetBackground2(0.8, 0.6, 0.4);
+  renderer->ResetCamera();
 }
 
 void AddSkybox(vtkRenderer* renderer)
@@ -412,6 +435,26 @@ int TestPipelineMatchesVTK(int argc, char* argv[])
     std::cout << "a sphere under a vtkSkybox: PSNR " << r.PSNR << " dB, largest difference "
               << r.MaxDifference << "/255" << std::endl;
     failures += (r.PSNR >= 50.0 && r.MaxDifference <= MaxDifference) ? 0 : 1;
+  }
+  // A gradient background is kept, also through the HDR target (a bloom
+  // whose threshold no pixel reaches brings the target and adds no glow).
+  for (const bool target : { false, true })
+  {
+    std::string passes;
+    const Result r = CompareWithVTK(window, AddSphereOverGradient, &passes, nullptr,
+      [target](vtkFXPipelinePass* pipeline) {
+        if (target)
+        {
+          vtkNew<vtkFXBloomPass> bloom;
+          bloom->SetThreshold(65504.0);
+          pipeline->AddEffect("bloom", bloom);
+        }
+      });
+    std::cout << "a sphere over a gradient background" << (target ? " through the HDR target" : "")
+              << ": largest difference " << r.MaxDifference << "/255 (" << passes << ")"
+              << std::endl;
+    failures += r.MaxDifference <= MaxDifference ? 0 : 1;
+    failures += (passes.find("hdr-target") != std::string::npos) == target ? 0 : 1;
   }
   std::cout << "worst PSNR " << worst << " dB over " << 2 * inputs.size() << " renders" << std::endl;
   FX_CHECK(failures == 0, failures << " render(s) below 50 dB or off by more than "
