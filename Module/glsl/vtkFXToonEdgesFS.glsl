@@ -10,10 +10,13 @@
 //     max(|n_p . (q - p)|, |n_q . (p - q)|) > threshold x min(depth),
 //   which is 0 for two pixels of one plane at any angle (a raw depth
 //   difference grows without bound at grazing angles) and scales with the
-//   scene; unlit pixels have no normal and compare depths directly (so
-//   an unlit surface seen at a grazing angle, whose depth changes fast,
-//   can fill with lines: a limitation), as does a lit pixel beside an
-//   unlit one;
+//   scene; an unlit pixel stores no normal: its plane is the one through
+//   its neighbours' positions, on each axis the neighbour nearer in depth
+//   (on its own surface where the other lies across an edge; exact for a
+//   plane), and where it has no covered neighbour on an axis it compares
+//   depths directly, as does a lit pixel beside an unlit one (at a lit
+//   limb the lit side's plane holds the unlit one's point at nearly any
+//   depth);
 // - crease: n_p . n_q < cos(crease angle), both pixels lit.
 // Output (R8): (r + 2 g) / 3 with r = 1 where the pixel and its right
 // neighbour are separated, g = 1 for the neighbour above. FX_SILHOUETTES,
@@ -69,7 +72,8 @@ struct fxSurface
 {
   bool covered;
   bool lit;
-  vec3 normal; // 0 where unlit
+  bool planar; // lit, or unlit with a plane from its neighbours' depths
+  vec3 normal; // 0 where not planar
   float depth;
 };
 
@@ -80,6 +84,7 @@ fxSurface fxSurfaceOf(float depth, vec2 encoded)
   // Background is cleared to depth 0; NaN depth counts as background too.
   s.covered = s.depth > 0.0;
   s.lit = s.covered && !fxIsUnlit(encoded);
+  s.planar = s.lit;
   s.normal = s.lit ? fxDecodeNormal(encoded) : vec3(0.0);
   return s;
 }
@@ -127,6 +132,24 @@ void fxFlagTiles(ivec2 first, ivec2 last)
 }
 #endif
 
+#if FX_SILHOUETTES
+// The unit normal of the plane through an unlit pixel's position and two
+// neighbours' (offsets from it, view space), one per axis: of the two on
+// an axis, the one nearer in depth (`*Gap`: |depth difference|, +inf where
+// not covered). 0 where an axis has no covered neighbour or the offsets
+// are parallel.
+vec3 fxPlaneFromDepths(vec3 toRight, float rightGap, vec3 toLeft, float leftGap, vec3 toAbove,
+  float aboveGap, vec3 toBelow, float belowGap)
+{
+  vec3 across = rightGap <= leftGap ? toRight : toLeft;
+  vec3 up = aboveGap <= belowGap ? toAbove : toBelow;
+  vec3 n = cross(across, up);
+  float length2 = dot(n, n);
+  bool valid = min(rightGap, leftGap) < 1e30 && min(aboveGap, belowGap) < 1e30 && length2 > 0.0;
+  return valid ? n * inversesqrt(max(length2, 1e-37)) : vec3(0.0);
+}
+#endif
+
 // `d`: from a's position to b's (view space).
 float fxSeparated(fxSurface a, fxSurface b, vec3 d)
 {
@@ -134,12 +157,14 @@ float fxSeparated(fxSurface a, fxSurface b, vec3 d)
   // pixel of a block takes.
   float separated = 0.0;
 #if FX_SILHOUETTES
-  // Unlit normals are 0, so only lit sides count in the plane gap. A lit
-  // and an unlit pixel are two primitives: their depth gap counts too (at
-  // a lit limb the lit side's plane holds the unlit one's point at nearly
-  // any depth).
+  // Normals of pixels without a plane are 0: only planar sides count in
+  // the plane gap (`b`, a neighbour, has one only where lit). Their depth
+  // gap counts too where `a` has no plane, or is lit beside an unlit `b`
+  // (two primitives: at a lit limb the lit side's plane holds the unlit
+  // one's point at nearly any depth).
   float planeGap = max(abs(dot(a.normal, d)), abs(dot(b.normal, d)));
-  float gap = (a.lit && b.lit) ? planeGap : max(planeGap, abs(b.depth - a.depth));
+  bool depthsToo = !a.planar || (a.lit && !b.lit);
+  float gap = depthsToo ? max(planeGap, abs(b.depth - a.depth)) : planeGap;
   float scale = fxParallelDepth > 0.0 ? fxParallelDepth : min(a.depth, b.depth);
   bool apart = a.covered && gap > fxSilhouetteThreshold * scale;
   separated = (a.covered != b.covered || apart) ? 1.0 : 0.0;
@@ -177,6 +202,9 @@ void main()
   vec2 lower = lowerBlock.wz; // below, and the one right of it
 #else
   vec3 depths = textureGather(fxLinearDepth, corner, 0).wzx; // here, right, above
+  // (for the planes of unlit pixels)
+  vec2 left = vec2(texelFetch(fxLinearDepth, max(texel - ivec2(1, 0), ivec2(0)), 0).r, 0.0);
+  vec2 lower = vec2(texelFetch(fxLinearDepth, max(texel - ivec2(0, 1), ivec2(0)), 0).r, 0.0);
 #endif
   fxSurface here = fxSurfaceOf(depths.x, vec2(normalX.w, normalY.w));
   fxSurface right = fxSurfaceOf(depths.y, vec2(normalX.z, normalY.z));
@@ -185,10 +213,8 @@ void main()
   fxSurface here = fxSurfaceAt(texel);
   fxSurface right = fxSurfaceAt(texel + ivec2(1, 0));
   fxSurface above = fxSurfaceAt(texel + ivec2(0, 1));
-#if FX_TILE_MASK
   vec2 left = vec2(fxDepthAt(texel + ivec2(-1, 0)), fxDepthAt(texel + ivec2(-1, 1)));
   vec2 lower = vec2(fxDepthAt(texel + ivec2(0, -1)), fxDepthAt(texel + ivec2(1, -1)));
-#endif
 #endif
   // The neighbours' positions relative to this one's, from one frustum
   // ray (fxViewPosition is affine in the image point): P(x + h) - P(x) =
@@ -200,6 +226,26 @@ void main()
     ndcStep.x * (fxRayOrigin[1] + right.depth * fxRayDirection[1]);
   vec3 toAbove = (above.depth - here.depth) * direction +
     ndcStep.y * (fxRayOrigin[2] + above.depth * fxRayDirection[2]);
+#if FX_SILHOUETTES
+  // (a branch: blocks of lit pixels, all there are in most scenes, skip it)
+  if (here.covered && !here.lit)
+  {
+    vec3 toLeft = (left.x - here.depth) * direction -
+      ndcStep.x * (fxRayOrigin[1] + left.x * fxRayDirection[1]);
+    vec3 toBelow = (lower.x - here.depth) * direction -
+      ndcStep.y * (fxRayOrigin[2] + lower.x * fxRayDirection[2]);
+    const float none = 1e38;
+    bool hasRight = right.covered && texel.x + 1 < fxGBufferSize.x;
+    bool hasAbove = above.covered && texel.y + 1 < fxGBufferSize.y;
+    bool hasLeft = left.x > 0.0 && texel.x > 0;
+    bool hasBelow = lower.x > 0.0 && texel.y > 0;
+    here.normal = fxPlaneFromDepths(toRight, hasRight ? abs(right.depth - here.depth) : none,
+      toLeft, hasLeft ? abs(left.x - here.depth) : none, toAbove,
+      hasAbove ? abs(above.depth - here.depth) : none, toBelow,
+      hasBelow ? abs(lower.x - here.depth) : none);
+    here.planar = dot(here.normal, here.normal) > 0.0;
+  }
+#endif
   float r = texel.x + 1 < fxGBufferSize.x ? fxSeparated(here, right, toRight) : 0.0;
   float g = texel.y + 1 < fxGBufferSize.y ? fxSeparated(here, above, toAbove) : 0.0;
 #if FX_TILE_MASK
