@@ -49,6 +49,9 @@
  * RGBA32F for three or four); in the composite it scales that light's contribution
  * (LightVisibility hook).
  *
+ * Left out: volumes neither cast nor receive; PBR materials and opaque
+ * props drawn forward (not in the G-buffer) receive no shadow.
+ *
  * Work: some prop is translucent, a light can cast, and something
  * receives: an opaque prop, or, with TranslucentReceivers on, the
  * translucent props themselves (HasWork finds them, each frame:

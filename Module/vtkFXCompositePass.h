@@ -206,11 +206,13 @@ public:
    * Directional lights reach every tile; so do positional lights VTK does
    * not attenuate (attenuation 1, 0, 0, VTK's default), unless such a
    * light is dimmer than the cutoff everywhere (then it is left out).
-   * The bound is per light: a light is left out where it adds under half
-   * the cutoff, so where N lights are left out at once a pixel can lose
-   * up to N x LightCutoff / 2 (64 lights all just past their range around
-   * one point: 0.0625, about 16 levels of 8 bits at the default). For
-   * many lights gathered around the same places, lower the cutoff.
+   * The bound is per light: a light is left out where its diffuse and its
+   * specular term each add under half the cutoff (together under the
+   * cutoff), so where N lights are left out at once a pixel can lose up
+   * to N x LightCutoff on a shiny surface, half that on a matte one (64
+   * lights all just past their range around one point: 0.125, about 32
+   * levels of 8 bits at the default). For many lights gathered around the
+   * same places, lower the cutoff.
    */
   vtkFXSetClampMacro(LightCutoff, double, 0.0, 1.0);
   vtkGetMacro(LightCutoff, double);

@@ -20,6 +20,8 @@
 #include "vtkShader.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLShaderProperty.h"
+#include "vtkShader.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
@@ -315,13 +317,51 @@ int vtkFXGBufferPass::GetBytesPerPixel() const
 
 namespace
 {
+// Whether the actor's own fragment code can decide its colour where the
+// G-buffer's hook cannot see it: a fragment shader of its own, a
+// replacement VTK applies after its own code and the render passes' hooks
+// (ReplaceFirst off: after the hook stored the channels, so its colour was
+// lost, relit from the material), or one that replaces the texture tag the
+// hook is anchored at. Replacements made first (ReplaceFirst on, a custom
+// //VTK::Color::Impl or //VTK::Light::Impl) come before the hook, which
+// stores what they compute.
+bool HasOwnFragmentColour(vtkActor* actor)
+{
+  if (!actor->GetShaderProperty())
+  {
+    return false;
+  }
+  if (actor->GetShaderProperty()->HasFragmentShaderCode())
+  {
+    return true;
+  }
+  auto* shaders = vtkOpenGLShaderProperty::SafeDownCast(actor->GetShaderProperty());
+  if (!shaders)
+  {
+    return false;
+  }
+  for (const auto& replacement : shaders->GetAllShaderReplacements())
+  {
+    const vtkShader::ReplacementSpec& spec = replacement.first;
+    if (spec.ShaderType == vtkShader::Fragment &&
+      (!spec.ReplaceFirst || spec.OriginalValue == "//VTK::TCoord::Impl"))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 // An actor the G-buffer's hooks shade. Not a vtkSkybox: VTK draws the sky at
 // the far plane (window depth 1, the composite's background), through an
 // actor of its own that carries no render-pass keys; drawn forward, after
-// the composite, it shows where nothing else does, as VTK shows it.
+// the composite, it shows where nothing else does, as VTK shows it. Nor an
+// actor whose fragment code decides its colour past the hook
+// (HasOwnFragmentColour): drawn forward too.
 bool IsCapturedActor(vtkProp* prop)
 {
-  return vtkActor::SafeDownCast(prop) && !prop->IsA("vtkSkybox");
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  return actor && !prop->IsA("vtkSkybox") && !HasOwnFragmentColour(actor);
 }
 }
 

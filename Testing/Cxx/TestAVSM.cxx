@@ -70,6 +70,9 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkFloatArray.h"
 #include "vtkPointGaussianMapper.h"
+#include "vtkGlyph3DMapper.h"
+#include "vtkTransform.h"
+#include "vtkSphereSource.h"
 #include "vtkPoints.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -1373,6 +1376,26 @@ int CheckShadowMapReuse(vtkRenderWindow* window)
   lod->SetMapper(lodMapper);
   lod->GetProperty()->SetOpacity(0.5);
 
+  // Glyphs: a sphere of radius 1 at each of two points, on the mapper's
+  // second input port (the source), which the first port's pipeline leaves
+  // out; at a resolution of 4 it is an octahedron, of the same bounds.
+  vtkNew<vtkPoints> glyphPoints;
+  glyphPoints->InsertNextPoint(4.0, -4.0, 2.0);
+  glyphPoints->InsertNextPoint(6.0, -2.0, 2.5);
+  vtkNew<vtkPolyData> glyphCentres;
+  glyphCentres->SetPoints(glyphPoints);
+  vtkNew<vtkSphereSource> glyphShape;
+  glyphShape->SetRadius(1.0);
+  glyphShape->SetThetaResolution(32);
+  glyphShape->SetPhiResolution(16);
+  vtkNew<vtkGlyph3DMapper> glyphMapper;
+  glyphMapper->SetInputData(glyphCentres);
+  glyphMapper->SetSourceConnection(glyphShape->GetOutputPort());
+  glyphMapper->ScalingOff();
+  vtkNew<vtkActor> glyphs;
+  glyphs->SetMapper(glyphMapper);
+  glyphs->GetProperty()->SetOpacity(0.5);
+
   vtkPlaneSource* source = vtkPlaneSource::SafeDownCast(slab->GetMapper()->GetInputAlgorithm());
   vtkCamera* camera = renderer->GetActiveCamera();
   const struct
@@ -1404,6 +1427,14 @@ int CheckShadowMapReuse(vtkRenderWindow* window)
     // (the splats drawn here look the same either way, in VTK's image too:
     // this checks only that the function's change remakes the maps)
     { "the splats' opacity function", [&] { opacityFunction->AddPoint(1.0, 0.9); }, false, false },
+    { "glyphs added", [&] { renderer->AddActor(glyphs); }, false, true },
+    { "glyphs, nothing changed", [] {}, true, false },
+    { "the glyphs' shape, its bounds the same",
+      [&] {
+        glyphShape->SetThetaResolution(4);
+        glyphShape->SetPhiResolution(4);
+      },
+      false, true },
     { "an assembly added", [&] { renderer->AddActor(assembly); }, false, true },
     // (its parts' matrices are poked every frame: their values are keyed)
     { "an assembly, the camera turned", [&] { camera->Roll(10.0); }, true, false },
@@ -1546,6 +1577,55 @@ int CheckShadowsBesideNonFiniteLight(vtkRenderWindow* window)
 // directional light's, finite: under a slab of 0.3, 0.7, and 1 beside it.
 // Also a spot light, and a point light 500 radii away (its perspective
 // view kept).
+// A camera with a model transform (vtkCamera::SetModelTransformMatrix, as
+// VR cameras have): VTK's view coordinates are the model-view transform's,
+// and a camera at (0, 0, 20) whose model transform moves the world by
+// (2, 0, 0) draws what a camera at (-2, 0, 20) draws; so must the shadows
+// (visibility within float rounding, images within a level). (VTK 9.1's
+// GetViewTransformMatrix is the model-view transform, which the look-up
+// takes back to the world: measured equal.)
+int CheckCameraModelTransform(vtkRenderWindow* window)
+{
+  ShadowFrame frames[2];
+  for (int moved = 0; moved < 2; ++moved)
+  {
+    vtkNew<vtkFXPipelinePass> pipeline;
+    vtkNew<vtkFXAVSMPass> avsm;
+    vtkRenderer* renderer = GroundScene(window, false);
+    renderer->AddActor(Quad(-10, 0, 1, 0.3));
+    auto receiver = Quad(-10.0, 10.0, 0.5, 0.5);
+    receiver->SetPosition(0.0, 6.0, 0.0); // (a translucent receiver over the upper part)
+    renderer->AddActor(receiver);
+    vtkCamera* camera = renderer->GetActiveCamera();
+    if (moved)
+    {
+      vtkNew<vtkTransform> shift;
+      shift->Translate(2.0, 0.0, 0.0);
+      camera->SetModelTransformMatrix(shift->GetMatrix());
+    }
+    else
+    {
+      camera->SetPosition(-2.0, 0.0, 20.0);
+      camera->SetFocalPoint(-2.0, 0.0, 0.0);
+    }
+    pipeline->AddEffect("avsm", avsm);
+    renderer->SetPass(pipeline);
+    frames[moved] = RenderShadowFrame(window, avsm);
+    renderer->SetPass(nullptr);
+  }
+  double worst = frames[0].Visibility.size() == frames[1].Visibility.size() ? 0.0 : 1.0;
+  for (size_t i = 0; worst < 1.0 && i < frames[0].Visibility.size(); ++i)
+  {
+    worst = std::max(worst, std::fabs(double(frames[0].Visibility[i]) - frames[1].Visibility[i]));
+  }
+  const int levels = vtkFXScenes::MaxDifference(frames[0].Image, frames[1].Image);
+  std::cout << "camera with a model transform: visibility off by " << worst << ", image by "
+            << levels << " levels" << std::endl;
+  FX_CHECK(!frames[0].Visibility.empty() && worst < 1e-3 && levels <= 1,
+    "shadows under a camera's model transform");
+  return EXIT_SUCCESS;
+}
+
 int CheckFarLight(vtkRenderWindow* window)
 {
   for (double height : { 1e9, 7e3 })
@@ -2133,6 +2213,7 @@ int TestAVSM(int, char*[])
   FX_CHECK(CheckStageSwitching(window) == EXIT_SUCCESS, "frames with and without opaque props");
   FX_CHECK(CheckArrivalOrder(window) == EXIT_SUCCESS, "order independence");
   FX_CHECK(CheckLookUpCulling(window) == EXIT_SUCCESS, "look-up culling");
+  FX_CHECK(CheckCameraModelTransform(window) == EXIT_SUCCESS, "camera model transform");
   FX_CHECK(CheckSplatShadowBelow(window, "splat reaching out of the props' bounds towards the light",
              1.8, 0.1, false) == EXIT_SUCCESS,
     "splat reaching out of the bounds");
