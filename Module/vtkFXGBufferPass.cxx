@@ -172,6 +172,17 @@ vtkInformationKeyRestrictedMacro(vtkFXGBufferPass, EMISSIVE_COLOR, DoubleVector,
 vtkInformationKeyMacro(vtkFXGBufferPass, BUMP_ARRAY, String);
 vtkInformationKeyMacro(vtkFXGBufferPass, BUMP_SCALE, Double);
 
+namespace
+{
+// VTK 9.1's composite mapper draws its blocks through helpers it gives
+// only vtkMapper's settings: a vertex-attribute mapping never reaches
+// their shaders.
+bool IsCompositeMapper(vtkMapper* mapper)
+{
+  return mapper && mapper->IsA("vtkCompositePolyDataMapper2");
+}
+}
+
 void vtkFXGBufferPass::SetBump(vtkActor* actor, const char* arrayName, double scale)
 {
   if (!actor)
@@ -207,7 +218,13 @@ void vtkFXGBufferPass::SetBump(vtkActor* actor, const char* arrayName, double sc
   }
   // The mapper sends the array to the shader as a vertex attribute (only
   // programs that declare it read it).
-  if (auto* mapper = vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()))
+  if (!remove && IsCompositeMapper(actor->GetMapper()))
+  {
+    vtkGenericWarningMacro("vtkFXGBufferPass::SetBump: vtkCompositePolyDataMapper2 does not hand "
+                           "vertex attributes to the helpers that draw its blocks (VTK 9.1); "
+                           "no bump. Draw the blocks with vtkPolyDataMapper to bump them.");
+  }
+  else if (auto* mapper = vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()))
   {
     if (remove)
     {
@@ -232,7 +249,8 @@ bool vtkFXGBufferPass::HasBump(vtkProp* prop)
   vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
   vtkActor* actor = vtkActor::SafeDownCast(prop);
   if (!keys || !keys->Has(BUMP_ARRAY()) || !keys->Has(BUMP_SCALE()) || !actor ||
-    !vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()))
+    !vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) ||
+    IsCompositeMapper(actor->GetMapper()))
   {
     return false;
   }

@@ -200,8 +200,9 @@ public:
    * per triangle: a mesh shows the detail its vertices sample.
    * SetBump sets both keys on the actor and maps the array onto the
    * vertex attribute the G-buffer reads (its mapper must be a
-   * vtkOpenGLPolyDataMapper; an array of more than one component uses its
-   * first). The lights and every effect shade with the bumped normal;
+   * vtkOpenGLPolyDataMapper, not a vtkCompositePolyDataMapper2, whose
+   * blocks never receive the attribute in VTK 9.1: a warning, no bump; an
+   * array of more than one component uses its first). The lights and every effect shade with the bumped normal;
    * occlusion samples around the unbumped one (GeometricNormal). Props
    * drawn with a geometry shader (wide lines, point sprites) keep their
    * normal.

@@ -184,6 +184,10 @@ void main()
 #if FX_DEBUG_OCCLUSION
   color = clamp(ambientVisibility, 0.0, 1.0);
   albedo.a = 1.0;
+  if (texCoord.x < -1.0)
+  {
+    discard; // never: keeps texCoord in the program when nothing else reads it
+  }
 #endif
   gl_FragData[0] = vec4(fxSanitize(color), clamp(albedo.a, 0.0, 1.0));
 }

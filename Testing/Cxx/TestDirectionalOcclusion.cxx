@@ -37,6 +37,9 @@
 #include "vtkFXOcclusionTestUtilities.h"
 
 #include "vtkFloatArray.h"
+#include "vtkCompositePolyDataMapper2.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkTexture.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
@@ -293,10 +296,49 @@ bool OnFloorNearWall(const std::array<double, 4>& p)
 }
 }
 
+// A bump on an actor drawn by vtkCompositePolyDataMapper2: VTK 9.1's
+// composite mapper does not hand its vertex-attribute mappings to the
+// helpers that draw its blocks, so the bump cannot reach the shader. It is
+// refused (a warning; no bump), so nothing counts on it: no
+// geometric-normal channel either. (It was accepted silently, the channel
+// allocated, and the blocks drawn without a bump.)
+int CheckBumpOnCompositeMapper(vtkRenderWindow* window)
+{
+  Setup s = MakeDOSetup(window, 15);
+  vtkActor* floor = AddCrease(s);
+  auto* plain = vtkPolyDataMapper::SafeDownCast(floor->GetMapper());
+  plain->Update();
+  vtkNew<vtkPolyData> data;
+  data->DeepCopy(plain->GetInput());
+  vtkNew<vtkFloatArray> height;
+  height->SetName("height");
+  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+  {
+    height->InsertNextValue(static_cast<float>(0.3 * data->GetPoint(i)[2]));
+  }
+  data->GetPointData()->AddArray(height);
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, data);
+  vtkNew<vtkCompositePolyDataMapper2> composite;
+  composite->SetInputDataObject(blocks);
+  floor->SetMapper(composite);
+  vtkFXGBufferPass::SetBump(floor, "height", 1.0);
+  window->Render();
+  const bool geometric =
+    (s.Pipeline->GetGBufferChannels() & GB::ChannelBit(GB::GeometricNormal)) != 0;
+  std::cout << "a bump on a composite mapper: has bump " << vtkFXGBufferPass::HasBump(floor)
+            << ", geometric-normal channel " << geometric << std::endl;
+  FX_CHECK(!vtkFXGBufferPass::HasBump(floor) && !vtkFXGBufferPass::PerturbsNormal(floor) &&
+      !geometric,
+    "a bump on a composite mapper was taken");
+  return EXIT_SUCCESS;
+}
+
 int TestDirectionalOcclusion(int, char*[])
 {
   auto window = vtkFXTest::MakeWindow(Width, Height);
   const double up[3] = { 0, 1, 0 };
+  FX_CHECK(CheckBumpOnCompositeMapper(window) == EXIT_SUCCESS, "bump on a composite mapper");
 
   // 1 and 2: the crease without a bump, 63 samples, blurred.
   std::array<double, 3> meanChannels = { 0, 0, 0 };
