@@ -697,7 +697,16 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
       // sphere spans the centre's axial distance plus or minus r for a spot
       // light, wherever it is aimed; for a cube face, up to the centre's
       // distance plus r.
-      const bool spot = IsSpot(light);
+      // A spot light outside the props' bounding sphere, whose cone is
+      // wider than the sphere seen from it, gets a point light's view,
+      // aimed at the sphere and fitted to it: all its cone lights of the
+      // props is in that view, at the map's whole resolution. (The cone's
+      // view spread the map over the cone: from 500 radii under a cone of
+      // 30 degrees the props fell on two texels, and the shadows went.)
+      const bool spot = IsSpot(light) &&
+        !(distance > std::sqrt(2.0) * radius &&
+          std::asin(std::min(radius / distance, 1.0)) <
+            vtkMath::RadiansFromDegrees(light->GetConeAngle()));
       const bool cube = needsCube(light);
       if (!spot && !cube)
       {

@@ -12,7 +12,10 @@
  * - a directional light, one orthographic view along it, fitted to the
  *   visible props' bounding sphere;
  * - a spot light (a cone below 89 degrees), the perspective view of its
- *   cone, from just in front of it to the far side of the props;
+ *   cone, from just in front of it to the far side of the props; but
+ *   farther than sqrt(2) radii from the props' centre, with a cone wider
+ *   than their bounding sphere seen from there, the view aimed at and
+ *   fitted to that sphere (as any other positional light's);
  * - any other positional light: farther than sqrt(2) times the props'
  *   bounding radius from their centre, one perspective view aimed at the
  *   sphere that just holds it; nearer, six perspective views of 90
