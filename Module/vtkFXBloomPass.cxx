@@ -265,11 +265,16 @@ void vtkFXBloomPass::ComputeGlowRect(vtkRenderer* ren, int width, int height, in
 
 void vtkFXBloomPass::LevelRect(int k, int rect[4]) const
 {
+  vtkTextureObject* t = this->Levels[k]->Down;
+  const int size[2] = { static_cast<int>(t->GetWidth()), static_cast<int>(t->GetHeight()) };
+  this->LevelRect(k, size, rect);
+}
+
+void vtkFXBloomPass::LevelRect(int k, const int size[2], int rect[4]) const
+{
   // Level k (0: half resolution) has texels of 2^(k+1) pixels; two texels
   // more on each side hold what its filters read.
   const int shift = k + 1;
-  vtkTextureObject* t = this->Levels[k]->Down;
-  const int size[2] = { static_cast<int>(t->GetWidth()), static_cast<int>(t->GetHeight()) };
   for (int a = 0; a < 2; ++a)
   {
     rect[a] = std::max(0, (this->GlowRect[a] >> shift) - 2);
@@ -344,15 +349,16 @@ bool vtkFXBloomPass::Prefilter(vtkOpenGLRenderWindow* window, vtkTextureObject* 
   {
     return false;
   }
-  // Only what is read: the glow's rectangle and the reach of the first
-  // step down past it (its texels run 2 past the
-  // rectangle's, 2 pixels each, and their 4x4 boxes 1 pixel further).
+  // Only what the first step down reads: its texels' 4x4 boxes, from
+  // pixel 2t - 1 to 2t + 2 for texel t.
   const int size[2] = { width, height };
+  const int halfSize[2] = { std::max(1, (width + 1) / 2), std::max(1, (height + 1) / 2) };
   int rect[4];
+  this->LevelRect(0, halfSize, rect);
   for (int a = 0; a < 2; ++a)
   {
-    rect[a] = std::max(0, this->GlowRect[a] - 6);
-    rect[a + 2] = std::min(size[a], this->GlowRect[a + 2] + 6);
+    rect[a] = std::max(0, 2 * rect[a] - 1);
+    rect[a + 2] = std::min(size[a], 2 * rect[a + 2] + 1);
   }
   vtkFXRenderUtilities::ScissorScope scissor(window->GetState(), rect);
   std::vector<vtkTextureObject*> bound;
@@ -632,8 +638,12 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
   vtkTextureObject* targetDepth =
     this->MasksHiddenEmission && target ? target->GetDepthAttachmentAsTextureObject() : nullptr;
   // The target's alpha, which tells the emitters' transmittance
-  // (vtkFXCompositePass::SetMarksTransmittance).
-  vtkTextureObject* coverage = this->DimsEmissionByCoverage ? color : nullptr;
+  // (vtkFXCompositePass::SetMarksTransmittance); a float one only: where
+  // the HDR target could not be made, the pipeline draws into the
+  // framebuffer it found, whose 8 bits clamp the mark to 1 (T = 0: the
+  // glow would vanish).
+  vtkTextureObject* coverage =
+    this->DimsEmissionByCoverage && color && color->GetVTKDataType() == VTK_FLOAT ? color : nullptr;
   if (this->Downsample(window, color, targetDepth, coverage, levels) &&
     this->Upsample(window, levels))
   {

@@ -210,8 +210,9 @@ protected:
   struct Level;
   // (`targetDepth`: the depth of the target the glow goes onto, where
   // the emission of hidden surfaces must be left out; else nullptr)
-  // (`coverage`: the target's colour, whose alpha is 1 - T over the
-  // emitters, when something may be drawn over them; else nullptr)
+  // (`coverage`: the target's colour, whose alpha is 1024 T + f over the
+  // emitters when something may be drawn over them, see
+  // vtkFXCompositePass::SetMarksTransmittance; else nullptr)
   bool Downsample(vtkOpenGLRenderWindow* window, vtkTextureObject* color,
     vtkTextureObject* targetDepth, vtkTextureObject* coverage, int levels);
   /**
@@ -235,6 +236,7 @@ protected:
   // after EmissiveBounds.
   bool MayCoverEmitters(const vtkFXSceneInfo& scene) const;
   void LevelRect(int k, int rect[4]) const;
+  void LevelRect(int k, const int size[2], int rect[4]) const; // level k of `size` texels
   static std::string WithMirror(const char* shader, const std::string& defines);
 
   double Intensity = 0.5;

@@ -33,6 +33,7 @@
 #include "vtkFXOpenGL.h"
 
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -336,13 +337,15 @@ int vtkFXGBufferPass::GetBytesPerPixel() const
 namespace
 {
 // Whether the actor's own fragment code can decide its colour where the
-// G-buffer's hook cannot see it: a fragment shader of its own, a
-// replacement VTK applies after its own code and the render passes' hooks
-// (ReplaceFirst off: after the hook stored the channels, so its colour was
-// lost, relit from the material), or one that replaces the texture tag the
-// hook is anchored at. Replacements made first (ReplaceFirst on, a custom
-// //VTK::Color::Impl or //VTK::Light::Impl) come before the hook, which
-// stores what they compute.
+// G-buffer cannot keep it: a fragment shader of its own; a replacement at
+// VTK's lighting or a tag after it (which runs after the lighting, and
+// for a lit surface the G-buffer stores the material, which the composite
+// lights again: what the code made of the colour was lost); or one whose
+// code writes the fragment's colour. Replacements elsewhere (declarations,
+// //VTK::Color::Impl setting diffuseColor, //VTK::Normal::Impl) come
+// before the lighting, which the G-buffer reproduces from what they
+// compute. (Mapper-level replacements, deprecated in VTK 9, reach the
+// shader property only once the mapper builds its shaders.)
 bool HasOwnFragmentColour(vtkActor* actor)
 {
   if (!actor->GetShaderProperty())
@@ -358,11 +361,21 @@ bool HasOwnFragmentColour(vtkActor* actor)
   {
     return false;
   }
+  // vtkPolyDataFS.glsl's tags from the lighting on, in the order they run
+  static const char* const fromLighting[] = { "//VTK::Light::Impl", "//VTK::TCoord::Impl",
+    "//VTK::DepthPeeling::Impl", "//VTK::Picking::Impl", "//VTK::Coincident::Impl",
+    "//VTK::ZBuffer::Impl", "//VTK::RenderPassFragmentShader::Impl" };
   for (const auto& replacement : shaders->GetAllShaderReplacements())
   {
     const vtkShader::ReplacementSpec& spec = replacement.first;
-    if (spec.ShaderType == vtkShader::Fragment &&
-      (!spec.ReplaceFirst || spec.OriginalValue == "//VTK::TCoord::Impl"))
+    if (spec.ShaderType != vtkShader::Fragment)
+    {
+      continue;
+    }
+    const bool late = std::any_of(std::begin(fromLighting), std::end(fromLighting),
+      [&spec](const char* tag) { return spec.OriginalValue == tag; });
+    if (late || Contains(replacement.second.Replacement, "gl_FragData") ||
+      Contains(replacement.second.Replacement, "gl_FragColor"))
     {
       return true;
     }

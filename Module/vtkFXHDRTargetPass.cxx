@@ -102,15 +102,32 @@ void vtkFXHDRTargetPass::WriteBack(vtkOpenGLRenderWindow* window, const int view
   // The depth by a blit where the framebuffer takes one: a full-screen
   // pass writing gl_FragDepth costs a software rasteriser its early depth
   // path (the write-back took 5.0 ms at 1280x720 on llvmpipe with it).
-  const bool depthBlitted = this->BlitDepthBack(state, viewport);
-  std::string fs = vtkFXHDRResolveFS;
-  vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
-    std::string("//VTK::System::Dec\n#define FX_WRITE_DEPTH ") + (depthBlitted ? "0" : "1"),
-    false);
-  vtkShaderProgram* program = vtkFXRenderUtilities::ReadyQuad(this->Quad, window, fs);
+  // (the program first: without one nothing is written, not the depth
+  // alone)
+  const auto ready = [this, window](bool writesDepth) {
+    std::string fs = vtkFXHDRResolveFS;
+    vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
+      std::string("//VTK::System::Dec\n#define FX_WRITE_DEPTH ") + (writesDepth ? "1" : "0"),
+      false);
+    return vtkFXRenderUtilities::ReadyQuad(this->Quad, window, fs);
+  };
+  // (a framebuffer that refused the blit, multisampled, refuses it in the
+  // frames after too: the pass writes the depth from then on, until the
+  // resources are released)
+  vtkShaderProgram* program = ready(!this->BlitsDepth);
   if (!program)
   {
     return;
+  }
+  const bool depthBlitted = this->BlitsDepth && this->BlitDepthBack(state, viewport);
+  if (this->BlitsDepth && !depthBlitted)
+  {
+    this->BlitsDepth = false;
+    program = ready(true);
+    if (!program)
+    {
+      return;
+    }
   }
   vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
@@ -240,6 +257,7 @@ void vtkFXHDRTargetPass::ReleaseGraphicsResources(vtkWindow* w)
     this->DelegatePass->ReleaseGraphicsResources(w);
   }
   vtkFXRenderUtilities::ReleaseQuad(this->Quad, w);
+  this->BlitsDepth = true;
   vtkFXRenderUtilities::Release(this->Color, w);
   vtkFXRenderUtilities::Release(this->Depth, w);
   vtkFXRenderUtilities::Release(this->FrameBuffer, w);

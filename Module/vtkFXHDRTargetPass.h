@@ -115,6 +115,7 @@ protected:
   bool WarnedDepthFormat = false;
   bool WarnedColorCopy = false;
   bool WarnedIncomplete = false;
+  bool BlitsDepth = true; // the framebuffer took the write-back's depth blit (see WriteBack)
   vtkSmartPointer<vtkTextureObject> Color;
   vtkSmartPointer<vtkTextureObject> Depth;
   vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;

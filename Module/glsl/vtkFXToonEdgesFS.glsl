@@ -150,8 +150,9 @@ vec3 fxPlaneFromDepths(vec3 toRight, float rightGap, vec3 toLeft, float leftGap,
 }
 #endif
 
-// `d`: from a's position to b's (view space).
-float fxSeparated(fxSurface a, fxSurface b, vec3 d)
+// `d`: from a's position to b's (view space); `otherStep`: |depth step|
+// from a to its neighbour on the far side from b (1e38: none, or a lit).
+float fxSeparated(fxSurface a, fxSurface b, vec3 d, float otherStep)
 {
   // Selects, not branches: a software rasteriser runs every branch any
   // pixel of a block takes.
@@ -163,10 +164,20 @@ float fxSeparated(fxSurface a, fxSurface b, vec3 d)
   // (two primitives: at a lit limb the lit side's plane holds the unlit
   // one's point at nearly any depth).
   float planeGap = max(abs(dot(a.normal, d)), abs(dot(b.normal, d)));
+  float depthGap = abs(b.depth - a.depth);
   bool depthsToo = !a.planar || (a.lit && !b.lit);
-  float gap = depthsToo ? max(planeGap, abs(b.depth - a.depth)) : planeGap;
+  float gap = depthsToo ? max(planeGap, depthGap) : planeGap;
   float scale = fxParallelDepth > 0.0 ? fxParallelDepth : min(a.depth, b.depth);
-  bool apart = a.covered && gap > fxSilhouetteThreshold * scale;
+  float limit = fxSilhouetteThreshold * scale;
+  // An unlit pixel's plane comes from its neighbours' depths; at a limb,
+  // where the surface turns away from the view, it holds a point just
+  // behind at nearly any depth (and b may be the neighbour it was made
+  // from). Between two unlit pixels a depth step also counts where it is
+  // well beyond the step on a's other side: a plane's steps change little
+  // from one pixel to the next, at any angle.
+  bool jump = !a.lit && a.planar && !b.lit && depthGap > limit &&
+    depthGap > 2.0 * otherStep + limit;
+  bool apart = a.covered && (gap > limit || jump);
   separated = (a.covered != b.covered || apart) ? 1.0 : 0.0;
 #endif
 #if FX_CREASES
@@ -226,6 +237,7 @@ void main()
     ndcStep.x * (fxRayOrigin[1] + right.depth * fxRayDirection[1]);
   vec3 toAbove = (above.depth - here.depth) * direction +
     ndcStep.y * (fxRayOrigin[2] + above.depth * fxRayDirection[2]);
+  float leftStep = 1e38, belowStep = 1e38; // (fxSeparated's otherStep)
 #if FX_SILHOUETTES
   // (a branch: blocks of lit pixels, all there are in most scenes, skip it)
   if (here.covered && !here.lit)
@@ -244,10 +256,12 @@ void main()
       hasAbove ? abs(above.depth - here.depth) : none, toBelow,
       hasBelow ? abs(lower.x - here.depth) : none);
     here.planar = dot(here.normal, here.normal) > 0.0;
+    leftStep = hasLeft ? abs(left.x - here.depth) : none;
+    belowStep = hasBelow ? abs(lower.x - here.depth) : none;
   }
 #endif
-  float r = texel.x + 1 < fxGBufferSize.x ? fxSeparated(here, right, toRight) : 0.0;
-  float g = texel.y + 1 < fxGBufferSize.y ? fxSeparated(here, above, toAbove) : 0.0;
+  float r = texel.x + 1 < fxGBufferSize.x ? fxSeparated(here, right, toRight, leftStep) : 0.0;
+  float g = texel.y + 1 < fxGBufferSize.y ? fxSeparated(here, above, toAbove, belowStep) : 0.0;
 #if FX_TILE_MASK
   fxStoreMarks(texel, r, g);
   // A covered pixel also stores the marks of its left and lower

@@ -7,6 +7,7 @@
 // from the same window in the same process. So must it inside vtkSSAAPass
 // (its delegate draws into a larger framebuffer of its own).
 #include "vtkFXBloomPass.h"
+#include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
@@ -146,11 +147,11 @@ Result CompareWithVTK(vtkRenderWindow* window, Setup setup, std::string* passes 
   return result;
 }
 
-// A sphere over VTK's gradient background, which VTK draws when it clears
-// the renderer's viewport.
-void AddSphereOverGradient(vtkRenderer* renderer)
+// A unit sphere centred at (x, 0, 0), in `renderer`.
+vtkActor* AddSphere(vtkRenderer* renderer, double x = 0.0)
 {
   vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(x, 0.0, 0.0);
   sphere->SetThetaResolution(48);
   sphere->SetPhiResolution(24);
   vtkNew<vtkPolyDataMapper> mapper;
@@ -158,48 +159,58 @@ void AddSphereOverGradient(vtkRenderer* renderer)
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   renderer->AddActor(actor);
+  return actor;
+}
+
+// A sphere over VTK's gradient background, which VTK draws when it clears
+// the renderer's viewport.
+void AddSphereOverGradient(vtkRenderer* renderer)
+{
+  AddSphere(renderer);
   renderer->GradientBackgroundOn();
   renderer->SetBackground(0.1, 0.1, 0.3);
   renderer->SetBackground2(0.8, 0.6, 0.4);
   renderer->ResetCamera();
 }
 
-// A lit sphere whose shader property sets its colour after VTK's lighting
-// (a replacement VTK applies after its own code and the render passes'
-// hooks), beside a plain one: VTK shows a flat red disc; the G-buffer's
-// hook, before that code, lit the material instead.
+// Lit spheres whose shader property sets their colour after VTK's
+// lighting (at its tag, replaced after VTK's code or before it, keeping
+// the tag), beside one with a replacement that only declares a uniform and
+// a plain one: VTK shows flat red and green discs; the G-buffer stored the
+// material, which the composite lit again.
+int CaptureMismatches = 0;
+
 void AddRecolouredSphere(vtkRenderer* renderer)
 {
-  for (int i = 0; i < 2; ++i)
+  for (int i = 0; i < 4; ++i)
   {
-    vtkNew<vtkSphereSource> sphere;
-    sphere->SetCenter(1.2 * i, 0.0, 0.0);
-    sphere->SetThetaResolution(48);
-    sphere->SetPhiResolution(24);
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(sphere->GetOutputPort());
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    if (i == 0)
+    vtkActor* actor = AddSphere(renderer, 1.2 * i);
+    if (i < 2)
     {
-      actor->GetShaderProperty()->AddFragmentShaderReplacement("//VTK::Light::Impl", false,
-        "//VTK::Light::Impl\n  gl_FragData[0] = vec4(1.0, 0.0, 0.0, 1.0);\n", false);
+      actor->GetShaderProperty()->AddFragmentShaderReplacement("//VTK::Light::Impl", i == 1,
+        std::string("//VTK::Light::Impl\n  gl_FragData[0] = vec4(") +
+          (i == 0 ? "1.0, 0.0" : "0.0, 1.0") + ", 0.0, 1.0);\n",
+        false);
     }
-    renderer->AddActor(actor);
+    else if (i == 2)
+    {
+      actor->GetShaderProperty()->AddFragmentShaderReplacement("//VTK::Normal::Dec", false,
+        "//VTK::Normal::Dec\nuniform float fxUnusedByTest;\n", false);
+    }
+    // (drawn forward exactly when its colour comes after the lighting)
+    if (vtkFXGBufferPass::CanCapture(actor) != (i >= 2))
+    {
+      std::cout << "sphere " << i << ": captured " << vtkFXGBufferPass::CanCapture(actor)
+                << ", expected " << (i >= 2) << std::endl;
+      ++CaptureMismatches;
+    }
   }
   renderer->ResetCamera();
 }
 
 void AddSkybox(vtkRenderer* renderer)
 {
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(48);
-  sphere->SetPhiResolution(24);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(sphere->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  renderer->AddActor(actor);
+  AddSphere(renderer);
   // An equirectangular sky of bands and a disc.
   vtkNew<vtkImageCanvasSource2D> sky;
   sky->SetScalarTypeToUnsignedChar();
@@ -470,6 +481,7 @@ int TestPipelineMatchesVTK(int argc, char* argv[])
               << " dB, largest difference " << r.MaxDifference << "/255 (" << passes << ")"
               << std::endl;
     failures += (r.PSNR >= 50.0 && r.MaxDifference <= MaxDifference) ? 0 : 1;
+    failures += CaptureMismatches;
   }
   // A gradient background is kept, also through the HDR target (a bloom
   // whose threshold no pixel reaches brings the target and adds no glow).
