@@ -21,7 +21,6 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLShaderProperty.h"
-#include "vtkShader.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
@@ -348,15 +347,13 @@ namespace
 // shader property only once the mapper builds its shaders.)
 bool HasOwnFragmentColour(vtkActor* actor)
 {
-  if (!actor->GetShaderProperty())
-  {
-    return false;
-  }
-  if (actor->GetShaderProperty()->HasFragmentShaderCode())
+  // (vtkProp makes its shader property on first request: never nullptr)
+  vtkShaderProperty* property = actor->GetShaderProperty();
+  if (property->HasFragmentShaderCode())
   {
     return true;
   }
-  auto* shaders = vtkOpenGLShaderProperty::SafeDownCast(actor->GetShaderProperty());
+  auto* shaders = vtkOpenGLShaderProperty::SafeDownCast(property);
   if (!shaders)
   {
     return false;
