@@ -115,6 +115,7 @@ struct Method
   int BlurKernel = vtkFXBilateralBlurPass::Gaussian;
   bool Upsample = false; // depth-aware upsample by the blur (else the composite's bilinear)
   bool Separable = true;  // the blur's two passes (else its full 2D filter)
+  double Thickness = vtkFXSSAOPass::HeightField; // vtkFXSSAOPass::OccluderThickness
   vtkSmartPointer<vtkRenderWindow> Window;
   vtkSmartPointer<vtkRenderer> Renderer;
   std::vector<double> FrameMs;
@@ -193,7 +194,8 @@ std::vector<Method> MakeMethods(int falloff)
   defaults->SetAmbientOcclusionFalloff(falloff); // its Medium preset
   vtkFXSSAOPass* ssao = defaults->GetSSAOPass();
   auto fx = [&methods](int method, int samples, bool half, int blurRadius, bool upsample = false,
-              int kernel = vtkFXBilateralBlurPass::Gaussian, bool separable = true) {
+              int kernel = vtkFXBilateralBlurPass::Gaussian, bool separable = true,
+              double thickness = vtkFXSSAOPass::HeightField) {
     Method m{ Kind::FX, method == vtkFXSSAOPass::Horizon ? "vtkfx-gtao" : "vtkfx-ssao" };
     m.Method = method;
     m.Samples = samples;
@@ -203,10 +205,12 @@ std::vector<Method> MakeMethods(int falloff)
     m.Upsample = half && blurRadius > 0 && upsample;
     m.BlurKernel = kernel;
     m.Separable = separable;
+    m.Thickness = thickness;
     const bool box = kernel == vtkFXBilateralBlurPass::Box;
     m.Setting = std::to_string(samples) + (half ? " half" : " full") +
       (blurRadius > 0 ? (box ? " box" : " blur") + std::to_string(blurRadius) : " noblur") +
-      (m.Upsample ? " up" : "") + (blurRadius > 0 && !separable ? " 2d" : "");
+      (m.Upsample ? " up" : "") + (blurRadius > 0 && !separable ? " 2d" : "") +
+      (thickness < vtkFXSSAOPass::HeightField ? " thick" + vtkFXRenderUtilities::GLSLFloat(thickness) : "");
     for (const auto& other : methods)
     {
       if (other.Name == m.Name && other.Setting == m.Setting)
@@ -247,6 +251,16 @@ std::vector<Method> MakeMethods(int falloff)
     fx(vtkFXSSAOPass::Horizon, samples, true, 2, false, box);
   }
   fx(vtkFXSSAOPass::Horizon, 16, false, 2, false, box);
+  // Occluders of finite thickness (fractions of R) instead of the height
+  // field, at the default's and twice its samples.
+  for (int samples : { 16, 32 })
+  {
+    for (double thickness : { 0.25, 0.5 })
+    {
+      fx(vtkFXSSAOPass::Horizon, samples, true, 4, false, vtkFXBilateralBlurPass::Gaussian, true,
+        thickness);
+    }
+  }
   for (int kernel : { 16, 32, 64, 128 })
   {
     for (bool blur : { false, true })
@@ -341,6 +355,7 @@ void Install(Method& m, double radius, int falloff)
         pipeline->GetSSAOPass()->SetHalfResolution(m.HalfResolution);
         pipeline->GetSSAOPass()->SetMethod(m.Method);
         pipeline->GetSSAOPass()->SetFalloff(falloff);
+        pipeline->GetSSAOPass()->SetOccluderThickness(m.Thickness);
         pipeline->GetOcclusionBlurPass()->SetEnabled(m.Blur);
         pipeline->GetOcclusionBlurPass()->SetRadius(m.BlurRadius);
         pipeline->GetOcclusionBlurPass()->SetKernel(m.BlurKernel);

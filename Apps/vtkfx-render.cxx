@@ -6,7 +6,7 @@
 //                [--debug-channel NAME] [--no-ground]
 //                [--ao-radius R | --ao-radius-fraction F]
 //                [--ao-quality low|medium|high] [--ao-falloff binary|cuberoot]
-//                [--do-method hemisphere|horizon]
+//                [--ao-thickness F] [--do-method hemisphere|horizon]
 #include "vtkFXArguments.h"
 #include "vtkFXHeap.h"
 #include "vtkFXScenes.h"
@@ -20,6 +20,7 @@
 #include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
+#include "vtkFXRenderUtilities.h"
 
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
@@ -56,6 +57,7 @@ struct Arguments
   double AORadiusFraction = 0.0; // of the visible bounds' diagonal; 0: the default
   int AOQuality = vtkFXPipelinePass::Medium;
   int AOFalloff = vtkFXSSAOPass::Binary;
+  double AOThickness = 0.0; // fractions of the radius; 0: the pass's default
   bool AOOptions = false; // any --ao-* option given
   bool AOQualityGiven = false;
   int DOMethod = -1; // --do-method; -1: the pass's default
@@ -77,7 +79,7 @@ void Usage(std::ostream& os)
         "                                     geometric-normal|occlusion]\n"
         "                    [--no-ground] [--ao-radius R | --ao-radius-fraction F]\n"
         "                    [--ao-quality low|medium|high] [--ao-falloff binary|cuberoot]\n"
-        "                    [--do-method hemisphere|horizon]\n"
+        "                    [--ao-thickness F] [--do-method hemisphere|horizon]\n"
         "LIST: comma-separated effects: ssao, blur (ssao,blur: ambient occlusion),\n"
         "      do (directional occlusion: shows bumps in the ambient term; not with ssao),\n"
         "      bleed (with do: colour bounced off nearby occluders),\n"
@@ -180,6 +182,16 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
       }
       args.AOOptions = true;
     }
+    else if (a == "--ao-thickness")
+    {
+      if (!value(v) || !vtkFXArguments::ParseInRange(v, 1e-3, 1e3, args.AOThickness))
+      {
+        error = "bad --ao-thickness '" + v + "' (expected a decimal number from 0.001 to 1000: "
+                "how far behind a surface it is solid, in fractions of the radius)";
+        return false;
+      }
+      args.AOOptions = true;
+    }
     else if (a == "--do-method")
     {
       if (!value(v) || (args.DOMethod = IndexOf(v, { "hemisphere", "horizon" })) < 0)
@@ -267,6 +279,13 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
   {
     error = "--ao-quality picks an ambient-occlusion preset; 'do' has none (--ao-radius and "
             "--ao-falloff apply to it)";
+    return false;
+  }
+  if (args.AOThickness > 0.0 && (has("do") || args.AOFalloff != vtkFXSSAOPass::Binary ||
+                                   args.AOQuality == vtkFXPipelinePass::Low))
+  {
+    error = "--ao-thickness is the horizon estimator's, with the binary falloff: not with 'do', "
+            "--ao-falloff cuberoot or --ao-quality low (hemisphere samples)";
     return false;
   }
   if (has("blur") && !has("ssao"))
@@ -375,6 +394,10 @@ int main(int argc, char* argv[])
     if (args.AORadiusFraction > 0.0)
     {
       pipeline->GetSSAOPass()->SetRadiusFraction(args.AORadiusFraction);
+    }
+    if (args.AOThickness > 0.0)
+    {
+      pipeline->GetSSAOPass()->SetOccluderThickness(args.AOThickness);
     }
     pipeline->GetOcclusionBlurPass()->SetEnabled(has("blur"));
     if (has("do"))
@@ -496,6 +519,10 @@ int main(int argc, char* argv[])
               << " falloff, radius " << ssao->GetEffectiveRadius() << ", "
               << (ssao->GetMethod() == vtkFXSSAOPass::Horizon ? "horizon" : "hemisphere") << " "
               << ssao->GetEffectiveNumberOfSamples() << " samples, "
+              << (ssao->UsesThinOccluders()
+                     ? "occluders " + vtkFXRenderUtilities::GLSLFloat(ssao->GetOccluderThickness()) +
+                       " R thick, "
+                     : std::string())
               << (ssao->GetHalfResolution() ? "half" : "full") << " resolution, "
               << (blur->GetEnabled()
                        ? std::string(blur->GetKernel() == vtkFXBilateralBlurPass::Box ? "box " : "") +

@@ -336,6 +336,12 @@ void vtkFXSSAOPass::SetHemisphereKernel(vtkShaderProgram* program) const
   program->SetUniform4fv("fxKernel", n, reinterpret_cast<const float(*)[4]>(kernel.data()));
 }
 
+bool vtkFXSSAOPass::UsesThinOccluders() const
+{
+  return this->OccluderThickness < HeightField && this->GetEffectiveMethod() == Horizon &&
+    this->Falloff == Binary && this->Channels == 1;
+}
+
 void vtkFXSSAOPass::SetKernelUniforms(vtkShaderProgram* program) const
 {
   const int n = this->GetEffectiveNumberOfSamples();
@@ -404,7 +410,8 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
           << "\n#define FX_CHANNELS " << this->Channels << "\n#define FX_TILE " << this->TileSize
           << "\n#define FX_FALLOFF " << this->Falloff
           << "\n#define FX_SLICES " << HorizonSlices
-          << "\n#define FX_STEPS " << this->GetHorizonSteps() << "\n"
+          << "\n#define FX_STEPS " << this->GetHorizonSteps()
+          << "\n#define FX_THIN " << (this->UsesThinOccluders() ? 1 : 0) << "\n"
           << this->GetExtensionDefines(ren);
   std::string fs = vtkFXSSAOFS;
   vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str(), false);
@@ -505,6 +512,10 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
   this->EffectiveRadius = this->ComputeRadius(ren);
   program->SetUniformf("fxRadius", static_cast<float>(this->EffectiveRadius));
   program->SetUniformf("fxBias", static_cast<float>(this->Bias * this->EffectiveRadius));
+  if (this->UsesThinOccluders())
+  {
+    program->SetUniformf("fxThickness", static_cast<float>(this->OccluderThickness));
+  }
   this->SetKernelUniforms(program);
   this->BindExtensionInputs(program, ren);
   this->Quad.Helper->Render();
@@ -554,5 +565,6 @@ void vtkFXSSAOPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Method: " << (this->Method == Hemisphere ? "Hemisphere" : "Horizon") << "\n";
   os << indent << "Falloff: " << (this->Falloff == Binary ? "Binary" : "CubeRoot") << "\n";
   os << indent << "Bias: " << this->Bias << "\n";
+  os << indent << "OccluderThickness: " << this->OccluderThickness << "\n";
   os << indent << "HalfResolution: " << this->HalfResolution << "\n";
 }

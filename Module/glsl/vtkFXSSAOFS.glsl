@@ -50,6 +50,9 @@ uniform vec4 fxKernel[FX_SAMPLES];
 uniform vec4 fxTile[FX_TILE * FX_TILE];
 uniform float fxRadius;       // world units
 uniform float fxBias;         // world units
+#if FX_THIN
+uniform float fxThickness;    // fractions of fxRadius (vtkFXSSAOPass::OccluderThickness)
+#endif
 const float fxPi = 3.14159265358979;
 
 //VTK::FXNormalCoding::Dec
@@ -219,6 +222,49 @@ float fxSliceArcs(float h0, float h1, float normalAngle, float cosNormal, float 
 }
 #endif
 
+#if FX_THIN
+// Occluders of finite thickness: the visibility bitmask of Therrien,
+// Levesque and Gilet, "Screen Space Indirect Lighting with Visibility
+// Bitmasks" (2023). A horizon sample hides the directions between its own
+// elevation and that of the point fxThickness x R behind it (away from the
+// eye), not everything below it as GTAO's height field assumes: rays pass
+// behind an atom of a ball-and-stick model, or under a branch, as the
+// ray-traced reference's do. Each side of a slice has 32 sectors of equal
+// weight: the side's cosine-weighted arc (the integrand of fxSliceArcs) is
+// split into 32 equal parts, so that the visible fraction of the weight is
+// the fraction of sectors left unmarked.
+
+// The side's arc from the view direction to the direction of elevation
+// cosine c (angle sideSign x acos c from the view; +1 on side 0), after
+// fxSliceArcs without its trigonometry: cos(2h - N) from cos h and sin h.
+float fxSideArc(float c, float sideSign, float cosNormal, float sinNormal)
+{
+  c = clamp(c, -1.0, 1.0);
+  float h = sideSign * fxFastAcos(c);
+  float sinH = sideSign * sqrt(max(1.0 - c * c, 0.0));
+  float cosTwiceHMinusNormal = (2.0 * c * c - 1.0) * cosNormal + 2.0 * c * sinH * sinNormal;
+  return (cosNormal + 2.0 * h * sinNormal - cosTwiceHMinusNormal) / 4.0;
+}
+
+// The sectors (of 32 over [0, 1]) whose centres lie in [from, to).
+uint fxSectors(float from, float to)
+{
+  int first = int(clamp(ceil(from * 32.0 - 0.5), 0.0, 32.0));
+  int last = int(clamp(ceil(to * 32.0 - 0.5), 0.0, 32.0));
+  uint belowLast = last >= 32 ? 0xFFFFFFFFu : (1u << uint(last)) - 1u;
+  uint belowFirst = first >= 32 ? 0xFFFFFFFFu : (1u << uint(first)) - 1u;
+  return belowLast & ~belowFirst;
+}
+
+// Set bits (GLSL 1.50 has no bitCount).
+float fxSectorCount(uint v)
+{
+  v = v - ((v >> 1u) & 0x55555555u);
+  v = (v & 0x33333333u) + ((v >> 2u) & 0x33333333u);
+  return float((((v + (v >> 4u)) & 0x0F0F0F0Fu) * 0x01010101u) >> 24u);
+}
+#endif
+
 fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, vec4 tile)
 {
 #if FX_CHANNELS == 3
@@ -268,6 +314,9 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
   const float falloffAdd = (1.0 - falloffRange) / falloffRange + 1.0;
 #endif
   float inverseReach = 1.0 / (fxRadius * max(reach, 1e-30));
+#if FX_THIN
+  float thickness = fxThickness / max(reach, 1e-30); // (in the offsets' units)
+#endif
   // The tile entry: the first slice's direction, at (jitter / FX_SLICES) x pi
   // for the entry's jitter within its stratum, and the steps' offset (both
   // computed once on the CPU, vtkFXSSAOPass::SetKernelUniforms). The offset
@@ -317,6 +366,13 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
     float lowest0 = -sinNormal;
     float lowest1 = sinNormal;
     float horizon0 = lowest0, horizon1 = lowest1;
+#if FX_THIN
+    // Each side's whole arc (to its tangent line), and its hidden sectors.
+    vec2 sideArcs = vec2(fxSideArc(lowest0, 1.0, cosNormal, sinNormal),
+      fxSideArc(lowest1, -1.0, cosNormal, sinNormal));
+    vec2 perArc = 1.0 / max(sideArcs, vec2(1e-8));
+    uint hidden0 = 0u, hidden1 = 0u;
+#endif
     for (int step = 0; step < FX_STEPS; ++step)
     {
       // Quadratic spacing: more samples near the pixel, as in XeGTAO.
@@ -366,6 +422,20 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
         // of the pixel (a short step across the slice's direction): its
         // elevation would be measured against the wrong horizon.
         weight = dot(inSlice, orthoDirection) * (side == 0 ? 1.0 : -1.0) > 0.0 ? weight : 0.0;
+#if FX_THIN
+        // (FX_FALLOFF 0: the weight is 0 or 1) The sample's direction and
+        // that of the point behind it, as fractions of the side's arc.
+        vec3 behind = inSlice - thickness * view;
+        float cBehind = dot(behind, view) * inversesqrt(max(dot(behind, behind), 1e-30));
+        float sideSign = side == 0 ? 1.0 : -1.0;
+        float lowest = side == 0 ? lowest0 : lowest1;
+        float toFraction = side == 0 ? perArc.x : perArc.y;
+        float front = fxSideArc(max(c, lowest), sideSign, cosNormal, sinNormal) * toFraction;
+        float back = fxSideArc(max(cBehind, lowest), sideSign, cosNormal, sinNormal) * toFraction;
+        uint sectors = weight > 0.0 ? fxSectors(min(front, back), max(front, back)) : 0u;
+        hidden0 |= side == 0 ? sectors : 0u;
+        hidden1 |= side == 0 ? 0u : sectors;
+#else
         if (side == 0)
         {
           horizon0 = max(horizon0, mix(lowest0, c, weight));
@@ -374,6 +444,7 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
         {
           horizon1 = max(horizon1, mix(lowest1, c, weight));
         }
+#endif
       }
     }
     float h0 = -fxFastAcos(clamp(horizon1, -1.0, 1.0));
@@ -398,6 +469,10 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
       openLobes[k] += fxLobeSide(h.z, vec2(cos2h.z, sin2h.z), u, w) +
         fxLobeSide(h.w, vec2(cos2h.w, sin2h.w), u, w);
     }
+#elif FX_THIN
+    visibility += projectedLength * (sideArcs.x * (1.0 - fxSectorCount(hidden0) / 32.0) +
+                                      sideArcs.y * (1.0 - fxSectorCount(hidden1) / 32.0));
+    openArcs += projectedLength * (sideArcs.x + sideArcs.y);
 #else
     visibility += projectedLength * fxSliceArcs(h0, h1, normalAngle, cosNormal, sinNormal);
     openArcs += projectedLength * fxSliceArcs(open0, open1, normalAngle, cosNormal, sinNormal);

@@ -74,20 +74,6 @@ double CreaseOcclusionAt(double h, double R, int falloff)
   return table[i] + (x - i) * (table[i + 1] - table[i]);
 }
 
-// A 40 x 40 plane y = 0 (the only prop), seen from `elevation` degrees
-// above it, 6 units away.
-void ViewPlane(Setup& s, double elevation)
-{
-  const double o[3] = { -20, 0, -20 }, p1[3] = { 20, 0, -20 }, p2[3] = { -20, 0, 20 };
-  s.Renderer->AddActor(Plane(o, p1, p2));
-  vtkCamera* camera = s.Renderer->GetActiveCamera();
-  const double a = vtkMath::RadiansFromDegrees(elevation);
-  camera->SetFocalPoint(0, 0, 0);
-  camera->SetPosition(0, 6 * std::sin(a), 6 * std::cos(a));
-  camera->SetViewUp(0, 1, 0);
-  s.Renderer->ResetCameraClippingRange();
-}
-
 // Mean |v(x) - (v(x - 2) + v(x + 2)) / 2| along rows and columns, over the
 // texels that show a surface with both of those neighbours, in a (value,
 // depth) image of w x h: what a pattern of period 4 leaves (its two halves
@@ -276,25 +262,6 @@ void AddCreaseAndFloatingPlane(Setup& s)
   const double o[3] = { -0.6, 0.25, 0.6 }, p1[3] = { 0.6, 0.25, 0.6 }, p2[3] = { -0.6, 0.25, 1.6 };
   s.Renderer->AddActor(Plane(o, p1, p2));
   s.Renderer->ResetCameraClippingRange();
-}
-
-// Lowest occlusion (values above 1 count as 1) over the pixels of that
-// plane more than `margin` from its border; `inside` counts them.
-float LowestOnPlane(const std::vector<float>& ao,
-  const std::vector<std::array<double, 4>>& world, double margin, int& inside)
-{
-  float lowest = 1.0f;
-  inside = 0;
-  for (size_t i = 0; i < ao.size(); ++i)
-  {
-    const auto& p = world[i];
-    if (p[3] > 0.0 && std::fabs(p[0]) < 20 - margin && std::fabs(p[2]) < 20 - margin)
-    {
-      lowest = std::min(lowest, ao[i]);
-      ++inside;
-    }
-  }
-  return lowest;
 }
 
 }

@@ -1,6 +1,7 @@
 // Scale invariance of the occlusion, for both falloffs (each with its
 // default preset: the horizon estimator for Binary and CubeRoot, with 16
-// and 8 fetches): scene:corner and the bunny scaled by
+// and 8 fetches; Binary also with occluders 0.5 R thick, on scene:corner
+// only): scene:corner and the bunny scaled by
 // 1e-6, 1e6, 1e-15 and 1e18 (below 1e-14 world-unit squares of the horizon
 // search underflowed: 14-25 dB before its distances were taken in units of
 // R), translated 1e6 units from the origin (camera following),
@@ -30,7 +31,8 @@ struct Variant
 };
 
 std::vector<unsigned char> Render(vtkRenderWindow* window, const std::string& input, bool parallel,
-  const Variant& v, int falloff, unsigned char background[3], double radiusFraction = 0.0)
+  const Variant& v, int falloff, unsigned char background[3], double radiusFraction = 0.0,
+  double thickness = vtkFXSSAOPass::HeightField)
 {
   window->GetRenderers()->RemoveAllItems();
   vtkNew<vtkRenderer> renderer;
@@ -46,6 +48,7 @@ std::vector<unsigned char> Render(vtkRenderWindow* window, const std::string& in
   pipeline->AmbientOcclusionOn();
   pipeline->SetAmbientOcclusionFalloff(falloff);
   pipeline->GetCompositePass()->DebugOcclusionOn();
+  pipeline->GetSSAOPass()->SetOccluderThickness(thickness);
   if (radiusFraction > 0.0)
   {
     pipeline->GetSSAOPass()->SetRadiusFraction(radiusFraction);
@@ -72,15 +75,23 @@ int TestSSAOScale(int, char*[])
     { "near/far 1e-6", 1.0, 0.0, 1e-6 },
   };
   int failures = 0;
-  for (int falloff : { vtkFXSSAOPass::Binary, vtkFXSSAOPass::CubeRoot })
+  // (the third: Binary with occluders 0.5 R thick, on scene:corner)
+  for (int mode : { 0, 1, 2 })
   for (const std::string input :
     { std::string("scene:corner"), vtkFXScenes::DataDirectory() + "/stanford-bunny.obj" })
   {
-    const char* falloffName = falloff == vtkFXSSAOPass::Binary ? "binary" : "cube-root";
+    if (mode == 2 && input != "scene:corner")
+    {
+      continue;
+    }
+    const int falloff = mode == 1 ? vtkFXSSAOPass::CubeRoot : vtkFXSSAOPass::Binary;
+    const double thickness = mode == 2 ? 0.5 : vtkFXSSAOPass::HeightField;
+    const char* falloffName = mode == 0 ? "binary" : (mode == 1 ? "cube-root" : "binary, thin");
     for (bool parallel : { false, true })
     {
       unsigned char background[3];
-      const auto base = Render(window, input, parallel, reference, falloff, background);
+      const auto base =
+        Render(window, input, parallel, reference, falloff, background, 0.0, thickness);
       // The comparison means something only if the base shows occlusion.
       int occluded = 0;
       for (size_t i = 0; i + 2 < base.size(); i += 3)
@@ -91,7 +102,7 @@ int TestSSAOScale(int, char*[])
       for (const Variant& v : variants)
       {
         unsigned char bg[3];
-        const auto image = Render(window, input, parallel, v, falloff, bg);
+        const auto image = Render(window, input, parallel, v, falloff, bg, 0.0, thickness);
         const double psnr = vtkFXScenes::PSNR(base, image, background);
         std::cout << falloffName << ", " << input << (parallel ? " parallel" : " perspective") << ", " << v.Name
                   << ": PSNR " << psnr << " dB" << std::endl;

@@ -12,6 +12,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
@@ -124,6 +125,40 @@ inline Setup MakeSetup(vtkRenderWindow* window)
   s.Renderer->SetPass(s.Pipeline);
   return s;
 }
+
+// A 40 x 40 plane y = 0 (the only prop), seen from `elevation` degrees
+// above it, 6 units away.
+inline void ViewPlane(Setup& s, double elevation)
+{
+  const double o[3] = { -20, 0, -20 }, p1[3] = { 20, 0, -20 }, p2[3] = { -20, 0, 20 };
+  s.Renderer->AddActor(Plane(o, p1, p2));
+  vtkCamera* camera = s.Renderer->GetActiveCamera();
+  const double a = vtkMath::RadiansFromDegrees(elevation);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetPosition(0, 6 * std::sin(a), 6 * std::cos(a));
+  camera->SetViewUp(0, 1, 0);
+  s.Renderer->ResetCameraClippingRange();
+}
+
+// Lowest occlusion (values above 1 count as 1) over the pixels of that
+// plane more than `margin` from its border; `inside` counts them.
+inline float LowestOnPlane(const std::vector<float>& ao,
+  const std::vector<std::array<double, 4>>& world, double margin, int& inside)
+{
+  float lowest = 1.0f;
+  inside = 0;
+  for (size_t i = 0; i < ao.size(); ++i)
+  {
+    const auto& p = world[i];
+    if (p[3] > 0.0 && std::fabs(p[0]) < 20 - margin && std::fabs(p[2]) < 20 - margin)
+    {
+      lowest = std::min(lowest, ao[i]);
+      ++inside;
+    }
+  }
+  return lowest;
+}
+
 
 // The inner crease of a floor (y = 0, z in [0, 10]) and a wall (z = 0,
 // y in [0, 10]), 20 units wide, seen from (0.5, 3, 4) towards (0, 0.5,
