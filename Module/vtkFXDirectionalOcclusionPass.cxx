@@ -189,7 +189,8 @@ std::string vtkFXDirectionalOcclusionPass::ChannelsReadCode()
   const std::string read = byDepth
     ? "  vec3 stored = fxJointUpsample(@occlusion, true, @occlusion, 3, textureSize(@occlusion, "
       "0), @step, ivec2(texCoord * vec2(@fullSize)), fxPixelDepth, " +
-      vtkFXRenderUtilities::GLSLFloat(vtkFXBilateralBlurPass::DefaultDepthSigma) + ", g, @fullSize).rgb;\n"
+      vtkFXRenderUtilities::GLSLFloat(vtkFXBilateralBlurPass::DefaultDepthSigma) +
+      ", g, @fullSize, vec4(1.0)).rgb;\n"
     : this->GetInput("denoised").Texture
     ? "  vec3 stored = texture(@occlusion, texCoord * @scale + @offset).rgb;\n"
     : "  ivec2 size = textureSize(@occlusion, 0);\n"
@@ -201,15 +202,30 @@ std::string vtkFXDirectionalOcclusionPass::ChannelsReadCode()
                                            : "  return stored;\n}\n");
 }
 
-vtkTextureObject* vtkFXDirectionalOcclusionPass::BleedingToShow()
+vtkFXEffectPass::Output vtkFXDirectionalOcclusionPass::BleedingSource()
 {
   // (as GetOutput("bleeding"): only beside this frame's occlusion)
-  if (!this->GetOutput("bleeding").Texture)
+  Output own = this->GetOutput("bleeding");
+  if (!own.Texture)
   {
-    return nullptr;
+    return own;
   }
   Output denoised = this->GetInput("bleeding-denoised");
-  return denoised.Texture ? denoised.Texture : this->BleedingTexture.GetPointer();
+  return denoised.Texture ? denoised : own;
+}
+
+vtkTextureObject* vtkFXDirectionalOcclusionPass::BleedingToShow()
+{
+  return this->BleedingSource().Texture;
+}
+
+bool vtkFXDirectionalOcclusionPass::BleedingUpsamplesByDepth()
+{
+  const Output occlusion = this->CompositeSource();
+  const Output bleeding = this->BleedingSource();
+  return bleeding.Texture && this->UpsamplesByDepth(occlusion) && bleeding.Step == occlusion.Step &&
+    bleeding.Texture->GetWidth() == occlusion.Texture->GetWidth() &&
+    bleeding.Texture->GetHeight() == occlusion.Texture->GetHeight();
 }
 
 vtkFXDirectionalOcclusionPass::~vtkFXDirectionalOcclusionPass() = default;
@@ -227,35 +243,58 @@ std::string vtkFXDirectionalOcclusionPass::GetCompositeCode(int hook)
   {
     case Declarations:
       // The occlusion texture's layout is vtkFXSSAOPass's (see there).
-      return std::string("uniform sampler2D @occlusion;\nuniform vec2 @scale;\nuniform vec2 @offset;\n"
-                         "uniform int @written;\nuniform ivec2 @fullSize;\nuniform int @step;\n") +
+    {
+      // @geometricNormal: the geometric normal of a pixel of shading
+      // normal n. Without a GeometricNormal channel no prop perturbs its
+      // normal: n.
+      std::string code =
+        std::string("uniform sampler2D @occlusion;\nuniform vec2 @scale;\nuniform vec2 @offset;\n"
+                    "uniform int @written;\nuniform ivec2 @fullSize;\nuniform int @step;\n") +
         this->ChannelsReadCode() + (geometric ? "uniform sampler2D @geometric;\n" : "") +
+        "vec3 @geometricNormal(vec3 n)\n{\n";
+      if (geometric)
+      {
+        code += "  vec2 encoded = texture(@geometric, texCoord).rg;\n"
+                "  return fxIsUnlit(encoded) ? n : fxDecodeNormal(encoded);\n";
+      }
+      else
+      {
+        code += "  return n;\n";
+      }
+      return code + "}\n" +
         (bleeding ? "uniform sampler2D @bleeding;\nuniform float @bleedingStrength;\n"
                     "uniform vec2 @bleedingScale;\nuniform vec2 @bleedingOffset;\n"
                   : "") +
         vtkFXOcclusionBasis;
+    }
     case Color:
-      // One bounce off the occluders: irradiance x this surface's albedo
-      // (the bleeding texture shares the occlusion's layout).
-      return bleeding
-        ? "  if (lit)\n  {\n"
-          "    vec3 bled = texture(@bleeding, texCoord * @bleedingScale + @bleedingOffset).rgb;\n"
-          "    bled = mix(bled, vec3(0.0), bvec3(isnan(bled.x), isnan(bled.y), isnan(bled.z)));\n"
-          "    color += @bleedingStrength * albedo.rgb * clamp(bled, 0.0, 65504.0);\n  }"
-        : std::string();
+    {
+      if (!bleeding)
+      {
+        return std::string();
+      }
+      // One bounce off the occluders: irradiance x this surface's albedo.
+      // At reduced resolution read as the occlusion is, by depth against
+      // the geometric normal's plane (with the occlusion's depths: the
+      // bleeding lies beside it, texel for texel), so that no light bleeds
+      // across a silhouette onto what lies in front; where the four texels
+      // are background, none.
+      const std::string read = this->BleedingUpsamplesByDepth()
+        ? "    vec3 bled = fxJointUpsample(@bleeding, false, @occlusion, 3, textureSize(@occlusion, "
+          "0), @step, ivec2(texCoord * vec2(@fullSize)), fxPixelDepth, " +
+          vtkFXRenderUtilities::GLSLFloat(vtkFXBilateralBlurPass::DefaultDepthSigma) +
+          ", @geometricNormal(n), @fullSize, vec4(0.0)).rgb;\n"
+        : "    vec3 bled = texture(@bleeding, texCoord * @bleedingScale + @bleedingOffset).rgb;\n";
+      return "  if (lit)\n  {\n" + read +
+        "    bled = mix(bled, vec3(0.0), bvec3(isnan(bled.x), isnan(bled.y), isnan(bled.z)));\n"
+        "    color += @bleedingStrength * albedo.rgb * clamp(bled, 0.0, 65504.0);\n  }";
+    }
     case Ambient:
     {
       const bool horizon = this->GetEffectiveMethod() == Horizon;
-      // g: the geometric normal. Without a GeometricNormal channel no prop
-      // perturbs its normal: g = n.
       std::string code = "    if (@written != 0)\n"
                          "    {\n"
-                         "      vec3 g = n;\n";
-      if (geometric)
-      {
-        code += "      vec2 encoded = texture(@geometric, texCoord).rg;\n"
-                "      if (!fxIsUnlit(encoded)) { g = fxDecodeNormal(encoded); }\n";
-      }
+                         "      vec3 g = @geometricNormal(n);\n";
       code += "      vec3 channels = @channels(fxPixelDepth, g);\n";
       if (this->ShowChannels)
       {
@@ -287,18 +326,14 @@ void vtkFXDirectionalOcclusionPass::BindCompositeResources(
     this->GeometricNormalBound = geometric;
     program->SetUniformi((prefix + "geometric").c_str(), geometric->GetTextureUnit());
   }
-  if (vtkTextureObject* bleeding = this->BleedingToShow())
+  const Output bleeding = this->BleedingSource();
+  if (bleeding.Texture)
   {
-    bleeding->Activate();
-    this->BleedingBound = bleeding;
-    program->SetUniformi((prefix + "bleeding").c_str(), bleeding->GetTextureUnit());
+    bleeding.Texture->Activate();
+    this->BleedingBound = bleeding.Texture;
+    program->SetUniformi((prefix + "bleeding").c_str(), bleeding.Texture->GetTextureUnit());
     program->SetUniformf((prefix + "bleedingStrength").c_str(), static_cast<float>(this->Bleeding));
-    Output source = this->GetInput("bleeding-denoised");
-    if (!source.Texture)
-    {
-      source = this->GetOutput("bleeding");
-    }
-    this->SetReadUniforms(program, prefix + "bleedingScale", prefix + "bleedingOffset", source);
+    this->SetReadUniforms(program, prefix + "bleedingScale", prefix + "bleedingOffset", bleeding);
   }
 }
 

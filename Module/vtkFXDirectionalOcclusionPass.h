@@ -125,6 +125,12 @@ protected:
 
   vtkTextureObject* GeometricNormalChannel() const;
   vtkTextureObject* BleedingToShow();
+  // What the composite reads of the bleeding (the denoised input, else
+  // this pass's output).
+  Output BleedingSource();
+  // The composite upsamples the bleeding by depth, with the occlusion's
+  // (it lies beside it, at its size, with no depth of its own).
+  bool BleedingUpsamplesByDepth();
   std::string ChannelsReadCode();
 
   // vtkFXSSAOPass's hooks: the bleeding's shader code, target and inputs.

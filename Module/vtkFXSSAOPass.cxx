@@ -166,7 +166,7 @@ std::string vtkFXSSAOPass::GetCompositeCode(int hook)
           "#else\n"
           "      float ao = fxPixelDepth > 0.0 ? fxJointUpsample(@occlusion, true, @occlusion, 1, "
           "textureSize(@occlusion, 0), @step, ivec2(texCoord * vec2(@fullSize)), fxPixelDepth, " +
-          sigma + plane + ").r : 1.0;\n"
+          sigma + plane + ", vec4(1.0)).r : 1.0;\n"
           "#endif\n"
         : "      float ao = texture(@occlusion, texCoord * @scale + @offset).r;\n";
       return "    if (@written != 0)\n"

@@ -239,10 +239,12 @@ void main()
   vec3 n0 = fxPlaneNormal(texelFetch(fxNormal, p, 0).rg);
 #if FX_PACKED || FX_PACKED_NORMALS
   gl_FragData[0] = fxJointUpsample(fxInput, true, fxInput, FX_DEPTH_COMPONENT, fxInputSize,
-    fxStep, p, d0, fxDepthSigma, n0, fxGBufferSize);
+    fxStep, p, d0, fxDepthSigma, n0, fxGBufferSize, vec4(1.0));
 #else
+  // (where the four texels are background, what the source holds there, as
+  // for a background pixel above: 0 for bounced light)
   gl_FragData[0] = fxJointUpsample(fxInput, false, fxGuide, 3, fxInputSize, fxStep, p, d0,
-    fxDepthSigma, n0, fxGBufferSize);
+    fxDepthSigma, n0, fxGBufferSize, texelFetch(fxInput, clamp(p / fxStep, ivec2(0), fxInputSize - 1), 0));
 #endif
 #endif
 }

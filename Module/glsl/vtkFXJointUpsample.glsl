@@ -11,7 +11,8 @@
 // constant at every call, so the branch compiles away), of the values
 // themselves, as the occlusion passes write them, saving a fetch per
 // texel; with no agreeing texel (a feature thinner than a low-resolution
-// texel) the texel closest to that depth wins. Low-resolution texel i holds the
+// texel) the texel closest to that depth wins, and `none` where all four are
+// background (open occlusion 1, no bounced light 0). Low-resolution texel i holds the
 // value of full-resolution texel i * step of fullSize.
 // Used by vtkFXBilateralBlurFS and the occlusion passes' composite code,
 // after vtkFXViewPosition.glsl.
@@ -31,7 +32,8 @@ void fxPixelPlane(vec3 n0, float d0, ivec2 pixel, ivec2 fullSize, out vec3 a, ou
 }
 
 vec4 fxJointUpsample(sampler2D lowResolution, bool depthInValue, sampler2D depths, int depthComponent,
-  ivec2 lowSize, int step, ivec2 pixel, float d0, float depthSigma, vec3 n0, ivec2 fullSize)
+  ivec2 lowSize, int step, ivec2 pixel, float d0, float depthSigma, vec3 n0, ivec2 fullSize,
+  vec4 none)
 {
   vec2 x = vec2(pixel) / float(step);
   ivec2 base = ivec2(floor(x));
@@ -40,7 +42,7 @@ vec4 fxJointUpsample(sampler2D lowResolution, bool depthInValue, sampler2D depth
   fxPixelPlane(n0, d0, pixel, fullSize, planeA, planeB);
   vec4 sum = vec4(0.0);
   float total = 0.0;
-  vec4 nearest = vec4(1.0);
+  vec4 nearest = none;
   float nearestGap = 1e30;
   for (int j = 0; j < 2; ++j)
   {

@@ -29,12 +29,16 @@
 //    wall lit by one directional light, the floor receives
 //    rho_wall x D_wall x (1 - A(h)) (every blocked ray ends on the wall,
 //    whose direct light D_wall is uniform), red before green and blue in
-//    the wall's proportions.
+//    the wall's proportions; in the lit image at half resolution, a plate
+//    floating in front of that band bounces nothing: no pixel of it
+//    changes with bleeding on (the bleeding is read by depth, as the
+//    channels are).
 #include "vtkInformation.h"
 #include "vtkActorCollection.h"
 #include "vtkFXDirectionalOcclusionPass.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXOcclusionTestUtilities.h"
+#include "vtkFXScenes.h"
 
 #include "vtkFloatArray.h"
 #include "vtkCompositePolyDataMapper2.h"
@@ -800,9 +804,52 @@ int TestDirectionalOcclusion(int, char*[])
     // worst 0.019 in all).
     FX_CHECK(worst <= 0.03 + 0.01, "the floor receives the wall's light times 1 - A(h)");
     FX_CHECK(far <= 1e-3, "no bleeding beyond R from the wall");
-    // Off again: the texture goes.
+
+    // No light bleeds across a silhouette: a white plate 1 unit above the
+    // floor and 1.2 to 1.8 from the wall (nothing within R of its top
+    // side) hides part of the lit band. Its pixels, which bounce nothing,
+    // must not change with bleeding on (read bilinearly at half
+    // resolution, the floor's light behind its edge reached a pixel-wide
+    // fringe: 55 of its pixels, up to 13 levels of red).
+    // (grey floor and plate: white ones saturate before any light is added)
+    const double po[3] = { -0.5, 1.0, 1.2 }, p1[3] = { 0.5, 1.0, 1.2 }, p2[3] = { -0.5, 1.0, 1.8 };
+    auto plate = Plane(po, p1, p2);
+    plate->GetProperty()->SetColor(0.4, 0.4, 0.4);
+    vtkActor::SafeDownCast(s.Renderer->GetActors()->GetItemAsObject(0))
+      ->GetProperty()
+      ->SetColor(0.4, 0.4, 0.4);
+    s.Renderer->AddActor(plate);
+    s.Renderer->ResetCameraClippingRange();
+    // The lit image, at the pipeline's resolution (half).
+    s.Pipeline->GetCompositePass()->DebugOcclusionOff();
+    dop->SetHalfResolution(true);
+    window->Render();
+    const auto withBleeding = vtkFXScenes::Capture(window);
+    const auto plateWorld = WorldPositions(s.Renderer, s.Pipeline->GetGBufferPass());
     dop->SetBleeding(0.0);
     window->Render();
+    const auto withoutBleeding = vtkFXScenes::Capture(window);
+    int platePixels = 0, changed = 0, largest = 0, floorChanged = 0;
+    for (size_t i = 0; i < plateWorld.size(); ++i)
+    {
+      const int difference = std::abs(int(withBleeding[3 * i]) - int(withoutBleeding[3 * i]));
+      if (plateWorld[i][3] > 0.0 && std::fabs(plateWorld[i][1] - 1.0) < 1e-3)
+      {
+        ++platePixels;
+        changed += difference > 1 ? 1 : 0;
+        largest = std::max(largest, difference);
+      }
+      else
+      {
+        floorChanged += difference > 1 ? 1 : 0;
+      }
+    }
+    std::cout << "plate over the lit band: " << platePixels << " pixels, " << changed
+              << " changed by bleeding (at most " << largest << " levels of red); "
+              << floorChanged << " pixels of the crease changed" << std::endl;
+    FX_CHECK(platePixels > 1000 && floorChanged > 1000, "the plate hides part of the lit band");
+    FX_CHECK(changed == 0, "bleeding crossed the plate's silhouette");
+    // Off again: the texture goes.
     FX_CHECK(!dop->GetOutputTexture("bleeding"), "bleeding off frees its texture");
   }
 
