@@ -516,11 +516,14 @@ void vtkFXCompositePass::BuildLightTiles(
   {
     this->LightTiles->ForgetTileDepths();
   }
-  // (the clipping range, a little wider: the depth buffer's own rounding)
-  double depthRange[2];
-  ren->GetActiveCamera()->GetClippingRange(depthRange);
-  depthRange[0] *= 0.99;
-  depthRange[1] *= 1.01;
+  // (the range the projection draws, a little wider: the depth buffer's own
+  // rounding; without one, or one reaching behind the eye, no depth bound)
+  double depthRange[2] = { -1.0, -1.0 };
+  if (vtkFXRenderUtilities::ComputeViewDepthRange(ren, depthRange))
+  {
+    depthRange[0] *= 0.99;
+    depthRange[1] *= 1.01;
+  }
   // (the lights are the texture's rows from the first point light on; the
   // spot lights follow the point lights)
   const int firstPoint = this->FirstLightOfKind[0];
@@ -606,6 +609,7 @@ void vtkFXCompositePass::SetUniforms(vtkShaderProgram* program, vtkOpenGLRendere
   {
     double range[2];
     ren->GetActiveCamera()->GetClippingRange(range);
+    vtkFXRenderUtilities::ComputeViewDepthRange(ren, range);
     const float r[2] = { static_cast<float>(range[0]), static_cast<float>(range[1]) };
     program->SetUniform2f("fxDepthRange", r);
   }

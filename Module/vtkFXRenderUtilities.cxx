@@ -1074,6 +1074,37 @@ void vtkFXRenderUtilities::GetViewportSize(const vtkRenderState* s, int& width, 
   height = std::max(height, 1);
 }
 
+bool vtkFXRenderUtilities::ComputeViewDepthRange(vtkRenderer* renderer, double range[2])
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double (*m)[4] =
+    camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1)->Element;
+  // With z = -d: perspective (last row 0, 0, -1, 0) gives z_ndc =
+  // (m22 z + m23) / d, which is -1 at d = m23 / (m22 - 1) and 1 at
+  // m23 / (m22 + 1); parallel (last row 0, 0, 0, 1) gives m22 z + m23, at
+  // d = (1 + m23) / m22 and (m23 - 1) / m22.
+  const bool perspective = m[3][0] == 0.0 && m[3][1] == 0.0 && m[3][2] == -1.0 && m[3][3] == 0.0;
+  const bool parallel = m[3][0] == 0.0 && m[3][1] == 0.0 && m[3][2] == 0.0 && m[3][3] == 1.0;
+  double nearDepth = 0.0, farDepth = 0.0;
+  if (perspective)
+  {
+    nearDepth = m[2][3] / (m[2][2] - 1.0);
+    farDepth = m[2][3] / (m[2][2] + 1.0);
+  }
+  else if (parallel)
+  {
+    nearDepth = (1.0 + m[2][3]) / m[2][2];
+    farDepth = (m[2][3] - 1.0) / m[2][2];
+  }
+  if (!(std::isfinite(nearDepth) && std::isfinite(farDepth) && nearDepth < farDepth))
+  {
+    return false;
+  }
+  range[0] = nearDepth;
+  range[1] = farDepth;
+  return true;
+}
+
 void vtkFXRenderUtilities::ComputeFrustumRay(
   vtkRenderer* renderer, double origin[3][3], double direction[3][3])
 {

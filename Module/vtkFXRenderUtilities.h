@@ -245,6 +245,14 @@ public:
   static int GetImageRows(vtkRenderer* renderer, int viewportRows);
 
   /**
+   * The view depths (-z_view) of the near and far planes of the projection
+   * VTK draws with: the camera's projection matrix, which is the explicit
+   * one where the camera uses one (its clipping range then says nothing).
+   * False (range untouched) for a matrix of neither of VTK's two forms.
+   */
+  static bool ComputeViewDepthRange(vtkRenderer* renderer, double range[2]);
+
+  /**
    * Ray terms as described above: origin[3][3] and direction[3][3] are the
    * constant, ndc.x and ndc.y coefficients. Exposed for tests and CPU code.
    */

@@ -7,6 +7,9 @@
 //   PSNR >= 55 dB and no byte more than 2 off;
 // - a light at the camera (its sphere of influence crosses the near plane)
 //   and parallel projection: PSNR >= 55 dB and no byte more than 2 off;
+// - an explicit projection matrix (perspective and parallel) with a
+//   clipping range it ignores: PSNR >= 55 dB and no byte more than 2 off
+//   (the lights' depths were clamped to the clipping range: all culled);
 // - culling against none (LightCutoff 0) with 64 lights: PSNR >= 55 dB and no byte more than 2 off
 //   (each left-out light adds under 1/512 where it is left out);
 // - the range formula: the light adds exactly the cutoff at its range.
@@ -63,7 +66,7 @@ vtkRenderer* LitSpheres(vtkRenderWindow* window, int count, std::string& error)
 // spot light of 50 degrees looking down), in vtkFX (with the composite set
 // up by `configure`) and in VTK's forward render.
 Lit Render(vtkRenderWindow* window, int count, bool atCamera, bool parallel,
-  void (*configure)(vtkFXCompositePass*), bool spots = false)
+  void (*configure)(vtkFXCompositePass*), bool spots = false, bool explicitProjection = false)
 {
   Lit result;
   for (bool fx : { true, false })
@@ -97,6 +100,17 @@ Lit Render(vtkRenderWindow* window, int count, bool atCamera, bool parallel,
       light->SetFocalPoint(camera->GetFocalPoint());
       light->SetAttenuationValues(1.0, 0.0, 0.05);
       renderer->AddLight(light);
+    }
+    if (explicitProjection)
+    {
+      // The camera's own projection as an explicit matrix, and a clipping
+      // range that matrix ignores (VTK draws by the matrix alone).
+      vtkNew<vtkMatrix4x4> projection;
+      projection->DeepCopy(
+        camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1));
+      camera->SetExplicitProjectionTransformMatrix(projection);
+      camera->UseExplicitProjectionTransformMatrixOn();
+      camera->SetClippingRange(1e-3, 2e-3);
     }
     vtkNew<vtkFXPipelinePass> pipeline;
     if (fx)
@@ -578,6 +592,17 @@ int TestLights(int, char*[])
   FX_CHECK(Check("a light at the camera", near.FX, near.VTK, 55.0, 2) == EXIT_SUCCESS, "");
   const Lit parallel = Render(window, 64, false, true, Defaults);
   FX_CHECK(Check("64 lights, parallel projection", parallel.FX, parallel.VTK, 55.0, 2) == EXIT_SUCCESS, "");
+
+  // An explicit projection matrix, the camera's clipping range elsewhere:
+  // the lights' depth range is the matrix's.
+  for (bool parallelView : { false, true })
+  {
+    const Lit given = Render(window, 64, false, parallelView, Defaults, false, true);
+    FX_CHECK(Check(parallelView ? "64 lights, explicit parallel projection"
+                                : "64 lights, explicit projection",
+               given.FX, given.VTK, 55.0, 2) == EXIT_SUCCESS,
+      "");
+  }
 
   const Lit culled = Render(window, 64, false, false, Defaults);
   const Lit all = Render(window, 64, false, false, NoCulling);
