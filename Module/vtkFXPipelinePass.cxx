@@ -18,6 +18,7 @@
 #include "vtkActor.h"
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
+#include "vtkCamera.h"
 #include "vtkCameraPass.h"
 #include "vtkPropCollection.h"
 #include "vtkLight.h"
@@ -983,6 +984,22 @@ void vtkFXPipelinePass::ScheduleSelectionFrame()
   this->Sequence->AddPass("selection", this->SelectionPass);
 }
 
+void vtkFXPipelinePass::UpdateCameraStereo(vtkRenderer* renderer)
+{
+  // VTK 9.1 gives the camera the window's stereo state (whether the
+  // projection takes the eye's shear; the eye of a one-eye stereo type)
+  // in vtkOpenGLCamera::Render, which vtkOpenGLRenderer calls only when no
+  // render pass is set: under a pass, VTK's own included, both eyes would
+  // see the mono view. The camera's Render also sets the viewport and
+  // clears as vtkCameraPass does after it, so it runs only when the state
+  // changes.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  if (camera->GetStereo() != renderer->GetRenderWindow()->GetStereoRender())
+  {
+    camera->Render(renderer);
+  }
+}
+
 void vtkFXPipelinePass::Render(const vtkRenderState* s)
 {
   vtkRenderer* renderer = s->GetRenderer();
@@ -1022,6 +1039,7 @@ void vtkFXPipelinePass::Render(const vtkRenderState* s)
     this->WarnAboutNonFiniteLights(this->LastScene);
     this->ScheduleDeferredFrame(this->LastScene, s->GetRenderer()->GetRenderWindow());
   }
+  UpdateCameraStereo(renderer);
   this->CameraPass->Render(s);
   this->NumberOfRenderedProps = this->CameraPass->GetNumberOfRenderedProps();
   this->LastPasses.clear();

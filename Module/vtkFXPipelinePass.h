@@ -262,6 +262,8 @@ protected:
   void WarnAboutNonFiniteLights(const vtkFXSceneInfo& scene);
   void ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWindow* window);
   void ScheduleSelectionFrame();
+  // Gives the camera the window's stereo state (see Render).
+  static void UpdateCameraStereo(vtkRenderer* renderer);
 
   struct EffectSlot
   {
