@@ -51,6 +51,19 @@ struct Result
 // are rounded to 8 bits: two grey levels at most.
 const int MaxDifference = 2;
 
+// The two images of `renderer`'s view compared over the pixels that show
+// data.
+Result Compare(vtkRenderer* renderer, const std::vector<unsigned char>& forward,
+  const std::vector<unsigned char>& deferred)
+{
+  Result result;
+  unsigned char background[3];
+  vtkFXScenes::BackgroundBytes(renderer, background);
+  result.PSNR = vtkFXScenes::PSNR(forward, deferred, background);
+  result.MaxDifference = vtkFXScenes::MaxDifference(forward, deferred);
+  return result;
+}
+
 // With `supersampled`, both renders go through vtkSSAAPass, which draws
 // its delegate into a framebuffer of its own, larger than the window.
 Result RenderAndCompare(vtkRenderWindow* window, const std::string& input, bool parallel,
@@ -96,11 +109,7 @@ Result RenderAndCompare(vtkRenderWindow* window, const std::string& input, bool 
     error = "the pipeline did not run its G-buffer";
     return result;
   }
-  unsigned char background[3];
-  vtkFXScenes::BackgroundBytes(renderer, background);
-  result.PSNR = vtkFXScenes::PSNR(forward, deferred, background);
-  result.MaxDifference = vtkFXScenes::MaxDifference(forward, deferred);
-  return result;
+  return Compare(renderer, forward, deferred);
 }
 }
 
@@ -138,13 +147,8 @@ Result CompareWithVTK(vtkRenderWindow* window, Setup setup, std::string* passes 
   {
     *passes = vtkFXTest::Passes(pipeline);
   }
-  Result result;
-  unsigned char background[3];
-  vtkFXScenes::BackgroundBytes(renderer, background);
-  result.PSNR = vtkFXScenes::PSNR(forward, deferred, background);
-  result.MaxDifference = vtkFXScenes::MaxDifference(forward, deferred);
   renderer->SetPass(nullptr);
-  return result;
+  return Compare(renderer, forward, deferred);
 }
 
 // A unit sphere centred at (x, 0, 0), in `renderer`.
@@ -438,12 +442,7 @@ Result CompareStereo(vtkRenderWindow* window, vtkRenderer* renderer, int type)
   window->Render();
   const auto forward = vtkFXScenes::Capture(window);
   pipeline->ReleaseGraphicsResources(window);
-  Result result;
-  unsigned char background[3];
-  vtkFXScenes::BackgroundBytes(renderer, background);
-  result.PSNR = vtkFXScenes::PSNR(forward, deferred, background);
-  result.MaxDifference = vtkFXScenes::MaxDifference(forward, deferred);
-  return result;
+  return Compare(renderer, forward, deferred);
 }
 
 // Each of VTK's stereo types a virtual X server shows, then mono again.
