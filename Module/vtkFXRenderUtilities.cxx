@@ -1074,17 +1074,42 @@ void vtkFXRenderUtilities::GetViewportSize(const vtkRenderState* s, int& width, 
   height = std::max(height, 1);
 }
 
+namespace
+{
+// The rows of the projection matrix VTK draws `renderer` with.
+const double (*ProjectionRows(vtkRenderer* renderer))[4]
+{
+  return renderer->GetActiveCamera()
+    ->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1)
+    ->Element;
+}
+
+bool IsParallelRow(const double row[4])
+{
+  return row[0] == 0.0 && row[1] == 0.0 && row[2] == 0.0 && row[3] == 1.0;
+}
+}
+
+bool vtkFXRenderUtilities::ComputeParallelHalfHeight(vtkRenderer* renderer, double& halfHeight)
+{
+  const double (*m)[4] = ProjectionRows(renderer);
+  if (!IsParallelRow(m[3]) || !(std::isfinite(m[1][1]) && m[1][1] != 0.0))
+  {
+    return false;
+  }
+  halfHeight = std::fabs(1.0 / m[1][1]);
+  return true;
+}
+
 bool vtkFXRenderUtilities::ComputeViewDepthRange(vtkRenderer* renderer, double range[2])
 {
-  vtkCamera* camera = renderer->GetActiveCamera();
-  const double (*m)[4] =
-    camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1)->Element;
+  const double (*m)[4] = ProjectionRows(renderer);
   // With z = -d: perspective (last row 0, 0, -1, 0) gives z_ndc =
   // (m22 z + m23) / d, which is -1 at d = m23 / (m22 - 1) and 1 at
   // m23 / (m22 + 1); parallel (last row 0, 0, 0, 1) gives m22 z + m23, at
   // d = (1 + m23) / m22 and (m23 - 1) / m22.
   const bool perspective = m[3][0] == 0.0 && m[3][1] == 0.0 && m[3][2] == -1.0 && m[3][3] == 0.0;
-  const bool parallel = m[3][0] == 0.0 && m[3][1] == 0.0 && m[3][2] == 0.0 && m[3][3] == 1.0;
+  const bool parallel = IsParallelRow(m[3]);
   double nearDepth = 0.0, farDepth = 0.0;
   if (perspective)
   {

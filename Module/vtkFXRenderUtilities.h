@@ -253,6 +253,15 @@ public:
   static bool ComputeViewDepthRange(vtkRenderer* renderer, double range[2]);
 
   /**
+   * Whether the projection VTK draws with is parallel (the matrix's last
+   * row is 0, 0, 0, 1; under an explicit matrix the camera's
+   * ParallelProjection flag says nothing), and then the view's half height
+   * in world units (1 / P11: the camera's ParallelScale when it makes the
+   * matrix).
+   */
+  static bool ComputeParallelHalfHeight(vtkRenderer* renderer, double& halfHeight);
+
+  /**
    * Ray terms as described above: origin[3][3] and direction[3][3] are the
    * constant, ndc.x and ndc.y coefficients. Exposed for tests and CPU code.
    */

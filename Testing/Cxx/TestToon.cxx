@@ -25,6 +25,7 @@
 #include "vtkPlaneSource.h"
 
 #include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkOBJReader.h"
@@ -706,6 +707,54 @@ int CheckScaleInvariance(vtkRenderWindow* window)
   const double farPSNR = vtkFXScenes::PSNR(near, far);
   std::cout << "toon bunny parallel, camera 1000 times as far: PSNR " << farPSNR << " dB" << std::endl;
   FX_CHECK(farPSNR >= 50.0, "parallel lines depend on the camera's distance");
+
+  // A view given as an explicit projection matrix, the camera's
+  // ParallelProjection flag the other way (and, in parallel projection,
+  // the camera 1000 times as far; in perspective, a parallel scale 1000
+  // times as large, which the matrix ignores): the same image. The lines'
+  // depth scale comes from the matrix VTK draws with, not the camera's flag.
+  for (const bool parallel : { true, false })
+  {
+    const auto moveFar = [parallel](vtkRenderer* renderer) {
+      vtkFXTest::MoveScene(renderer, 1.0, 0.0, parallel, 0.0);
+      vtkCamera* camera = renderer->GetActiveCamera();
+      if (parallel)
+      {
+        camera->Dolly(1e-3);
+        renderer->ResetCameraClippingRange();
+      }
+      else
+      {
+        camera->SetParallelScale(1e3 * camera->GetParallelScale());
+      }
+    };
+    vtkNew<vtkFXToonPass> flaggedToon;
+    const auto flagged = RenderBunny(window, flaggedToon, moveFar);
+    vtkNew<vtkFXToonPass> explicitToon;
+    const auto given = RenderBunny(window, explicitToon, [&](vtkRenderer* renderer) {
+      moveFar(renderer);
+      vtkCamera* camera = renderer->GetActiveCamera();
+      vtkNew<vtkMatrix4x4> projection;
+      projection->DeepCopy(
+        camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1, 1));
+      camera->SetExplicitProjectionTransformMatrix(projection);
+      camera->UseExplicitProjectionTransformMatrixOn();
+      camera->SetParallelProjection(!parallel);
+    });
+    int differingPixels = 0;
+    for (size_t i = 0; i + 2 < flagged.size() && i + 2 < given.size(); i += 3)
+    {
+      differingPixels += (flagged[i] != given[i] || flagged[i + 1] != given[i + 1] ||
+                           flagged[i + 2] != given[i + 2])
+        ? 1
+        : 0;
+    }
+    std::cout << "toon bunny " << (parallel ? "parallel" : "perspective")
+              << " as an explicit matrix, the camera's flag the other way: " << differingPixels
+              << " pixels differ" << std::endl;
+    FX_CHECK(!flagged.empty() && flagged.size() == given.size() && differingPixels <= 4,
+      "the lines follow the camera's flag, not its matrix");
+  }
   return EXIT_SUCCESS;
 }
 // Total line coverage of the image, sum over pixels.
