@@ -252,9 +252,14 @@ std::vector<Method> MakeMethods(int falloff)
   }
   fx(vtkFXSSAOPass::Horizon, 16, false, 2, false, box);
   // Occluders of finite thickness (fractions of R) instead of the height
-  // field, at the default's and twice its samples.
+  // field, at the default's and twice its samples (Binary only: the
+  // estimator takes them with that falloff alone).
   for (int samples : { 16, 32 })
   {
+    if (falloff != vtkFXSSAOPass::Binary)
+    {
+      break;
+    }
     for (double thickness : { 0.25, 0.5 })
     {
       fx(vtkFXSSAOPass::Horizon, samples, true, 4, false, vtkFXBilateralBlurPass::Gaussian, true,

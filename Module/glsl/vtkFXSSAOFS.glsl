@@ -315,7 +315,11 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
 #endif
   float inverseReach = 1.0 / (fxRadius * max(reach, 1e-30));
 #if FX_THIN
-  float thickness = fxThickness / max(reach, 1e-30); // (in the offsets' units)
+  // (in the offsets' units; at most 1e6 of them, a million times the
+  // steps' reach, where the point behind is straight behind to within
+  // 1e-12: beyond it the square of its offset overflowed, under R or
+  // thicknesses of about 1e19 and more, and an open plane read 0.62)
+  float thickness = min(fxThickness / max(reach, 1e-30), 1e6);
 #endif
   // The tile entry: the first slice's direction, at (jitter / FX_SLICES) x pi
   // for the entry's jitter within its stratum, and the steps' offset (both

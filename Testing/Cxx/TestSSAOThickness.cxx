@@ -2,9 +2,9 @@
 // finite thickness, Binary falloff) against the ray-traced reference and
 // the closed forms, with the Medium preset's 16 fetches at half resolution,
 // blurred:
-// - a flat plane seen from 70 to 4 degrees reads open (0.99 or more) raw,
-//   as the height field does: its own texels lie on its tangent line and
-//   mark no sector;
+// - a flat plane seen from 70 to 4 degrees reads open (0.999 or more)
+//   raw, as the height field does: its own texels lie on its tangent line
+//   and mark no sector; also under R = 1e25 and a thickness of 1e20 R;
 // - three balls floating over a floor (atoms over a surface): the floor
 //   within R of their feet against vtkFXReferenceAO (256 rays per pixel).
 //   The height field takes each ball for a column down to the floor
@@ -34,8 +34,9 @@ using namespace vtkFXOcclusionTest;
 
 const double Radius = 0.5;
 
-// Horizon, 16 fetches, half resolution, blurred and upsampled to full (the
-// Medium preset), with occluders `thickness` R thick.
+// Horizon, 16 fetches, half resolution, blurred (the Medium preset; read
+// at each pixel's half-resolution texel), with occluders `thickness` R
+// thick.
 vtkFXSSAOPass* UseThickness(Setup& s, double thickness)
 {
   vtkFXSSAOPass* ssao = s.Pipeline->GetSSAOPass();
@@ -104,12 +105,22 @@ int TestSSAOThickness(int, char*[])
 {
   auto window = vtkFXTest::MakeWindow(Width, Height);
 
-  // 1. An open plane, raw.
-  for (double elevation : { 70.0, 30.0, 10.0, 4.0 })
+  // 1. An open plane, raw, from 70 to 4 degrees; at 30 degrees also under
+  // a radius far beyond what the image shows and a thickness far beyond
+  // the radius (where the point behind a sample lies 1e20 units away).
+  struct OpenCase
   {
+    double Elevation, Radius, Thickness;
+  };
+  const OpenCase openCases[] = { { 70.0, Radius, 0.5 }, { 30.0, Radius, 0.5 },
+    { 10.0, Radius, 0.5 }, { 4.0, Radius, 0.5 }, { 30.0, 1e25, 0.5 }, { 30.0, Radius, 1e20 } };
+  for (const OpenCase& c : openCases)
+  {
+    const double elevation = c.Elevation;
     Setup s = MakeSetup(window);
     ViewPlane(s, elevation);
-    vtkFXSSAOPass* ssao = UseThickness(s, 0.5);
+    vtkFXSSAOPass* ssao = UseThickness(s, c.Thickness);
+    ssao->SetRadius(c.Radius);
     s.Pipeline->GetOcclusionBlurPass()->EnabledOff();
     window->Render();
     FX_CHECK(ssao->UsesThinOccluders(), "the thin-occluder estimator runs");
@@ -121,9 +132,11 @@ int TestSSAOThickness(int, char*[])
     const auto world = WorldPositions(s.Renderer, s.Pipeline->GetGBufferPass());
     int inside = 0;
     const float lowest = LowestOnPlane(ao, world, Radius, inside);
-    std::cout << "plane at " << elevation << " degrees: lowest raw occlusion " << lowest
-              << " over " << inside << " pixels" << std::endl;
-    FX_CHECK(inside > 1000 && lowest >= 0.99f, "a flat plane is unoccluded");
+    std::cout << "plane at " << elevation << " degrees, R " << c.Radius << ", thickness "
+              << c.Thickness << " R: lowest raw occlusion " << lowest << " over " << inside
+              << " pixels" << std::endl;
+    // (one sector marked on one side of one slice would cost 1/128)
+    FX_CHECK(inside > 1000 && lowest >= 0.999f, "a flat plane is unoccluded");
   }
 
   // 2. Balls floating over a floor, against the ray-traced reference.
