@@ -1173,6 +1173,12 @@ void vtkFXRenderUtilities::ComputeFrustumRay(
   direction[0][2] = -1.0;
 }
 
+bool vtkFXRenderUtilities::IsRenderingTiles(vtkRenderer* renderer)
+{
+  vtkRenderWindow* window = renderer->GetRenderWindow();
+  return window && (window->GetTileScale()[0] > 1 || window->GetTileScale()[1] > 1);
+}
+
 int vtkFXRenderUtilities::GetImageRows(vtkRenderer* renderer, int viewportRows)
 {
   vtkRenderWindow* window = renderer->GetRenderWindow();

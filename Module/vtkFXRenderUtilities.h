@@ -245,6 +245,14 @@ public:
   static int GetImageRows(vtkRenderer* renderer, int viewportRows);
 
   /**
+   * Whether the renderer's window is drawing an image tile by tile (a
+   * screenshot scaled by vtkWindowToImageFilter): an effect that reads a
+   * neighbourhood of pixels then sees only the tile, and the image shows
+   * seams where the tiles meet.
+   */
+  static bool IsRenderingTiles(vtkRenderer* renderer);
+
+  /**
    * The view depths (-z_view) of the near and far planes of the projection
    * VTK draws with: the camera's projection matrix, which is the explicit
    * one where the camera uses one (its clipping range then says nothing).

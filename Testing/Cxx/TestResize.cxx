@@ -1,10 +1,13 @@
 // The window changes size between frames: the G-buffer textures follow the
 // viewport and the image still matches VTK's forward render. A 1x1 window
-// and a renderer that covers only part of the window work too.
+// and a renderer that covers only part of the window work too. A
+// screenshot drawn tile by tile makes the occlusion and the glow warn
+// once each.
 #include "vtkFXBloomPass.h"
 #include "vtkFXCompositePass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXPipelinePass.h"
+#include "vtkFXSSAOPass.h"
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
 
@@ -13,6 +16,7 @@
 #include "vtkTextureObject.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
+#include "vtkWindowToImageFilter.h"
 
 #include <array>
 #include <functional>
@@ -211,6 +215,41 @@ int CheckRemoveEffectFromAnotherWindow()
     "ambient occlusion removed from a pipeline");
 }
 
+// A screenshot scaled by vtkWindowToImageFilter is drawn tile by tile:
+// the occlusion and the glow, which read beyond a pixel, warn (once each)
+// that they leave seams; a plain frame does not.
+int CheckTiledScreenshotWarns()
+{
+  auto window = vtkFXTest::MakeWindow(200, 150);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  std::string error;
+  FX_CHECK(vtkFXScenes::Populate(renderer, "scene:glow", vtkFXScenes::Options(), error), error);
+  vtkNew<vtkFXPipelinePass> pipeline;
+  FX_CHECK(vtkFXTest::AddEffect(pipeline, "ao") && vtkFXTest::AddEffect(pipeline, "bloom"),
+    "effects added");
+  renderer->SetPass(pipeline);
+  vtkFXTest::EventCounter occlusionWarnings(pipeline->GetSSAOPass(), vtkCommand::WarningEvent);
+  vtkFXTest::EventCounter glowWarnings(pipeline->GetEffect("bloom"), vtkCommand::WarningEvent);
+  window->Render();
+  const int plain[2] = { occlusionWarnings.Count, glowWarnings.Count };
+  for (int i = 0; i < 2; ++i)
+  {
+    vtkNew<vtkWindowToImageFilter> screenshot;
+    screenshot->SetInput(window);
+    screenshot->SetScale(2);
+    screenshot->ReadFrontBufferOff();
+    screenshot->Update();
+  }
+  std::cout << "a screenshot scaled by 2, twice: " << occlusionWarnings.Count
+            << " occlusion and " << glowWarnings.Count << " glow warning(s) (plain frame: "
+            << plain[0] << ", " << plain[1] << "): " << occlusionWarnings.Last << std::endl;
+  FX_CHECK(plain[0] == 0 && plain[1] == 0, "a plain frame warns");
+  FX_CHECK(occlusionWarnings.Count == 1 && glowWarnings.Count == 1,
+    "the tiles' seams are said once for each effect");
+  return EXIT_SUCCESS;
+}
+
 int TestResize(int, char*[])
 {
   auto window = vtkFXTest::MakeWindow(300, 200);
@@ -307,6 +346,7 @@ int TestResize(int, char*[])
     FX_CHECK(passes.find("hdr-target") != std::string::npos, "no HDR target: " << passes);
     FX_CHECK(largest <= 2, "the HDR target in a special window");
   }
+  FX_CHECK(CheckTiledScreenshotWarns() == EXIT_SUCCESS, "");
   FX_CHECK(CheckReleaseFromAnotherWindow() == EXIT_SUCCESS, "");
   FX_CHECK(CheckDeleteFromAnotherWindow() == EXIT_SUCCESS, "");
   FX_CHECK(CheckRemoveEffectFromAnotherWindow() == EXIT_SUCCESS, "");
