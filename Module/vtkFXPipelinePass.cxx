@@ -987,13 +987,14 @@ void vtkFXPipelinePass::ScheduleSelectionFrame()
 void vtkFXPipelinePass::UpdateCameraStereo(vtkRenderer* renderer)
 {
   // VTK 9.1 gives the camera the window's stereo state (whether the
-  // projection takes the eye's shear) in vtkOpenGLCamera::Render, which vtkOpenGLRenderer calls only when no
-  // render pass is set: under a pass, VTK's own included, both eyes would
-  // see the mono view. The camera's Render also sets the viewport and
-  // clears as vtkCameraPass does after it, so it runs only when the state
-  // changes. It does not mark the camera modified, and VTK's mappers keep
-  // the matrices they took from an unmodified camera: the first eye of a
-  // camera turned to stereo kept the mono view (33 dB against VTK).
+  // projection takes the eye's shear) in vtkOpenGLCamera::Render, which
+  // vtkOpenGLRenderer calls only when no render pass is set: under a pass,
+  // VTK's own included, both eyes would see the mono view. The camera's
+  // Render also sets the viewport and clears as vtkCameraPass does after
+  // it, so it runs only when the state changes. It does not mark the
+  // camera modified, and VTK's mappers keep the matrices they took from an
+  // unmodified camera: the first eye of a camera turned to stereo kept the
+  // mono view (33 dB against VTK).
   vtkCamera* camera = renderer->GetActiveCamera();
   if (camera->GetStereo() != renderer->GetRenderWindow()->GetStereoRender())
   {
