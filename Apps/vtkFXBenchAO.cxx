@@ -210,7 +210,9 @@ std::vector<Method> MakeMethods(int falloff)
     m.Setting = std::to_string(samples) + (half ? " half" : " full") +
       (blurRadius > 0 ? (box ? " box" : " blur") + std::to_string(blurRadius) : " noblur") +
       (m.Upsample ? " up" : "") + (blurRadius > 0 && !separable ? " 2d" : "") +
-      (thickness < vtkFXSSAOPass::HeightField ? " thick" + vtkFXRenderUtilities::GLSLFloat(thickness) : "");
+      (thickness < vtkFXSSAOPass::HeightField
+          ? " thick" + vtkFXRenderUtilities::GLSLFloat(thickness)
+          : "");
     for (const auto& other : methods)
     {
       if (other.Name == m.Name && other.Setting == m.Setting)
@@ -254,16 +256,16 @@ std::vector<Method> MakeMethods(int falloff)
   // Occluders of finite thickness (fractions of R) instead of the height
   // field, at the default's and twice its samples (Binary only: the
   // estimator takes them with that falloff alone).
+  const bool binary = falloff == vtkFXSSAOPass::Binary;
   for (int samples : { 16, 32 })
   {
-    if (falloff != vtkFXSSAOPass::Binary)
-    {
-      break;
-    }
     for (double thickness : { 0.25, 0.5 })
     {
-      fx(vtkFXSSAOPass::Horizon, samples, true, 4, false, vtkFXBilateralBlurPass::Gaussian, true,
-        thickness);
+      if (binary)
+      {
+        fx(vtkFXSSAOPass::Horizon, samples, true, 4, false, vtkFXBilateralBlurPass::Gaussian, true,
+          thickness);
+      }
     }
   }
   for (int kernel : { 16, 32, 64, 128 })
