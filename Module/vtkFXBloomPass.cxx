@@ -592,13 +592,7 @@ void vtkFXBloomPass::Render(const vtkRenderState* s)
                   "HDR target's image.");
     return;
   }
-  if (vtkFXRenderUtilities::IsRenderingTiles(s->GetRenderer()) && !this->WarnedTiles)
-  {
-    vtkWarningMacro("This image is drawn tile by tile (vtkWindowToImageFilter's scale above 1): "
-                    "the glow cannot reach across a tile's border, which leaves seams. Render "
-                    "offscreen at the image's full size instead.");
-    this->WarnedTiles = true;
-  }
+  this->WarnIfDrawnInTiles(s->GetRenderer(), "the glow cannot reach");
   if (this->LinearSampler && this->SamplerWindow != window)
   {
     this->ReleaseSampler(); // (made in another window's context)

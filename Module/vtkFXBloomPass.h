@@ -249,7 +249,6 @@ protected:
   bool MasksHiddenEmission = false; // this frame: something may hide an emitter (HasWork)
   bool DimsEmissionByCoverage = false; // this frame: something may be drawn over an emitter
   bool WarnedNoLitImage = false; // a threshold without an HDR target (said once)
-  bool WarnedTiles = false;      // an image drawn tile by tile (said once)
 
   std::vector<std::unique_ptr<Level>> Levels;
   // With a threshold: the emission plus the lit light above the threshold,

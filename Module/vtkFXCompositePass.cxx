@@ -652,12 +652,14 @@ void vtkFXCompositePass::Draw(vtkOpenGLRenderer* ren)
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA,
     this->MarksTransmittance ? GL_CONSTANT_ALPHA : GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  if (!this->MarksTransmittance)
+  {
+    this->Quad.Helper->Render();
+    return;
+  }
   float blendColor[4];
   glGetFloatv(GL_BLEND_COLOR, blendColor);
-  if (this->MarksTransmittance)
-  {
-    glBlendColor(0.0f, 0.0f, 0.0f, static_cast<float>(TransmittanceMark));
-  }
+  glBlendColor(0.0f, 0.0f, 0.0f, static_cast<float>(TransmittanceMark));
   this->Quad.Helper->Render();
   glBlendColor(blendColor[0], blendColor[1], blendColor[2], blendColor[3]);
 }

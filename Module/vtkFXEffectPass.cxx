@@ -1,12 +1,24 @@
 #include "vtkFXEffectPass.h"
 
 #include "vtkFXGBufferPass.h"
+#include "vtkFXRenderUtilities.h"
 
 vtkCxxSetObjectMacro(vtkFXEffectPass, GBuffer, vtkFXGBufferPass);
 
 vtkFXEffectPass::~vtkFXEffectPass()
 {
   this->SetGBuffer(nullptr);
+}
+
+void vtkFXEffectPass::WarnIfDrawnInTiles(vtkRenderer* renderer, const char* missed)
+{
+  if (!this->WarnedTiles && vtkFXRenderUtilities::IsRenderingTiles(renderer))
+  {
+    vtkWarningMacro("This image is drawn tile by tile (vtkWindowToImageFilter's scale above 1): "
+      << missed << " across a tile's border, which leaves seams. Render offscreen at the "
+                   "image's full size instead.");
+    this->WarnedTiles = true;
+  }
 }
 
 const char* vtkFXEffectPass::GetStageName(int stage)

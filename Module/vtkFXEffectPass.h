@@ -70,6 +70,7 @@
 #include <vector>
 
 class vtkFXGBufferPass;
+class vtkRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
 
@@ -278,10 +279,16 @@ protected:
 
   void DeclareInput(const char* name, bool optional, bool readInComposite);
   void DeclareOutput(const char* name);
+  // Warns, once, when the renderer's image is drawn tile by tile
+  // (vtkFXRenderUtilities::IsRenderingTiles): an effect that reads beyond
+  // a pixel sees only the tile. `missed`: what it cannot see across a
+  // tile's border.
+  void WarnIfDrawnInTiles(vtkRenderer* renderer, const char* missed);
 
   int Stage = AfterGBuffer;
   bool Enabled = true;
   vtkFXGBufferPass* GBuffer = nullptr;
+  bool WarnedTiles = false; // an image drawn tile by tile (said once)
 
 private:
   vtkFXEffectPass(const vtkFXEffectPass&) = delete;

@@ -1138,10 +1138,7 @@ void vtkFXRenderUtilities::ComputeFrustumRay(
   // P[3] = (0,0,-1,0) (perspective) or (0,0,0,1) (parallel) and no x/y
   // coupling into z, so x and y of a point at depth d = -z solve
   //   ndc.x * w = P00 x + P01 y + P02 z + P03,  w = P32 z + P33.
-  vtkCamera* camera = renderer->GetActiveCamera();
-  double aspect = renderer->GetTiledAspectRatio();
-  vtkMatrix4x4* p = camera->GetProjectionTransformMatrix(aspect, -1, 1);
-  const double (*m)[4] = p->Element;
+  const double (*m)[4] = ProjectionRows(renderer);
   // With z = -d and w = -P32 d + P33, for each axis i (0 = x, 1 = y):
   //   P_ii * c_i = ndc_i * (P33 - P32 d) - P_i2 * (-d) - P_i3
   //   c_i = [ndc_i*P33 - P_i3] / P_ii  +  d * [P_i2 - ndc_i*P32] / P_ii

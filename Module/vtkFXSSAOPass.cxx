@@ -396,13 +396,7 @@ void vtkFXSSAOPass::Render(const vtkRenderState* s)
     return;
   }
   this->WarnedNoChannels = false;
-  if (vtkFXRenderUtilities::IsRenderingTiles(ren) && !this->WarnedTiles)
-  {
-    vtkWarningMacro("This image is drawn tile by tile (vtkWindowToImageFilter's scale above 1): "
-                    "the occlusion near a tile's border cannot see occluders in the next tile, "
-                    "which leaves seams. Render offscreen at the image's full size instead.");
-    this->WarnedTiles = true;
-  }
+  this->WarnIfDrawnInTiles(ren, "the occlusion cannot see occluders");
   const int fullWidth = static_cast<int>(depth->GetWidth());
   const int fullHeight = static_cast<int>(depth->GetHeight());
   const int step = this->HalfResolution ? 2 : 1;

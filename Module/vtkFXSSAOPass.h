@@ -287,7 +287,6 @@ protected:
   double EffectiveRadius = 0.0;
   bool WarnedIncomplete = false; // the occlusion texture could not be made (said once)
   bool WarnedNoChannels = false; // the G-buffer lacks normal or depth (said once)
-  bool WarnedTiles = false;      // an image drawn tile by tile (said once)
   // The mask could not be drawn at this size (0 x 0: it could): not
   // retried until the size changes.
   int SurfaceMaskFailedSize[2] = { 0, 0 };
