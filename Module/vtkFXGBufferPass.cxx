@@ -385,11 +385,16 @@ bool HasOwnFragmentColour(vtkActor* actor)
 // actor of its own that carries no render-pass keys; drawn forward, after
 // the composite, it shows where nothing else does, as VTK shows it. Nor an
 // actor whose fragment code decides its colour past the hook
-// (HasOwnFragmentColour): drawn forward too.
+// (HasOwnFragmentColour): drawn forward too. Nor an actor without a mapper
+// that still has geometry (vtkPolarAxesActor, vtkCubeAxesActor): it draws
+// through actors of its own that carry none of the hooks' keys, whose
+// colour would land in the G-buffer's first channel (garbled, recoloured
+// labels and axis lines); drawn forward, it shows as VTK draws it.
 bool IsCapturedActor(vtkProp* prop)
 {
   vtkActor* actor = vtkActor::SafeDownCast(prop);
-  return actor && !prop->IsA("vtkSkybox") && !HasOwnFragmentColour(actor);
+  return actor && actor->GetMapper() && !prop->IsA("vtkSkybox") &&
+    !HasOwnFragmentColour(actor);
 }
 }
 

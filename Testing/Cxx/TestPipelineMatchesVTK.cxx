@@ -16,6 +16,7 @@
 #include "vtkAssembly.h"
 #include "vtkCamera.h"
 #include "vtkCubeAxesActor.h"
+#include "vtkPolarAxesActor.h"
 #include "vtkImageCanvasSource2D.h"
 #include "vtkLODProp3D.h"
 #include "vtkPolyDataMapper.h"
@@ -275,6 +276,7 @@ void AddVolumeThrough(vtkRenderer* renderer, const char* holder)
 // time), volumes held by an assembly or a vtkLODProp3D (never drawn: the
 // volume step ran for vtkVolume props only), vtkCubeAxesActor's labels
 // in 2D mode (its overlay step: the pipeline ran it for 2D props only),
+// vtkPolarAxesActor (drawn through actors without the G-buffer's keys),
 // and the renderer's hidden-line removal and FXAA (both ignored before).
 int CheckStepsOutsideOpaque(vtkRenderWindow* window)
 {
@@ -340,6 +342,33 @@ int CheckStepsOutsideOpaque(vtkRenderWindow* window)
     },
     &passes);
   report("vtkCubeAxesActor in 2D mode", r, passes, "overlay", "");
+  // vtkPolarAxesActor draws through axis actors of its own, which carry no
+  // G-buffer keys: captured, its labels came out recoloured and garbled and
+  // its radial axes dashed (11.7 dB); it now draws forward.
+  r = CompareWithVTK(
+    window,
+    [](vtkRenderer* renderer) {
+      vtkNew<vtkSphereSource> sphere;
+      sphere->SetRadius(0.8);
+      vtkNew<vtkPolyDataMapper> mapper;
+      mapper->SetInputConnection(sphere->GetOutputPort());
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      renderer->AddActor(actor);
+      vtkNew<vtkPolarAxesActor> axes;
+      axes->SetBounds(-2.0, 2.0, -2.0, 2.0, -1.0, 1.0);
+      axes->SetMaximumRadius(2.0);
+      axes->SetCamera(renderer->GetActiveCamera());
+      renderer->AddActor(axes);
+      renderer->ResetCamera();
+      renderer->GetActiveCamera()->Elevation(25.0);
+      renderer->ResetCameraClippingRange();
+      // VTK places the labels differently in the axes' first frame (by
+      // two pixels): compare frames after it.
+      renderer->GetRenderWindow()->Render();
+    },
+    &passes);
+  report("vtkPolarAxesActor", r, passes, "forward-opaque", "");
   // Hidden-line removal (the renderer's UseHiddenLineRemoval): a wireframe
   // sphere's back lines hidden by its own surface, as VTK hides them (they
   // showed through before).
