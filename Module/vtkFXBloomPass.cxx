@@ -546,9 +546,11 @@ void vtkFXBloomPass::AddGlow(vtkOpenGLRenderWindow* window)
   {
     return;
   }
-  // Light adds; alpha stays. Only where glow can be (the viewport's
-  // corner may be off the framebuffer's).
-  vtkFXRenderUtilities::BlendOntoScope blend(window, GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
+  // Light adds; the glow's coverage goes over the alpha (src + dst (1 - src),
+  // written as src (1 - dst) + dst: the same sum). Only where glow can be
+  // (the viewport's corner may be off the framebuffer's).
+  vtkFXRenderUtilities::BlendOntoScope blend(
+    window, GL_ONE, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
   int viewport[4];
   window->GetState()->vtkglGetIntegerv(GL_VIEWPORT, viewport);
   const int rect[4] = { viewport[0] + this->GlowRect[0], viewport[1] + this->GlowRect[1],

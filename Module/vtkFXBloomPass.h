@@ -10,7 +10,10 @@
  * suppression by Karis averaging there), climbs back with 3x3
  * tent upsampling, each level adding an equal share, and adds Intensity
  * times the result onto the pipeline's HDR target (the last step, to full
- * resolution, reads bilinearly). Each filter is
+ * resolution, reads bilinearly; it also composites the glow's coverage, its
+ * largest component up to 1, over the target's alpha, as VTK blends a
+ * translucent surface's, so over a transparent background an RGBA
+ * screenshot keeps the halo). Each filter is
  * normalised, so the glow's total equals Intensity times the total of the
  * source (the emission plus the light above the threshold), with
  * FireflySuppression off (it deliberately takes energy from isolated

@@ -473,6 +473,59 @@ int CheckNothingToDo(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
+// Over a transparent background (alpha bit planes, background alpha 0), the
+// glow's coverage goes over the alpha as a translucent surface's would: a
+// background pixel's alpha is then its largest colour component (the glow
+// is all its light), the sphere stays opaque, and where no glow reaches the
+// alpha stays 0. (Before, the halo kept alpha 0 and an RGBA screenshot
+// composited over a page lost it.)
+int CheckGlowAlpha()
+{
+  auto window = vtkFXTest::MakeWindow(200, 150);
+  window->SetAlphaBitPlanes(1);
+  const double emission[3] = { 3.0, 1.0, 0.25 };
+  vtkRenderer* renderer = MakeScene(window, emission);
+  renderer->SetBackgroundAlpha(0.0);
+  vtkNew<vtkFXPipelinePass> pipeline;
+  renderer->SetPass(pipeline);
+  window->Render();
+  const auto rgba = [&window]() {
+    std::vector<unsigned char> pixels(static_cast<size_t>(200) * 150 * 4);
+    unsigned char* data = window->GetRGBACharPixelData(0, 0, 199, 149, 0);
+    std::copy(data, data + pixels.size(), pixels.begin());
+    delete[] data;
+    return pixels;
+  };
+  const auto without = rgba();
+  vtkNew<vtkFXBloomPass> bloom;
+  pipeline->AddEffect("bloom", bloom);
+  window->Render();
+  const auto with = rgba();
+  int halo = 0, dark = 0, worst = 0, opaque = 0, lostOpacity = 0;
+  for (size_t i = 0; i < with.size(); i += 4)
+  {
+    const int largest = std::max({ with[i], with[i + 1], with[i + 2] });
+    if (without[i + 3] == 255)
+    {
+      ++opaque;
+      lostOpacity += with[i + 3] != 255;
+      continue;
+    }
+    FX_CHECK(without[i + 3] == 0, "the background's alpha without bloom");
+    worst = std::max(worst, std::abs(with[i + 3] - largest));
+    halo += largest >= 8;
+    dark += largest == 0 && with[i + 3] == 0;
+  }
+  std::cout << "glow alpha: " << halo << " halo pixels, largest |alpha - max(rgb)| " << worst
+            << ", " << dark << " background pixels dark with alpha 0, " << opaque
+            << " sphere pixels (" << lostOpacity << " not opaque)" << std::endl;
+  // (both from the same half float, each rounded to 8 bits once)
+  FX_CHECK(worst <= 1, "a background pixel's alpha is not its glow's coverage");
+  FX_CHECK(halo > 1000 && dark > 1000 && opaque > 1000, "the scene's halo, dark and sphere pixels");
+  FX_CHECK(lostOpacity == 0, "the sphere's pixels lost opacity");
+  return EXIT_SUCCESS;
+}
+
 // The scene of MakeScene without emission, its lit image painted by a
 // probe with `paint` (see PaintProbe), then bloom with threshold 1.
 void PaintThenBloom(vtkRenderWindow* window, const char* paint, vtkFXPipelinePass* pipeline,
@@ -1039,6 +1092,7 @@ int TestBloom(int, char*[])
   FX_CHECK(CheckEmitterBehindTranslucency(window) == EXIT_SUCCESS, "emitter behind translucency");
   FX_CHECK(CheckAssemblyKeysFirstFrame(window) == EXIT_SUCCESS, "keys on an assembly");
   FX_CHECK(CheckBadParameters() == EXIT_SUCCESS, "bad parameters");
+  FX_CHECK(CheckGlowAlpha() == EXIT_SUCCESS, "the glow's alpha over a transparent background");
   // A screenshot at scale 2 of a 200x150 viewport is 300 rows high: the
   // glow reaches as far in it as in a 400x300 viewport.
   {
