@@ -356,7 +356,7 @@ void vtkFXToonPass::RenderEdgesQuad(
   const vtkRenderState* s, vtkShaderProgram* program, const int size[2])
 {
   vtkTextureObject* depth = this->GBuffer->GetChannelTexture(GB::LinearDepth);
-  vtkTextureObject* normal = this->GBuffer->GetChannelTexture(GB::Normal);
+  vtkTextureObject* normal = this->GBuffer->GetGeometricNormalTexture();
   depth->Activate();
   normal->Activate();
   program->SetUniformi("fxLinearDepth", depth->GetTextureUnit());

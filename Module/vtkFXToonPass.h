@@ -23,6 +23,11 @@
  *   planes at any angle, so a plane seen at a grazing angle is not taken
  *   for an edge;
  * - a crease where the two normals differ by more than CreaseAngle.
+ * Both read the surfaces' own normals (the G-buffer's GeometricNormal
+ * where a visible prop has a bump or a normal texture): lines outline the
+ * geometry, while the bands shade with the perturbed normal (read with the
+ * shading normal, a normal-mapped plane seen at a grazing angle took its
+ * bumps for silhouettes and creases).
  * Lines of LineWidth pixels (at LineReferenceHeight output rows; the width
  * scales with the height the renderer covers in the image: its viewport's,
  * or in a scaled screenshot, which vtkWindowToImageFilter renders in tiles
@@ -237,6 +242,11 @@ public:
   /** The first band threshold, with bands on: factors from it on are raised. */
   double GetSmallestRaisedDiffuse() override;
   unsigned int GetRequiredChannels() override;
+  /**
+   * Lines follow the surfaces' own orientation, not a bump's or a normal
+   * texture's: true while lines are drawn.
+   */
+  bool GetReadsGeometricNormal() override { return this->DrawsLines(); }
   /** Lines blend displayable colours: no HDR target needed. */
   bool GetNeedsHDRTarget() override { return false; }
   std::string GetCompositeCode(int hook) override;

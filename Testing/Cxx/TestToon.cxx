@@ -21,6 +21,9 @@
 #include "vtkFXTestUtilities.h"
 #include "vtkFXToonPass.h"
 #include "vtkImageData.h"
+#include "vtkFloatArray.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkWindowToImageFilter.h"
 #include "vtkPlaneSource.h"
 
@@ -952,16 +955,40 @@ int CheckLinesBehindForwardProps(vtkRenderWindow* window)
 // planes, relative to depth) must draw no line on it. Lines may only run
 // along the floor's border with the background (within 3 px of a
 // background pixel): no pixel farther in has coverage above 0.04.
-int CheckGrazingFloor(vtkRenderWindow* window)
+// With `bumped`, the floor carries rivets (vtkFXGBufferPass::SetBump, domes
+// 0.1 high on a 1-unit grid), lit: lines outline the geometry, so the
+// bumps, which only tilt the shading normal, draw none (read with the
+// shading normal, they were taken for silhouettes and creases).
+int CheckGrazingFloor(vtkRenderWindow* window, bool bumped)
 {
   vtkNew<vtkPlaneSource> plane;
   plane->SetOrigin(-20.0, -20.0, 0.0);
   plane->SetPoint1(20.0, -20.0, 0.0);
   plane->SetPoint2(-20.0, 20.0, 0.0);
-  plane->SetResolution(40, 40);
+  plane->SetResolution(bumped ? 400 : 40, bumped ? 400 : 40);
+  plane->Update();
+  vtkNew<vtkFloatArray> rivets;
+  rivets->SetName("rivets");
+  rivets->SetNumberOfTuples(plane->GetOutput()->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < rivets->GetNumberOfTuples(); ++i)
+  {
+    double p[3];
+    plane->GetOutput()->GetPoint(i, p);
+    const double dx = p[0] - std::floor(p[0]) - 0.5, dy = p[1] - std::floor(p[1]) - 0.5;
+    const double r2 = (dx * dx + dy * dy) / (0.35 * 0.35);
+    rivets->SetValue(i, r2 < 1.0 ? static_cast<float>(0.1 * std::sqrt(1.0 - r2)) : 0.0f);
+  }
+  plane->GetOutput()->GetPointData()->AddArray(rivets);
   auto floor = LitSurface(plane->GetOutputPort());
+  if (bumped)
+  {
+    vtkFXGBufferPass::SetBump(floor, "rivets", 1.0);
+  }
   int width = 0, height = 0;
-  for (const double elevation : { 2.0, 5.0, 15.0, -2.0, -5.0, -15.0 })
+  const std::vector<double> elevations = bumped
+    ? std::vector<double>{ 5.0, 15.0, 40.0 }
+    : std::vector<double>{ 2.0, 5.0, 15.0, -2.0, -5.0, -15.0 };
+  for (const double elevation : elevations)
   {
     // (negative: the same elevation, the floor unlit, which stores no
     // normal in the G-buffer: its plane comes from its depths)
@@ -1009,12 +1036,14 @@ int CheckGrazingFloor(vtkRenderWindow* window)
         stray += coverage[static_cast<size_t>(y) * width + x] > 0.04 ? 1 : 0;
       }
     }
-    std::cout << (lit ? "" : "unlit ") << "floor seen from " << std::fabs(elevation)
+    std::cout << (lit ? "" : "unlit ") << (bumped ? "bumped " : "") << "floor seen from "
+              << std::fabs(elevation)
               << " degrees: " << interior
               << " pixels away from its border, " << stray << " with a line" << std::endl;
     FX_CHECK(interior > width * height / 4, "the floor fills little of the view");
     FX_CHECK(stray == 0, stray << " line pixels on a plane seen at " << std::fabs(elevation)
-                               << " degrees" << (lit ? "" : ", unlit"));
+                               << " degrees" << (lit ? "" : ", unlit")
+                               << (bumped ? ", bumped" : ""));
   }
   return EXIT_SUCCESS;
 }
@@ -1106,7 +1135,8 @@ int TestToon(int, char*[])
   FX_CHECK(CheckUnlitBackdrop(window) == EXIT_SUCCESS, "unlit backdrop");
   FX_CHECK(CheckScaledScreenshot(window) == EXIT_SUCCESS, "scaled screenshot");
   FX_CHECK(CheckOffsetViewport(window) == EXIT_SUCCESS, "offset viewport");
-  FX_CHECK(CheckGrazingFloor(window) == EXIT_SUCCESS, "floor at grazing angles");
+  FX_CHECK(CheckGrazingFloor(window, false) == EXIT_SUCCESS, "floor at grazing angles");
+  FX_CHECK(CheckGrazingFloor(window, true) == EXIT_SUCCESS, "bumped floor");
   FX_CHECK(CheckLinesBehindForwardProps(window) == EXIT_SUCCESS, "lines behind forward props");
   FX_CHECK(CheckLineColor(window) == EXIT_SUCCESS, "line colour");
   FX_CHECK(CheckLineResources() == EXIT_SUCCESS, "line resources");
