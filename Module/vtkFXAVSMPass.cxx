@@ -622,12 +622,13 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
   // away held the props in 4 of its 512 texels); nearer, the six faces of
   // a cube (a wider single view would spread its texels thinner than a
   // face's); beyond 1000 radii, one orthographic view (see below).
-  const auto needsCube = [&center, radius](vtkLight* light) {
+  const auto needsCube = [&center, radius, ren](vtkLight* light) {
     if (!light->GetPositional() || IsSpot(light))
     {
       return false;
     }
-    const double* from = light->GetTransformedPosition();
+    double from[3], to[3];
+    vtkFXRenderUtilities::GetShadingLightFrame(ren, light, from, to);
     const double d[3] = { center[0] - from[0], center[1] - from[1], center[2] - from[2] };
     return !(vtkMath::Norm(d) >= std::sqrt(2.0) * radius);
   };
@@ -642,8 +643,12 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
   {
     vtkLight* light = casting.Light;
     casting.FirstView = static_cast<int>(this->Views.size());
+    // (where VTK shades it from: a camera light moves with the renderer's
+    // user light transform)
+    double from[3], to[3];
+    vtkFXRenderUtilities::GetShadingLightFrame(ren, light, from, to);
     double direction[3];
-    vtkMath::Subtract(light->GetTransformedFocalPoint(), light->GetTransformedPosition(), direction);
+    vtkMath::Subtract(to, from, direction);
     if (vtkMath::Normalize(direction) <= 0.0)
     {
       direction[0] = 0.0;
@@ -652,7 +657,6 @@ void vtkFXAVSMPass::FitLightViews(vtkOpenGLRenderer* ren)
     }
     vtkNew<vtkMatrix4x4> p;
     p->Zero();
-    const double* from = light->GetTransformedPosition();
     const double toCenter[3] = { center[0] - from[0], center[1] - from[1], center[2] - from[2] };
     const double distance = vtkMath::Norm(toCenter);
     // A positional light farther than 1000 radii from the props casts rays

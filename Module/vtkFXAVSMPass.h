@@ -7,7 +7,9 @@
  * headlights and have a ShadowAttenuation above 0 (VTK's vtkLight
  * setting: the shadow darkens the light by that fraction of its
  * opacity); the MaximumNumberOfLights brightest cast (intensity times the
- * colour's largest component). Each casting light gets views of
+ * colour's largest component), each from where VTK shades it (a camera
+ * light moved by the renderer's user light transform, as
+ * vtkOpenGLRenderer moves it). Each casting light gets views of
  * ShadowMapSize texels square, side by side in one atlas:
  * - a directional light, one orthographic view along it, fitted to the
  *   visible props' bounding sphere;

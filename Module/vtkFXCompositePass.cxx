@@ -363,7 +363,6 @@ int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
   // angle, exponent and the light's place among the lights that are on.
   // Rows sorted by kind (see TextureLightLoop): directional, point, spot.
   vtkTransform* view = ren->GetActiveCamera()->GetModelViewTransformObject();
-  vtkTransform* user = ren->GetUserLightTransform();
   struct Row
   {
     int Kind; // 0 directional, 1 point, 2 spot
@@ -398,7 +397,7 @@ int vtkFXCompositePass::UploadLightTexture(vtkOpenGLRenderer* ren)
     vtkMath::Normalize(direction);
     view->TransformNormal(direction, directionVC);
     view->TransformPoint(light->GetTransformedPosition(), positionVC);
-    if (!light->LightTypeIsSceneLight() && user)
+    if (vtkTransform* user = vtkFXRenderUtilities::GetUserLightTransform(ren, light))
     {
       user->TransformNormal(directionVC, directionVC);
       user->TransformPoint(positionVC, positionVC);

@@ -13,11 +13,13 @@
 #include "vtkPolyData.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkDataArray.h"
@@ -32,6 +34,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkTransform.h"
 #include "vtkFXOpenGL.h"
 #include "vtkFXTilePointsVS.h"
 
@@ -106,6 +109,34 @@ bool FiniteAsFloat(double value)
 {
   return std::isfinite(static_cast<float>(value));
 }
+}
+
+vtkTransform* vtkFXRenderUtilities::GetUserLightTransform(vtkRenderer* renderer, vtkLight* light)
+{
+  vtkOpenGLRenderer* gl = vtkOpenGLRenderer::SafeDownCast(renderer);
+  return gl && !light->LightTypeIsSceneLight() ? gl->GetUserLightTransform() : nullptr;
+}
+
+void vtkFXRenderUtilities::GetShadingLightFrame(
+  vtkRenderer* renderer, vtkLight* light, double position[3], double focalPoint[3])
+{
+  light->GetTransformedPosition(position);
+  light->GetTransformedFocalPoint(focalPoint);
+  vtkTransform* user = GetUserLightTransform(renderer, light);
+  if (!user)
+  {
+    return;
+  }
+  vtkMatrix4x4* view = renderer->GetActiveCamera()->GetModelViewTransformMatrix();
+  vtkNew<vtkMatrix4x4> back;
+  vtkMatrix4x4::Invert(view, back);
+  vtkNew<vtkTransform> move;
+  move->PostMultiply();
+  move->SetMatrix(view);
+  move->Concatenate(user->GetMatrix());
+  move->Concatenate(back);
+  move->TransformPoint(position, position);
+  move->TransformPoint(focalPoint, focalPoint);
 }
 
 bool vtkFXRenderUtilities::IsLightFinite(vtkLight* light)

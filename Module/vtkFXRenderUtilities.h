@@ -25,6 +25,7 @@
 
 class vtkDataObject;
 class vtkLight;
+class vtkTransform;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
@@ -98,6 +99,22 @@ public:
    * shadows leave such a light out (vtkFXPipelinePass warns).
    */
   static bool IsLightFinite(vtkLight* light);
+
+  /**
+   * The renderer's user light transform where VTK 9.1 applies it to
+   * `light` (vtkOpenGLRenderer::UpdateLightingUniforms: a light that is not
+   * a scene light, such as the headlight or a light kit's, in view
+   * coordinates after the camera's view transform), else null.
+   */
+  static vtkTransform* GetUserLightTransform(vtkRenderer* renderer, vtkLight* light);
+
+  /**
+   * Where VTK shades `light` from, in world coordinates: its transformed
+   * position and focal point, moved by GetUserLightTransform where that
+   * applies (into view coordinates, through it, and back).
+   */
+  static void GetShadingLightFrame(
+    vtkRenderer* renderer, vtkLight* light, double position[3], double focalPoint[3]);
 
   /**
    * After vtkOpenGLRenderer::UpdateLightingUniforms(program): the uniforms

@@ -58,6 +58,7 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
 #include "vtkPlaneSource.h"
 #include "vtkCellArray.h"
 #include "vtkActor2D.h"
@@ -1626,6 +1627,62 @@ int CheckCameraModelTransform(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
+// A camera light under the renderer's user light transform (VTK moves such
+// lights by it in view coordinates; VR renderers set it) casts its shadows
+// from where VTK shades it: the same frame as a scene light placed there.
+// Here the transform turns the light, which shines along the view (straight
+// down), by 30 degrees about the view's y axis. (Fitted to the unmoved
+// light, the shadow's edge lay 0.58 units off, under the slab's edge.)
+int CheckUserLightTransform(vtkRenderWindow* window)
+{
+  ShadowFrame frames[2];
+  for (int moved = 0; moved < 2; ++moved)
+  {
+    vtkNew<vtkFXPipelinePass> pipeline;
+    vtkNew<vtkFXAVSMPass> avsm;
+    vtkRenderer* renderer = GroundScene(window, true);
+    renderer->AddActor(Quad(-10, 0, 1, 0.3));
+    renderer->RemoveAllLights();
+    vtkNew<vtkLight> light;
+    light->PositionalOff();
+    if (moved)
+    {
+      light->SetLightTypeToCameraLight();
+      light->SetPosition(0.0, 0.0, 1.0);
+      light->SetFocalPoint(0.0, 0.0, 0.0);
+      vtkNew<vtkTransform> turn;
+      turn->RotateY(30.0);
+      vtkOpenGLRenderer::SafeDownCast(renderer)->SetUserLightTransform(turn);
+    }
+    else
+    {
+      // (the view's axes are the world's, shifted along z)
+      light->SetLightTypeToSceneLight();
+      light->SetPosition(0.5, 0.0, std::sqrt(0.75));
+      light->SetFocalPoint(0.0, 0.0, 0.0);
+    }
+    renderer->AddLight(light);
+    pipeline->AddEffect("avsm", avsm);
+    renderer->SetPass(pipeline);
+    frames[moved] = RenderShadowFrame(window, avsm);
+    renderer->SetPass(nullptr);
+  }
+  double worst = frames[0].Visibility.size() == frames[1].Visibility.size() ? 0.0 : 1.0;
+  int shadowed = 0;
+  for (size_t i = 0; worst < 1.0 && i < frames[0].Visibility.size(); ++i)
+  {
+    worst = std::max(worst, std::fabs(double(frames[0].Visibility[i]) - frames[1].Visibility[i]));
+    shadowed += frames[0].Visibility[i] < 0.9f;
+  }
+  const int levels = vtkFXScenes::MaxDifference(frames[0].Image, frames[1].Image);
+  std::cout << "camera light under a user light transform: visibility off by " << worst
+            << ", image by " << levels << " levels (" << shadowed << " pixels shadowed)"
+            << std::endl;
+  FX_CHECK(shadowed > 1000 && worst < 1e-3 && levels <= 1,
+    "shadows of a light under the user light transform");
+  return EXIT_SUCCESS;
+}
+
 // (A spot light of 30 degrees from 7e3 or 200 units, outside the props'
 // bounding sphere, gets the view fitted to the sphere: its cone's view
 // spread the map over 8000 units at 7e3, the 20-unit ground under two
@@ -2214,6 +2271,7 @@ int TestAVSM(int, char*[])
   FX_CHECK(CheckArrivalOrder(window) == EXIT_SUCCESS, "order independence");
   FX_CHECK(CheckLookUpCulling(window) == EXIT_SUCCESS, "look-up culling");
   FX_CHECK(CheckCameraModelTransform(window) == EXIT_SUCCESS, "camera model transform");
+  FX_CHECK(CheckUserLightTransform(window) == EXIT_SUCCESS, "user light transform");
   FX_CHECK(CheckSplatShadowBelow(window, "splat reaching out of the props' bounds towards the light",
              1.8, 0.1, false) == EXIT_SUCCESS,
     "splat reaching out of the bounds");
