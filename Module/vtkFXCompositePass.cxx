@@ -645,9 +645,10 @@ void vtkFXCompositePass::Draw(vtkOpenGLRenderer* ren)
     state->vtkglDepthFunc(GL_GREATER);
     state->vtkglDepthMask(GL_FALSE);
   }
-  // Blend like VTK's opaque pass, so that opacity < 1 forced opaque
-  // (vtkActor::ForceOpaque) shows the background as it does forward;
-  // alpha scaled by the mark while it is asked for (SetMarksTransmittance).
+  // Blend like VTK's opaque pass (actors forced opaque with alpha below 1
+  // are drawn forward, vtkFXGBufferPass::CanCapture: what reaches here is
+  // opaque); alpha scaled by the mark while it is asked for
+  // (SetMarksTransmittance).
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA,
     this->MarksTransmittance ? GL_CONSTANT_ALPHA : GL_ONE, GL_ONE_MINUS_SRC_ALPHA);

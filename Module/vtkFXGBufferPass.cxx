@@ -26,6 +26,7 @@
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
 #include "vtkProperty.h"
+#include "vtkTexture.h"
 #include "vtkRenderState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -380,6 +381,25 @@ bool HasOwnFragmentColour(vtkActor* actor)
   return false;
 }
 
+// An actor VTK draws in its opaque step (ForceOpaque) although its opacity,
+// its colours' or its texture's alpha is below 1 (vtkActor::GetIsOpaque's
+// tests): VTK blends it there over what the step drew before it, which a
+// G-buffer, one surface per pixel, does not hold; drawn forward, after the
+// composite, it blends over the lit image as in VTK (captured, it showed
+// the background through it).
+bool IsForcedOpaqueBlend(vtkActor* actor)
+{
+  if (!actor->GetForceOpaque())
+  {
+    return false;
+  }
+  vtkProperty* property = actor->GetProperty();
+  vtkTexture* texture = actor->GetTexture();
+  return (property && property->GetOpacity() < 1.0) ||
+    actor->GetMapper()->HasTranslucentPolygonalGeometry() ||
+    (texture && texture->IsTranslucent());
+}
+
 // An actor the G-buffer's hooks shade. Not a vtkSkybox: VTK draws the sky at
 // the far plane (window depth 1, the composite's background), through an
 // actor of its own that carries no render-pass keys; drawn forward, after
@@ -389,12 +409,13 @@ bool HasOwnFragmentColour(vtkActor* actor)
 // that still has geometry (vtkPolarAxesActor, vtkCubeAxesActor): it draws
 // through actors of its own that carry none of the hooks' keys, whose
 // colour would land in the G-buffer's first channel (garbled, recoloured
-// labels and axis lines); drawn forward, it shows as VTK draws it.
+// labels and axis lines); drawn forward, it shows as VTK draws it. Nor an
+// actor forced opaque whose fragments are not (IsForcedOpaqueBlend).
 bool IsCapturedActor(vtkProp* prop)
 {
   vtkActor* actor = vtkActor::SafeDownCast(prop);
   return actor && actor->GetMapper() && !prop->IsA("vtkSkybox") &&
-    !HasOwnFragmentColour(actor);
+    !HasOwnFragmentColour(actor) && !IsForcedOpaqueBlend(actor);
 }
 }
 

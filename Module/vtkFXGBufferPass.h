@@ -229,7 +229,12 @@ public:
   /**
    * Whether the G-buffer can capture a prop: its mappers must call VTK's
    * render-pass shader hooks (the vtkOpenGLPolyDataMapper family, reached
-   * through vtkActor). Image slices, 3D text and other props cannot.
+   * through vtkActor). Image slices, 3D text and other props cannot; nor
+   * actors VTK would draw otherwise than their stored surface shows: a sky
+   * box, an actor whose shader property colours it after the lighting, one
+   * with no mapper of its own (vtkPolarAxesActor, vtkCubeAxesActor, which
+   * draw through inner actors), one forced opaque with alpha below 1 (VTK
+   * blends it over what its opaque step drew before).
    */
   static bool CanCapture(vtkProp* prop);
 

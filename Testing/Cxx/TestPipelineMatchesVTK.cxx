@@ -17,6 +17,7 @@
 #include "vtkCamera.h"
 #include "vtkCubeAxesActor.h"
 #include "vtkPolarAxesActor.h"
+#include "vtkPlaneSource.h"
 #include "vtkImageCanvasSource2D.h"
 #include "vtkLODProp3D.h"
 #include "vtkPolyDataMapper.h"
@@ -277,6 +278,8 @@ void AddVolumeThrough(vtkRenderer* renderer, const char* holder)
 // volume step ran for vtkVolume props only), vtkCubeAxesActor's labels
 // in 2D mode (its overlay step: the pipeline ran it for 2D props only),
 // vtkPolarAxesActor (drawn through actors without the G-buffer's keys),
+// a translucent actor forced opaque (VTK blends it over what its opaque
+// step drew before),
 // and the renderer's hidden-line removal and FXAA (both ignored before).
 int CheckStepsOutsideOpaque(vtkRenderWindow* window)
 {
@@ -369,6 +372,28 @@ int CheckStepsOutsideOpaque(vtkRenderWindow* window)
     },
     &passes);
   report("vtkPolarAxesActor", r, passes, "forward-opaque", "");
+  // A plane of opacity 0.5 forced opaque in front of a sphere: VTK blends it
+  // in its opaque step over the sphere drawn before it; captured, the plane
+  // showed the background through it instead (21.4 dB).
+  r = CompareWithVTK(
+    window,
+    [](vtkRenderer* renderer) {
+      AddSphere(renderer)->SetPosition(0.0, 0.0, -2.0);
+      vtkNew<vtkPlaneSource> plane;
+      plane->SetOrigin(-1.5, -1.5, 0.0);
+      plane->SetPoint1(1.5, -1.5, 0.0);
+      plane->SetPoint2(-1.5, 1.5, 0.0);
+      vtkNew<vtkPolyDataMapper> mapper;
+      mapper->SetInputConnection(plane->GetOutputPort());
+      vtkNew<vtkActor> veil;
+      veil->SetMapper(mapper);
+      veil->GetProperty()->SetOpacity(0.5);
+      veil->ForceOpaqueOn();
+      renderer->AddActor(veil);
+      renderer->ResetCamera();
+    },
+    &passes);
+  report("a plane of opacity 0.5 forced opaque", r, passes, "forward-opaque", "translucent");
   // Hidden-line removal (the renderer's UseHiddenLineRemoval): a wireframe
   // sphere's back lines hidden by its own surface, as VTK hides them (they
   // showed through before).
