@@ -1251,4 +1251,15 @@ void vtkFXRenderUtilities::SetFrustumRayUniforms(vtkShaderProgram* program, vtkR
   {
     program->SetUniform3fv("fxRayDirection", 3, reinterpret_cast<float(*)[3]>(d));
   }
+  if (program->IsUniformUsed("fxParallelDepth"))
+  {
+    // (parallel or not by the matrix VTK draws with: an explicit one decides)
+    const double halfAngle =
+      vtkMath::RadiansFromDegrees(0.5 * renderer->GetActiveCamera()->GetViewAngle());
+    double halfHeight = 0.0;
+    program->SetUniformf("fxParallelDepth",
+      ComputeParallelHalfHeight(renderer, halfHeight)
+        ? static_cast<float>(halfHeight / std::max(std::tan(halfAngle), 1e-6))
+        : 0.0f);
+  }
 }

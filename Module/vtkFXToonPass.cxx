@@ -364,14 +364,6 @@ void vtkFXToonPass::RenderEdgesQuad(
   program->SetUniform2i("fxGBufferSize", size);
   vtkFXRenderUtilities::SetFrustumRayUniforms(program, s->GetRenderer());
   program->SetUniformf("fxSilhouetteThreshold", static_cast<float>(this->SilhouetteThreshold));
-  // (parallel or not by the matrix VTK draws with: an explicit one decides)
-  vtkCamera* camera = s->GetRenderer()->GetActiveCamera();
-  const double halfAngle = vtkMath::RadiansFromDegrees(0.5 * camera->GetViewAngle());
-  double halfHeight = 0.0;
-  program->SetUniformf("fxParallelDepth",
-    vtkFXRenderUtilities::ComputeParallelHalfHeight(s->GetRenderer(), halfHeight)
-      ? static_cast<float>(halfHeight / std::max(std::tan(halfAngle), 1e-6))
-      : 0.0f);
   program->SetUniformf(
     "fxCreaseCosine", static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(this->CreaseAngle))));
   this->EdgeQuad.Helper->Render();

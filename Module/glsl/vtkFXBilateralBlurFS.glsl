@@ -125,14 +125,15 @@ vec3 fxPlaneNormal(vec2 code)
   return fxIsUnlit(code) ? vec3(0.0) : fxDecodeNormal(code);
 }
 
-// 1 / the depth tolerance of a pixel at depth d0, once per pixel rather
+// 1 / the depth tolerance of a pixel at depth d0 (a fraction of
+// fxToleranceDepth(d0): the same when a parallel view's camera moves back), once per pixel rather
 // than a division per tap. (The tolerance is kept a normal
 // float: at depths below about 1e-34 world units, past what the occlusion
 // passes serve but not what a blur of another input may see, the product
 // underflows, and 0 / 0 is NaN.)
 float fxToleranceInverse(float d0)
 {
-  return 1.0 / max(fxDepthSigma * d0, 1e-37);
+  return 1.0 / max(fxDepthSigma * fxToleranceDepth(d0), 1e-37);
 }
 
 // Weight of a tap whose guide (normal, depth) is g, for a pixel (n0, d0)

@@ -1,7 +1,8 @@
 // Joint-bilateral upsampling (Kopf, Cohen, Lischinski, Uyttendaele 2007):
 // the value at a full-resolution pixel of linear depth d0 is the bilinear
 // blend of the 4 nearest low-resolution texels, each weighted also by
-// 1 / (1 + (gap / (sigma d0))^2), its depth d's agreement with the depth
+// 1 / (1 + (gap / (sigma d0))^2) (d0: fxToleranceDepth of it in parallel
+// projection), its depth d's agreement with the depth
 // e the pixel's tangent plane (normal n0) has there or with d0, whichever
 // is nearer (fxPlaneGap)
 // (fxPlaneDepthAt of vtkFXViewPosition.glsl: a crease keeps each side's
@@ -54,7 +55,7 @@ vec4 fxJointUpsample(sampler2D lowResolution, bool depthInValue, sampler2D depth
       float bilinear = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
       float e = fxPlaneDepthAt(
         planeA, planeB, fxLowTexelOffset(base + ivec2(i, j), lowSize, step, fullSize, pixel), d0);
-      float r = fxPlaneGap(d, e, d0) / max(depthSigma * d0, 1e-37); // (see vtkFXBilateralBlurFS)
+      float r = fxPlaneGap(d, e, d0) / max(depthSigma * fxToleranceDepth(d0), 1e-37); // (see vtkFXBilateralBlurFS)
       float w = d > 0.0 ? bilinear / (1.0 + r * r) : 0.0;
       sum += w * v;
       total += w;
@@ -95,7 +96,7 @@ float fxJointUpsampleGathered(sampler2D valueAndDepth, ivec2 lowSize, int step, 
     fxPlaneDepthAt(planeA, planeB, fxLowTexelOffset(base + ivec2(1, 1), lowSize, step, fullSize, pixel), d0),
     fxPlaneDepthAt(planeA, planeB, fxLowTexelOffset(base + ivec2(1, 0), lowSize, step, fullSize, pixel), d0),
     fxPlaneDepthAt(planeA, planeB, fxLowTexelOffset(base, lowSize, step, fullSize, pixel), d0));
-  vec4 r = fxPlaneGap(d, e, d0) / max(depthSigma * d0, 1e-37);
+  vec4 r = fxPlaneGap(d, e, d0) / max(depthSigma * fxToleranceDepth(d0), 1e-37);
   bvec4 covered = greaterThan(d, vec4(0.0));
   vec4 w = mix(vec4(0.0), bilinear / (1.0 + r * r), covered);
   float total = dot(w, vec4(1.0));

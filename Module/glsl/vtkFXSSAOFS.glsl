@@ -133,9 +133,13 @@ fxOcclusionValue fxHemisphereOcclusion(vec3 p, vec3 n, float depth, vec2 rotatio
     // depth changes a lot across the texel, and a sample just above the
     // surface would look occluded by it. What occludes lies in front of the
     // receiver's tangent plane, so compare with where that plane crosses
-    // this texel's ray (exact for planes, conservative for convex surfaces;
-    // a relative tolerance, as the receiver's own plane sits exactly on it
-    // up to rounding).
+    // this texel's ray (exact for planes, conservative for convex surfaces),
+    // less a tolerance, as the receiver's own plane sits exactly on it up to
+    // rounding: 1e-3 of the depth, but at most R / 20, so that a camera far
+    // from its scene (parallel projection draws the same image from any
+    // distance) does not take every occluder within R for the receiver's
+    // own surface (from 2000 radii away, 1e-3 of the depth was R itself);
+    // and at least 1e-5 of the depth, float rounding's reach there.
     if (!(sceneDepth > 0.0 && sceneDepth < sampleDepth))
     {
       continue; // nothing in front of the sample (most samples, on open surfaces)
@@ -144,7 +148,8 @@ fxOcclusionValue fxHemisphereOcclusion(vec3 p, vec3 n, float depth, vec2 rotatio
     fxTexelRay(texelQ, rayOrigin, rayDirection);
     float facing = dot(n, rayDirection);
     float planeDepth = abs(facing) > 1e-8 ? dot(n, p - rayOrigin) / facing : -1.0;
-    if (planeDepth <= 0.0 || sceneDepth < planeDepth * (1.0 - 1e-3))
+    float tolerance = max(1e-5 * planeDepth, min(1e-3 * planeDepth, 0.05 * fxRadius));
+    if (planeDepth <= 0.0 || sceneDepth < planeDepth - tolerance)
     {
       // Range check: a surface far in front of the receiver is not between
       // the receiver and the sample.

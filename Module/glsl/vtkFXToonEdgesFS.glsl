@@ -46,12 +46,7 @@ in vec2 texCoord;
 uniform sampler2D fxLinearDepth;
 uniform sampler2D fxNormal;
 uniform ivec2 fxGBufferSize;
-uniform float fxSilhouetteThreshold; // fraction of the depth
-// In parallel projection the depth the threshold is a fraction of: the
-// distance at which the camera's view angle spans what the parallel view
-// shows (the image does not change as the camera moves back, so neither
-// may the lines); 0 in perspective (each pixel's own depth).
-uniform float fxParallelDepth;
+uniform float fxSilhouetteThreshold; // fraction of the depth (fxToleranceDepth)
 uniform float fxCreaseCosine;
 #if FX_TILE_MASK
 // The depth test against the G-buffer's depth before the shader: with
@@ -163,7 +158,7 @@ float fxSeparated(fxSurface a, fxSurface b, vec3 d)
   // any depth).
   float planeGap = max(abs(dot(a.normal, d)), abs(dot(b.normal, d)));
   float gap = (a.lit && b.lit) ? planeGap : max(planeGap, abs(b.depth - a.depth));
-  float scale = fxParallelDepth > 0.0 ? fxParallelDepth : min(a.depth, b.depth);
+  float scale = fxToleranceDepth(min(a.depth, b.depth));
   bool apart = a.covered && gap > fxSilhouetteThreshold * scale;
   separated = (a.covered != b.covered || apart) ? 1.0 : 0.0;
 #endif
@@ -188,7 +183,7 @@ float fxSeparatedUnlit(fxSurface a, fxSurface b, vec3 d, float otherStep)
   float planeGap = max(abs(dot(a.normal, d)), abs(dot(b.normal, d)));
   float depthGap = abs(b.depth - a.depth);
   float gap = a.planar ? planeGap : max(planeGap, depthGap);
-  float scale = fxParallelDepth > 0.0 ? fxParallelDepth : min(a.depth, b.depth);
+  float scale = fxToleranceDepth(min(a.depth, b.depth));
   float limit = fxSilhouetteThreshold * scale;
   bool jump = a.planar && !b.lit && depthGap > limit && depthGap > 2.0 * otherStep + limit;
   return (!b.covered || gap > limit || jump) ? 1.0 : 0.0;

@@ -7,6 +7,21 @@
 // position is stored: it would lose precision far from the origin.
 uniform vec3 fxRayOrigin[3];
 uniform vec3 fxRayDirection[3];
+// 0 in perspective projection; in parallel projection, the distance at
+// which the camera's view angle spans the parallel view.
+uniform float fxParallelDepth;
+
+// The depth that scales a tolerance relative to depth at a surface at depth
+// d: d itself in perspective projection, where a pixel's footprint grows
+// with it; in parallel projection, where the footprint is the same at every
+// depth, fxParallelDepth, so that moving the camera back, which leaves the
+// image as it is, leaves the tolerance too (relative to d, a blur's depth
+// tolerance outgrew the scene from 1000 times the distance, and occlusion
+// bled across every silhouette).
+float fxToleranceDepth(float d)
+{
+  return fxParallelDepth > 0.0 ? fxParallelDepth : d;
+}
 
 // Normalized device coordinates of the centre of texel `texel` of an image
 // of `size` texels.

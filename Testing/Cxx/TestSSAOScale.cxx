@@ -5,7 +5,9 @@
 // 1e-6, 1e6, 1e-15 and 1e18 (below 1e-14 world-unit squares of the horizon
 // search underflowed: 14-25 dB before its distances were taken in units of
 // R), translated 1e6 units from the origin (camera following),
-// seen in parallel projection, and with a near/far ratio of 1e-6, give an
+// seen in parallel projection (also from 1000 times the distance, where
+// the hemisphere method's self-occlusion tolerance, 1e-3 of the depth,
+// once exceeded R: 23.6 dB), and with a near/far ratio of 1e-6, give an
 // occlusion image (the pipeline's occlusion view) within PSNR >= 40 dB of the
 // unchanged one over the pixels that show data. Radii, biases and blur
 // tolerances are world units or fractions of depth, and positions come from
@@ -18,6 +20,7 @@
 #include "vtkFXScenes.h"
 #include "vtkFXTestUtilities.h"
 
+#include "vtkCamera.h"
 #include "vtkRendererCollection.h"
 
 namespace
@@ -28,11 +31,12 @@ struct Variant
   double Scale;
   double Offset;
   double NearRatio; // 0: automatic clipping range
+  double Distance = 1.0; // the camera's distance x this (parallel projection only)
 };
 
 std::vector<unsigned char> Render(vtkRenderWindow* window, const std::string& input, bool parallel,
   const Variant& v, int falloff, unsigned char background[3], double radiusFraction = 0.0,
-  double thickness = vtkFXSSAOPass::HeightField)
+  double thickness = vtkFXSSAOPass::HeightField, int method = vtkFXSSAOPass::Horizon)
 {
   window->GetRenderers()->RemoveAllItems();
   vtkNew<vtkRenderer> renderer;
@@ -44,11 +48,23 @@ std::vector<unsigned char> Render(vtkRenderWindow* window, const std::string& in
     return {};
   }
   vtkFXTest::MoveScene(renderer, v.Scale, v.Offset, parallel, v.NearRatio);
+  if (v.Distance != 1.0)
+  {
+    // (the clipping range moves back with the camera)
+    vtkCamera* camera = renderer->GetActiveCamera();
+    const double before = camera->GetDistance();
+    double range[2];
+    camera->GetClippingRange(range);
+    camera->Dolly(1.0 / v.Distance);
+    const double added = camera->GetDistance() - before;
+    camera->SetClippingRange(range[0] + added, range[1] + added);
+  }
   vtkNew<vtkFXPipelinePass> pipeline;
   pipeline->AmbientOcclusionOn();
   pipeline->SetAmbientOcclusionFalloff(falloff);
   pipeline->GetCompositePass()->DebugOcclusionOn();
   pipeline->GetSSAOPass()->SetOccluderThickness(thickness);
+  pipeline->GetSSAOPass()->SetMethod(method);
   if (radiusFraction > 0.0)
   {
     pipeline->GetSSAOPass()->SetRadiusFraction(radiusFraction);
@@ -73,25 +89,31 @@ int TestSSAOScale(int, char*[])
     { "scaled 2^20", std::ldexp(1.0, 20), 0.0, 0.0 },
     { "translated 1e6", 1.0, 1e6, 0.0 },
     { "near/far 1e-6", 1.0, 0.0, 1e-6 },
+    { "parallel from 1000x the distance", 1.0, 0.0, 0.0, 1000.0 },
   };
   int failures = 0;
-  // (the third: Binary with occluders 0.5 R thick, on scene:corner)
-  for (int mode : { 0, 1, 2 })
+  // (the third: Binary with occluders 0.5 R thick, on scene:corner; the
+  // fourth: Binary by the hemisphere method, on scene:corner)
+  for (int mode : { 0, 1, 2, 3 })
   for (const std::string input :
     { std::string("scene:corner"), vtkFXScenes::DataDirectory() + "/stanford-bunny.obj" })
   {
-    if (mode == 2 && input != "scene:corner")
+    if (mode >= 2 && input != "scene:corner")
     {
       continue;
     }
     const int falloff = mode == 1 ? vtkFXSSAOPass::CubeRoot : vtkFXSSAOPass::Binary;
     const double thickness = mode == 2 ? 0.5 : vtkFXSSAOPass::HeightField;
-    const char* falloffName = mode == 0 ? "binary" : (mode == 1 ? "cube-root" : "binary, thin");
+    const int method = mode == 3 ? vtkFXSSAOPass::Hemisphere : vtkFXSSAOPass::Horizon;
+    const char* falloffName = mode == 0 ? "binary"
+      : mode == 1                       ? "cube-root"
+      : mode == 2                       ? "binary, thin"
+                                        : "binary, hemisphere";
     for (bool parallel : { false, true })
     {
       unsigned char background[3];
       const auto base =
-        Render(window, input, parallel, reference, falloff, background, 0.0, thickness);
+        Render(window, input, parallel, reference, falloff, background, 0.0, thickness, method);
       // The comparison means something only if the base shows occlusion.
       int occluded = 0;
       for (size_t i = 0; i + 2 < base.size(); i += 3)
@@ -101,8 +123,12 @@ int TestSSAOScale(int, char*[])
       FX_CHECK(!base.empty() && occluded > 100, input << ": " << occluded << " occluded pixels");
       for (const Variant& v : variants)
       {
+        if (v.Distance != 1.0 && !parallel)
+        {
+          continue; // (in perspective the image changes with the distance)
+        }
         unsigned char bg[3];
-        const auto image = Render(window, input, parallel, v, falloff, bg, 0.0, thickness);
+        const auto image = Render(window, input, parallel, v, falloff, bg, 0.0, thickness, method);
         const double psnr = vtkFXScenes::PSNR(base, image, background);
         std::cout << falloffName << ", " << input << (parallel ? " parallel" : " perspective") << ", " << v.Name
                   << ": PSNR " << psnr << " dB" << std::endl;
