@@ -429,12 +429,14 @@ bool vtkFXGBufferPass::CanCapture(vtkProp* prop)
   {
     return false;
   }
-  // An assembly is captured when every part is an actor.
+  // An assembly is captured when every part VTK draws (visibility on) is
+  // an actor it can capture.
   bool all = true;
   prop->InitPathTraversal();
   while (vtkAssemblyPath* path = prop->GetNextPath())
   {
-    all = all && IsCapturedActor(path->GetLastNode()->GetViewProp());
+    vtkProp* part = path->GetLastNode()->GetViewProp();
+    all = all && (!part->GetVisibility() || IsCapturedActor(part));
   }
   return all;
 }

@@ -136,11 +136,13 @@ void AnalyzeProp(vtkProp* prop, vtkFXSceneInfo& scene)
   }
   scene.OpaqueProps.push_back(prop);
   // Assemblies hold their actors as paths; a plain actor is its own path.
+  // (A part VTK does not draw, its visibility off, asks for nothing.)
   bool emissive = false;
   prop->InitPathTraversal();
   while (vtkAssemblyPath* path = prop->GetNextPath())
   {
-    if (vtkActor* actor = vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp()))
+    vtkActor* actor = vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp());
+    if (actor && actor->GetVisibility())
     {
       AddMaterialTerms(actor, scene, emissive);
     }

@@ -14,6 +14,8 @@
 #include "vtkFXToonPass.h"
 
 #include "vtkActor.h"
+#include "vtkAssembly.h"
+#include "vtkFXBloomPass.h"
 #include "vtkActorCollection.h"
 #include "vtkLight.h"
 #include "vtkObjectFactory.h"
@@ -230,6 +232,46 @@ int TestPipelineScheduling(int, char*[])
   window->Render();
   FX_CHECK(Channels(pipeline->GetGBufferChannels()) == "albedo,normal,depth",
     "2D props leave the channels alone: " << Channels(pipeline->GetGBufferChannels()));
+
+  // An assembly's hidden parts ask for nothing: an unlit one (emissive:
+  // glow) and one forced opaque at opacity 0.5 (drawn forward, and with it
+  // the whole assembly) beside a visible lit sphere. Before, the glow ran
+  // and the emission channel was allocated for nothing on screen.
+  {
+    renderer->RemoveAllViewProps();
+    vtkNew<vtkAssembly> assembly;
+    for (int part = 0; part < 3; ++part)
+    {
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      actor->SetPosition(1.5 * part, 0.0, 0.0);
+      actor->SetVisibility(part == 0);
+      if (part == 1)
+      {
+        actor->GetProperty()->LightingOff();
+      }
+      else if (part == 2)
+      {
+        actor->GetProperty()->SetOpacity(0.5);
+        actor->ForceOpaqueOn();
+      }
+      assembly->AddPart(actor);
+    }
+    renderer->AddActor(assembly);
+    renderer->ResetCamera();
+    vtkNew<vtkFXBloomPass> bloom;
+    pipeline->AddEffect("bloom", bloom);
+    window->Render();
+    const std::string passes = vtkFXTest::Passes(pipeline);
+    std::cout << "assembly with hidden parts: " << passes << " ["
+              << Channels(pipeline->GetGBufferChannels()) << "]" << std::endl;
+    FX_CHECK(passes.find("bloom") == std::string::npos &&
+        passes.find("forward-opaque") == std::string::npos && passes.find("gbuffer") != std::string::npos,
+      passes);
+    FX_CHECK(!(pipeline->GetGBufferChannels() & GB::ChannelBit(GB::Emission)),
+      "an emission channel for a hidden part");
+    pipeline->RemoveEffect("bloom");
+  }
 
   // An empty renderer: only the lights.
   renderer->RemoveAllViewProps();
