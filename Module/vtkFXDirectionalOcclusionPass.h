@@ -32,8 +32,10 @@
  * Binary) with each sample's occlusion split over the channels by its
  * direction's weights against the basis, which sum to 1 for every
  * direction. Each channel is scaled by 3 / samples, so the mean of the
- * three channels is exactly vtkFXSSAOPass's one-channel estimate from the
- * same samples; and with no bump the shading normal is the geometric one,
+ * three channels is vtkFXSSAOPass's one-channel estimate from the same
+ * samples (exactly, unless a channel's occlusion passes 1 and is clamped
+ * at 0 on its own, where the mean reads brighter than the one channel);
+ * and with no bump the shading normal is the geometric one,
  * whose weights are 1/3 each: the result is that mean, plain ambient
  * occlusion. NumberOfSamples is rounded up to a multiple of 3 (at most 63),
  * so that the stratified azimuths split evenly over the three basis
