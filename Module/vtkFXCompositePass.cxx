@@ -646,9 +646,9 @@ void vtkFXCompositePass::Draw(vtkOpenGLRenderer* ren)
     state->vtkglDepthMask(GL_FALSE);
   }
   // Blend like VTK's opaque pass (actors forced opaque with alpha below 1
-  // are drawn forward, vtkFXGBufferPass::CanCapture: what reaches here is
-  // opaque); alpha scaled by the mark while it is asked for
-  // (SetMarksTransmittance).
+  // by VTK's own tests are drawn forward, vtkFXGBufferPass::CanCapture; a
+  // texture VTK counts as opaque may still cut holes of alpha 0); alpha
+  // scaled by the mark while it is asked for (SetMarksTransmittance).
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA,
     this->MarksTransmittance ? GL_CONSTANT_ALPHA : GL_ONE, GL_ONE_MINUS_SRC_ALPHA);

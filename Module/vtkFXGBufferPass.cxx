@@ -36,6 +36,7 @@
 #include <iterator>
 #include <cmath>
 #include <sstream>
+#include <string>
 #include <vector>
 
 // (a factory can replace it: TestRobustness simulates a driver that
@@ -409,13 +410,23 @@ bool IsForcedOpaqueBlend(vtkActor* actor)
 // that still has geometry (vtkPolarAxesActor, vtkCubeAxesActor): it draws
 // through actors of its own that carry none of the hooks' keys, whose
 // colour would land in the G-buffer's first channel (garbled, recoloured
-// labels and axis lines); drawn forward, it shows as VTK draws it. Nor an
-// actor forced opaque whose fragments are not (IsForcedOpaqueBlend).
+// labels and axis lines); drawn forward, it shows as VTK draws it. (A
+// plain vtkActor without a mapper draws nothing: captured, so that an
+// empty placeholder does not send its assembly forward.) Nor an actor
+// forced opaque whose fragments are not (IsForcedOpaqueBlend).
 bool IsCapturedActor(vtkProp* prop)
 {
   vtkActor* actor = vtkActor::SafeDownCast(prop);
-  return actor && actor->GetMapper() && !prop->IsA("vtkSkybox") &&
-    !HasOwnFragmentColour(actor) && !IsForcedOpaqueBlend(actor);
+  if (!actor)
+  {
+    return false;
+  }
+  if (!actor->GetMapper())
+  {
+    const std::string type = actor->GetClassName();
+    return type == "vtkActor" || type == "vtkOpenGLActor";
+  }
+  return !prop->IsA("vtkSkybox") && !HasOwnFragmentColour(actor) && !IsForcedOpaqueBlend(actor);
 }
 }
 

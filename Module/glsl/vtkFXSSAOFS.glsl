@@ -138,8 +138,9 @@ fxOcclusionValue fxHemisphereOcclusion(vec3 p, vec3 n, float depth, vec2 rotatio
     // rounding: 1e-3 of the depth, but at most R / 20, so that a camera far
     // from its scene (parallel projection draws the same image from any
     // distance) does not take every occluder within R for the receiver's
-    // own surface (from 2000 radii away, 1e-3 of the depth was R itself);
-    // and at least 1e-5 of the depth, float rounding's reach there.
+    // own surface (from 1000 R away, 1e-3 of the depth is R itself);
+    // and at least 2e-6 of the depth, float rounding's reach there (some 20
+    // float steps; 1e-5 lost the occlusion again from 3e4 times the distance).
     if (!(sceneDepth > 0.0 && sceneDepth < sampleDepth))
     {
       continue; // nothing in front of the sample (most samples, on open surfaces)
@@ -148,7 +149,7 @@ fxOcclusionValue fxHemisphereOcclusion(vec3 p, vec3 n, float depth, vec2 rotatio
     fxTexelRay(texelQ, rayOrigin, rayDirection);
     float facing = dot(n, rayDirection);
     float planeDepth = abs(facing) > 1e-8 ? dot(n, p - rayOrigin) / facing : -1.0;
-    float tolerance = max(1e-5 * planeDepth, min(1e-3 * planeDepth, 0.05 * fxRadius));
+    float tolerance = max(2e-6 * planeDepth, min(1e-3 * planeDepth, 0.05 * fxRadius));
     if (planeDepth <= 0.0 || sceneDepth < planeDepth - tolerance)
     {
       // Range check: a surface far in front of the receiver is not between

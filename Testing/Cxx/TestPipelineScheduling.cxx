@@ -236,10 +236,13 @@ int TestPipelineScheduling(int, char*[])
   // An assembly's hidden parts ask for nothing: an unlit one (emissive:
   // glow) and one forced opaque at opacity 0.5 (drawn forward, and with it
   // the whole assembly) beside a visible lit sphere. Before, the glow ran
-  // and the emission channel was allocated for nothing on screen.
+  // and the emission channel was allocated for nothing on screen. Nor does
+  // an empty placeholder actor (no mapper: it draws nothing).
   {
     renderer->RemoveAllViewProps();
     vtkNew<vtkAssembly> assembly;
+    vtkNew<vtkActor> placeholder;
+    assembly->AddPart(placeholder);
     for (int part = 0; part < 3; ++part)
     {
       vtkNew<vtkActor> actor;
