@@ -6,8 +6,10 @@
 // search underflowed: 14-25 dB before its distances were taken in units of
 // R), translated 1e6 units from the origin (camera following),
 // seen in parallel projection (also from 1000 times the distance, where
-// the hemisphere method's self-occlusion tolerance, 1e-3 of the depth,
-// once exceeded R: 23.6 dB), and with a near/far ratio of 1e-6, give an
+// the blur's depth tolerances, fractions of the depth, once outgrew the
+// scene, 36-38 dB, and the hemisphere method's self-occlusion tolerance,
+// 1e-3 of the depth, exceeded R, 16 dB), and with a near/far ratio of
+// 1e-6, give an
 // occlusion image (the pipeline's occlusion view) within PSNR >= 40 dB of the
 // unchanged one over the pixels that show data. Radii, biases and blur
 // tolerances are world units or fractions of depth, and positions come from
