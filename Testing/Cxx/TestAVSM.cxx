@@ -1571,13 +1571,35 @@ int CheckShadowsBesideNonFiniteLight(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
-// A point light standing in for the sun, 1e9 units above props of about
-// 14 units: its rays are parallel there to within 1e-8 rad, and a
-// perspective view from it cannot tell the props' depths apart in float
-// (distance +- 14 is one float at 1e9: near = far). The shadow is the
-// directional light's, finite: under a slab of 0.3, 0.7, and 1 beside it.
-// Also a spot light, and a point light 500 radii away (its perspective
-// view kept).
+// Two shadow frames of GroundScene with the translucent slab over its
+// left half, in a fresh pipeline each: `arrange(renderer, moved)` sets up
+// the first (moved false) and the second; each visibility is the opaque
+// receivers'. `worst` receives the largest visibility difference (1 when
+// the sizes differ), `levels` the images' largest difference.
+void RenderFramePair(vtkRenderWindow* window, bool parallel,
+  const std::function<void(vtkRenderer*, bool)>& arrange, ShadowFrame frames[2], double& worst,
+  int& levels)
+{
+  for (int moved = 0; moved < 2; ++moved)
+  {
+    vtkNew<vtkFXPipelinePass> pipeline;
+    vtkNew<vtkFXAVSMPass> avsm;
+    vtkRenderer* renderer = GroundScene(window, parallel);
+    renderer->AddActor(Quad(-10, 0, 1, 0.3));
+    arrange(renderer, moved != 0);
+    pipeline->AddEffect("avsm", avsm);
+    renderer->SetPass(pipeline);
+    frames[moved] = RenderShadowFrame(window, avsm);
+    renderer->SetPass(nullptr);
+  }
+  worst = frames[0].Visibility.size() == frames[1].Visibility.size() ? 0.0 : 1.0;
+  for (size_t i = 0; worst < 1.0 && i < frames[0].Visibility.size(); ++i)
+  {
+    worst = std::max(worst, std::fabs(double(frames[0].Visibility[i]) - frames[1].Visibility[i]));
+  }
+  levels = vtkFXScenes::MaxDifference(frames[0].Image, frames[1].Image);
+}
+
 // A camera with a model transform (vtkCamera::SetModelTransformMatrix, as
 // VR cameras have): VTK's view coordinates are the model-view transform's,
 // and a camera at (0, 0, 20) whose model transform moves the world by
@@ -1588,38 +1610,28 @@ int CheckShadowsBesideNonFiniteLight(vtkRenderWindow* window)
 int CheckCameraModelTransform(vtkRenderWindow* window)
 {
   ShadowFrame frames[2];
-  for (int moved = 0; moved < 2; ++moved)
-  {
-    vtkNew<vtkFXPipelinePass> pipeline;
-    vtkNew<vtkFXAVSMPass> avsm;
-    vtkRenderer* renderer = GroundScene(window, false);
-    renderer->AddActor(Quad(-10, 0, 1, 0.3));
-    auto receiver = Quad(-10.0, 10.0, 0.5, 0.5);
-    receiver->SetPosition(0.0, 6.0, 0.0); // (a translucent receiver over the upper part)
-    renderer->AddActor(receiver);
-    vtkCamera* camera = renderer->GetActiveCamera();
-    if (moved)
-    {
-      vtkNew<vtkTransform> shift;
-      shift->Translate(2.0, 0.0, 0.0);
-      camera->SetModelTransformMatrix(shift->GetMatrix());
-    }
-    else
-    {
-      camera->SetPosition(-2.0, 0.0, 20.0);
-      camera->SetFocalPoint(-2.0, 0.0, 0.0);
-    }
-    pipeline->AddEffect("avsm", avsm);
-    renderer->SetPass(pipeline);
-    frames[moved] = RenderShadowFrame(window, avsm);
-    renderer->SetPass(nullptr);
-  }
-  double worst = frames[0].Visibility.size() == frames[1].Visibility.size() ? 0.0 : 1.0;
-  for (size_t i = 0; worst < 1.0 && i < frames[0].Visibility.size(); ++i)
-  {
-    worst = std::max(worst, std::fabs(double(frames[0].Visibility[i]) - frames[1].Visibility[i]));
-  }
-  const int levels = vtkFXScenes::MaxDifference(frames[0].Image, frames[1].Image);
+  double worst = 1.0;
+  int levels = 255;
+  RenderFramePair(
+    window, false,
+    [](vtkRenderer* renderer, bool moved) {
+      auto receiver = Quad(-10.0, 10.0, 0.5, 0.5);
+      receiver->SetPosition(0.0, 6.0, 0.0); // (a translucent receiver over the upper part)
+      renderer->AddActor(receiver);
+      vtkCamera* camera = renderer->GetActiveCamera();
+      if (moved)
+      {
+        vtkNew<vtkTransform> shift;
+        shift->Translate(2.0, 0.0, 0.0);
+        camera->SetModelTransformMatrix(shift->GetMatrix());
+      }
+      else
+      {
+        camera->SetPosition(-2.0, 0.0, 20.0);
+        camera->SetFocalPoint(-2.0, 0.0, 0.0);
+      }
+    },
+    frames, worst, levels);
   std::cout << "camera with a model transform: visibility off by " << worst << ", image by "
             << levels << " levels" << std::endl;
   FX_CHECK(!frames[0].Visibility.empty() && worst < 1e-3 && levels <= 1,
@@ -1636,45 +1648,35 @@ int CheckCameraModelTransform(vtkRenderWindow* window)
 int CheckUserLightTransform(vtkRenderWindow* window)
 {
   ShadowFrame frames[2];
-  for (int moved = 0; moved < 2; ++moved)
-  {
-    vtkNew<vtkFXPipelinePass> pipeline;
-    vtkNew<vtkFXAVSMPass> avsm;
-    vtkRenderer* renderer = GroundScene(window, true);
-    renderer->AddActor(Quad(-10, 0, 1, 0.3));
-    renderer->RemoveAllLights();
-    vtkNew<vtkLight> light;
-    light->PositionalOff();
-    if (moved)
-    {
-      light->SetLightTypeToCameraLight();
-      light->SetPosition(0.0, 0.0, 1.0);
-      light->SetFocalPoint(0.0, 0.0, 0.0);
-      vtkNew<vtkTransform> turn;
-      turn->RotateY(30.0);
-      vtkOpenGLRenderer::SafeDownCast(renderer)->SetUserLightTransform(turn);
-    }
-    else
-    {
-      // (the view's axes are the world's, shifted along z)
-      light->SetLightTypeToSceneLight();
-      light->SetPosition(0.5, 0.0, std::sqrt(0.75));
-      light->SetFocalPoint(0.0, 0.0, 0.0);
-    }
-    renderer->AddLight(light);
-    pipeline->AddEffect("avsm", avsm);
-    renderer->SetPass(pipeline);
-    frames[moved] = RenderShadowFrame(window, avsm);
-    renderer->SetPass(nullptr);
-  }
-  double worst = frames[0].Visibility.size() == frames[1].Visibility.size() ? 0.0 : 1.0;
-  int shadowed = 0;
-  for (size_t i = 0; worst < 1.0 && i < frames[0].Visibility.size(); ++i)
-  {
-    worst = std::max(worst, std::fabs(double(frames[0].Visibility[i]) - frames[1].Visibility[i]));
-    shadowed += frames[0].Visibility[i] < 0.9f;
-  }
-  const int levels = vtkFXScenes::MaxDifference(frames[0].Image, frames[1].Image);
+  double worst = 1.0;
+  int levels = 255;
+  RenderFramePair(
+    window, true,
+    [](vtkRenderer* renderer, bool moved) {
+      renderer->RemoveAllLights();
+      vtkNew<vtkLight> light;
+      light->PositionalOff();
+      if (moved)
+      {
+        light->SetLightTypeToCameraLight();
+        light->SetPosition(0.0, 0.0, 1.0);
+        light->SetFocalPoint(0.0, 0.0, 0.0);
+        vtkNew<vtkTransform> turn;
+        turn->RotateY(30.0);
+        vtkOpenGLRenderer::SafeDownCast(renderer)->SetUserLightTransform(turn);
+      }
+      else
+      {
+        // (the view's axes are the world's, shifted along z)
+        light->SetLightTypeToSceneLight();
+        light->SetPosition(0.5, 0.0, std::sqrt(0.75));
+        light->SetFocalPoint(0.0, 0.0, 0.0);
+      }
+      renderer->AddLight(light);
+    },
+    frames, worst, levels);
+  const int shadowed = static_cast<int>(std::count_if(frames[0].Visibility.begin(),
+    frames[0].Visibility.end(), [](float v) { return v < 0.9f; }));
   std::cout << "camera light under a user light transform: visibility off by " << worst
             << ", image by " << levels << " levels (" << shadowed << " pixels shadowed)"
             << std::endl;
@@ -1683,6 +1685,13 @@ int CheckUserLightTransform(vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
+// A point light standing in for the sun, 1e9 units above props of about
+// 14 units: its rays are parallel there to within 1e-8 rad, and a
+// perspective view from it cannot tell the props' depths apart in float
+// (distance +- 14 is one float at 1e9: near = far). The shadow is the
+// directional light's, finite: under a slab of 0.3, 0.7, and 1 beside it.
+// Also a spot light, and a point light 500 radii away (its perspective
+// view kept).
 // (A spot light of 30 degrees from 7e3 or 200 units, outside the props'
 // bounding sphere, gets the view fitted to the sphere: its cone's view
 // spread the map over 8000 units at 7e3, the 20-unit ground under two
