@@ -95,7 +95,8 @@ std::string vtkFXDirectionalOcclusionPass::GetExtensionCode(vtkRenderer* ren)
   auto* glRenderer = vtkOpenGLRenderer::SafeDownCast(ren);
   // The occluder is the surface the G-buffer shows at the blocked sample's
   // texel; it reflects albedo x its direct diffuse light, computed with the
-  // composite's own light calls (no highlights, no shadows).
+  // composite's own light calls (no highlights, no shadows); a pre-lit
+  // (PBR) one, whose albedo the G-buffer does not hold, none.
   return std::string("uniform sampler2D fxAlbedo;\nuniform sampler2D fxShadingNormal;\n") +
     glRenderer->GetLightingUniforms() +
     "\n#define FX_HAS_SPECULAR 0\nfloat fxDiffuseResponse(float df) { return df; }\n" +
@@ -103,7 +104,7 @@ std::string vtkFXDirectionalOcclusionPass::GetExtensionCode(vtkRenderer* ren)
     "\nvec3 fxBleed = vec3(0.0);\n"
     "vec3 fxOccluderLight(ivec2 q, float d)\n{\n"
     "  vec2 code = texelFetch(fxShadingNormal, q, 0).rg;\n"
-    "  if (fxIsUnlit(code)) { return vec3(0.0); }\n"
+    "  if (fxIsUnlit(code) || fxIsPrelit(code)) { return vec3(0.0); }\n"
     "  vec3 n = fxDecodeNormal(code);\n"
     "  vec3 rayOrigin, rayDirection;\n"
     "  fxTexelRay(q, rayOrigin, rayDirection);\n"

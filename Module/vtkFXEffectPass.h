@@ -37,15 +37,17 @@
  *   OcclusionDiffuseStrength, the diffuse light; may also change
  *   `diffuseLight` and `specularLight`;
  * - Color: may change the final `color` (vec3) of lit and unlit pixels
- *   (`lit` tells which).
+ *   (`lit` tells which; false also for pre-lit ones, see below).
  * - DiffuseResponse: inside each light's computation, may reshape `df`,
  *   the light's diffuse factor (max(0, n.l) times its attenuation), before
  *   it multiplies the light's colour (toon bands); highlights keep the
  *   raw factor. It sees `df` only (a function of its own).
  * The hooks are listed in enum order; DiffuseResponse runs within the
  * lights, between LightVisibility calls.
- * Background pixels never reach a hook. LightVisibility and Ambient run for
- * lit pixels only (lighting on, no debug channel shown); Color runs for
+ * Background pixels never reach a hook. LightVisibility runs for lit
+ * pixels only (lighting on, no debug channel shown), Ambient for lit and
+ * pre-lit ones (VTK's PBR materials, whose colour the composite keeps and
+ * occludes, in linear light, as it does the diffuse light); Color runs for
  * every covered pixel. They see `texCoord`, `n` (view space; +z for unlit
  * pixels), `albedo`, `lit` and `position` (view space, when the G-buffer
  * has linear depth: request it in GetRequiredChannels; 0 otherwise).

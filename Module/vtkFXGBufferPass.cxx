@@ -670,8 +670,16 @@ bool vtkFXGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
 }
 
 std::string vtkFXGBufferPass::ChannelWritesGLSL(
-  bool lit, bool unlitEmits, const char* linearDepth) const
+  FragmentLighting lighting, bool unlitEmits, const char* linearDepth) const
 {
+  const bool lit = lighting == Phong;
+  const bool prelit = lighting == Prelit;
+  // (a pre-lit fragment's normal is flagged: see vtkFXNormalCoding.glsl)
+  const auto normal = [&](const char* name) {
+    return lit ? std::string("vec4(fxEncodeNormal(") + name + "), 0.0, 1.0);\n"
+               : prelit ? std::string("vec4(fxEncodePrelitNormal(") + name + "), 0.0, 1.0);\n"
+                        : std::string("vec4(fxUnlitNormal, 0.0, 1.0);\n");
+  };
   vtkFXRenderUtilities::CodeStream code;
   int target = 0;
   for (int c = 0; c < NumberOfChannels; ++c)
@@ -684,8 +692,7 @@ std::string vtkFXGBufferPass::ChannelWritesGLSL(
     switch (c)
     {
       case Normal:
-        code << (lit ? "vec4(fxEncodeNormal(fxShadingNormal), 0.0, 1.0);\n"
-                     : "vec4(fxUnlitNormal, 0.0, 1.0);\n");
+        code << normal("fxShadingNormal");
         break;
       case LinearDepth:
         code << "vec4(" << linearDepth << ", 0.0, 0.0, 1.0);\n";
@@ -703,11 +710,11 @@ std::string vtkFXGBufferPass::ChannelWritesGLSL(
         code << (lit ? "vec4(fxAmbient, 1.0);\n" : "vec4(0.0, 0.0, 0.0, 1.0);\n");
         break;
       case Emission:
-        code << (lit || !unlitEmits ? "vec4(fxEmissive, 1.0);\n" : "fxFiniteEmission(fxColor);\n");
+        code << (lit || prelit || !unlitEmits ? "vec4(fxEmissive, 1.0);\n"
+                                              : "fxFiniteEmission(fxColor);\n");
         break;
       case GeometricNormal:
-        code << (lit ? "vec4(fxEncodeNormal(fxGeometricNormal), 0.0, 1.0);\n"
-                     : "vec4(fxUnlitNormal, 0.0, 1.0);\n");
+        code << normal("fxGeometricNormal");
         break;
     }
   }
@@ -723,12 +730,15 @@ bool vtkFXGBufferPass::PostReplaceShaderValues(std::string&, std::string&,
     return true;
   }
   // VTK 9.1 lights a primitive (light complexity > 0) only when its shader
-  // computes "vec3 diffuse" from a normal; the light uniforms alone are
-  // declared for unlit primitives too. PBR materials keep their forward
-  // colour: the composite reproduces VTK's Phong model only.
+  // computes "vec3 diffuse" (Phong) or "vec3 Lo" (PBR) from a normal; the
+  // light uniforms alone are declared for unlit primitives too. PBR
+  // materials keep their forward colour (the composite reproduces VTK's
+  // Phong model only) with their normal: they receive occlusion and carry
+  // feature lines.
   const bool pbr = actor && actor->GetProperty()->GetInterpolation() == VTK_PBR;
-  const bool lit = !pbr && Contains(fragmentShader, "vec3 diffuse = ") &&
-    Contains(fragmentShader, "normalVCVSOutput");
+  const bool normals = Contains(fragmentShader, "normalVCVSOutput");
+  const bool lit = !pbr && normals && Contains(fragmentShader, "vec3 diffuse = ");
+  const bool prelit = pbr && normals && Contains(fragmentShader, "vec3 Lo = ");
   // Linear depth: -z of the view-space position where the shader has one.
   // Points drawn as spheres and lines drawn as tubes move the surface off
   // that position (to gl_FragDepth): fxImpostorLinearDepth. Unlit
@@ -767,6 +777,9 @@ bool vtkFXGBufferPass::PostReplaceShaderValues(std::string&, std::string&,
             "  vec3 fxAmbient = ambientColor * fxTexture.rgb;\n"
             "  vec3 fxSpecular = specularColor * fxTexture.rgb;\n"
             "  float fxSpecularPower = clamp(specularPower, 0.0, 128.0);\n";
+  }
+  if (lit || prelit)
+  {
     // VTK's normal-texture code replaces normalVCVSOutput: keep the mesh
     // normal from just before it.
     const char* const normalTextureCode = "mat3 tbn = mat3(";
@@ -776,7 +789,8 @@ bool vtkFXGBufferPass::PostReplaceShaderValues(std::string&, std::string&,
       vtkShaderProgram::Substitute(fragmentShader, normalTextureCode,
         std::string("vec3 fxGeometricNormal = normalVCVSOutput;\n  ") + normalTextureCode, false);
     }
-    impl << ShadingNormalGLSL(Contains(fragmentShader, "in float fxBumpVSOutput;") &&
+    // (no bump on a pre-lit colour: VTK's lighting did not see it)
+    impl << ShadingNormalGLSL(lit && Contains(fragmentShader, "in float fxBumpVSOutput;") &&
         Contains(fragmentShader, "vec4 vertexVC ="),
       normalTexture);
   }
@@ -787,7 +801,7 @@ bool vtkFXGBufferPass::PostReplaceShaderValues(std::string&, std::string&,
   // Lighting off glows with its colour, a lit one with its emissive colour
   // only, also where VTK leaves its primitives unlit)
   const bool unlitEmits = !actor || !actor->GetProperty()->GetLighting();
-  impl << this->ChannelWritesGLSL(lit, unlitEmits, linearDepth);
+  impl << this->ChannelWritesGLSL(lit ? Phong : prelit ? Prelit : Unlit, unlitEmits, linearDepth);
   // Remove the markers; keep the mapper's code where it was.
   vtkShaderProgram::Substitute(fragmentShader, TexBeginTag, "", false);
   vtkShaderProgram::Substitute(fragmentShader, TexEndTag, "", false);

@@ -10,8 +10,9 @@
  * Writes, each as its own texture at the renderer's viewport size, and only
  * for the channels some consumer requested (SetRequiredChannels):
  * - Albedo       RGBA8   VTK's diffuse colour after scalar colouring and
- *                        texturing; alpha = opacity. Unlit fragments store
- *                        their final colour here.
+ *                        texturing; alpha = opacity. Unlit fragments, and
+ *                        PBR ones (pre-lit: the composite keeps VTK's
+ *                        colour), store their final colour here.
  * - Normal       RG16F   view-space shading normal, octahedral encoding
  *                        (Cigolle et al. 2014, "A Survey of Efficient
  *                        Representations for Independent Unit Vectors"): the
@@ -19,7 +20,9 @@
  *                        applies, as VTK 9.1 applies it when the mesh has
  *                        tangents), tilted by the prop's bump (SetBump);
  *                        unlit fragments and uncovered pixels carry a
- *                        sentinel outside [-1,1].
+ *                        sentinel outside [-1,1]; pre-lit ones their
+ *                        normal's code with x moved up by 4
+ *                        (vtkFXNormalCoding.glsl: fxIsPrelit).
  * - LinearDepth  R32F    -z in view coordinates (world units), 0 = no surface.
  * - Specular     RGBA8   specular colour x intensity; alpha = sqrt(power / 128).
  * - Ambient      RGBA8   VTK's ambient term (ambient intensity x colour).
@@ -284,10 +287,19 @@ protected:
   // The props of `s` whose shaders the hooks can extend.
   static std::vector<vtkProp*> CapturedProps(const vtkRenderState* s);
   void ClearTargets();
+  // How VTK lights a fragment: not at all, with the Phong model the
+  // composite reproduces, or with one it keeps VTK's colour of (PBR).
+  enum FragmentLighting
+  {
+    Unlit,
+    Phong,
+    Prelit
+  };
   // `unlitEmits`: an unlit fragment's colour is its emission (a prop with
-  // Lighting off); else (a lit prop's unlit primitives: PBR, lines or
-  // points without normals) it emits only its emissive colour.
-  std::string ChannelWritesGLSL(bool lit, bool unlitEmits, const char* linearDepth) const;
+  // Lighting off); else (a lit prop's unlit primitives: lines or points
+  // without normals) it emits only its emissive colour.
+  std::string ChannelWritesGLSL(
+    FragmentLighting lighting, bool unlitEmits, const char* linearDepth) const;
 
   vtkRenderPass* DelegatePass = nullptr;
   bool HDREmission = false;

@@ -92,6 +92,16 @@ vec3 fxSanitize(vec3 c)
   return clamp(c, 0.0, 65504.0);
 }
 
+// A pre-lit (PBR) colour, sRGB as VTK writes it (its linear light raised
+// to 1 / 2.2), occluded in linear light as the diffuse light is, by
+// fxOcclusionDiffuseStrength: VTK's PBR colour is one sum of its
+// environment (image-based) light, its lights and its emission.
+vec3 fxOccludedPrelit(vec3 prelit, vec3 visibility)
+{
+  vec3 factor = clamp(mix(vec3(1.0), visibility, fxOcclusionDiffuseStrength), 0.0, 1.0);
+  return prelit * pow(factor, vec3(1.0 / 2.2));
+}
+
 #if FX_DEBUG_CHANNEL >= 0
 vec3 fxDebugColor()
 {
@@ -148,7 +158,8 @@ void main()
   vec2 encodedNormal = texture(fxNormal, texCoord).rg;
   if (!fxIsUnlit(encodedNormal))
   {
-    lit = true;
+    // (pre-lit, PBR: VTK's colour, occluded below, not lit again)
+    lit = !fxIsPrelit(encodedNormal);
     n = fxDecodeNormal(encodedNormal);
     vec3 diffuseColor = albedo.rgb;
 #if FX_HAS_AMBIENT
@@ -168,16 +179,26 @@ void main()
 #endif
     vec3 diffuseLight = vec3(0.0);
     vec3 specularLight = vec3(0.0);
-    //VTK::FXLight::Impl
+    if (lit)
+    {
+      //VTK::FXLight::Impl
+    }
     //VTK::FXEffects::Ambient
-    ambientColor *= ambientVisibility;
-    diffuseLight *= mix(vec3(1.0), ambientVisibility, fxOcclusionDiffuseStrength);
-    color = ambientColor + diffuseLight * diffuseColor + specularLight * specularColor;
+    if (lit)
+    {
+      ambientColor *= ambientVisibility;
+      diffuseLight *= mix(vec3(1.0), ambientVisibility, fxOcclusionDiffuseStrength);
+      color = ambientColor + diffuseLight * diffuseColor + specularLight * specularColor;
 #if FX_HAS_EMISSION
-    // Emission of lit props (vtkFXGBufferPass::EMISSIVE_COLOR); unlit ones
-    // already carry theirs in the albedo.
-    color += texture(fxEmission, texCoord).rgb;
+      // Emission of lit props (vtkFXGBufferPass::EMISSIVE_COLOR); unlit ones
+      // already carry theirs in the albedo.
+      color += texture(fxEmission, texCoord).rgb;
 #endif
+    }
+    else
+    {
+      color = fxOccludedPrelit(albedo.rgb, ambientVisibility);
+    }
   }
 #endif
   //VTK::FXEffects::Color

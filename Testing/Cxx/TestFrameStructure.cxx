@@ -126,7 +126,7 @@ public:
   static HookProbe* New();
   vtkTypeMacro(HookProbe, vtkFXEffectPass);
   HookProbe() { this->Stage = Composite; }
-  unsigned int GetRequiredChannels() override { return 0; }
+  unsigned int GetRequiredChannels() override { return this->Channels; }
   void Render(const vtkRenderState*) override {} // composite-stage: never called
   std::string GetCompositeCode(int hook) override { return this->Code[hook]; }
   void BindCompositeResources(vtkShaderProgram* program, const std::string& prefix) override
@@ -139,6 +139,7 @@ public:
   }
   std::string Code[NumberOfCompositeHooks];
   float Gain = 1.0f;
+  unsigned int Channels = 0; // the G-buffer channels it asks for
 };
 vtkStandardNewMacro(HookProbe);
 
@@ -461,6 +462,38 @@ int TestConnections()
   return EXIT_SUCCESS;
 }
 
+// A PBR plane (VTK's colour, which the composite keeps) receives the
+// ambient visibility v in linear light, as diffuse light: VTK writes
+// pow(linear, 1 / 2.2), so v = 0.5 scales the colour by 0.5^(1 / 2.2) =
+// 0.7297 at strength 1, and by nothing at strength 0. Before, PBR
+// fragments carried no normal and no ambient hook ran for them: no
+// occlusion at all. The hook's normal channel is all that asks for one.
+bool CheckPrelitOcclusion(FlatScene& scene, HookProbe* probe)
+{
+  scene.Actor->GetProperty()->SetInterpolationToPBR();
+  scene.Actor->GetProperty()->SetRoughness(0.5);
+  probe->Channels = vtkFXGBufferPass::ChannelBit(vtkFXGBufferPass::Normal);
+  probe->Code[vtkFXEffectPass::Ambient] = "";
+  const auto open = scene.Centre();
+  probe->Code[vtkFXEffectPass::Ambient] = "ambientVisibility *= 0.5;";
+  const auto occluded = scene.Centre();
+  scene.Pipeline->GetCompositePass()->SetOcclusionDiffuseStrength(0.0);
+  const auto kept = scene.Centre();
+  scene.Pipeline->GetCompositePass()->SetOcclusionDiffuseStrength(1.0);
+  // VTK's own forward render of the same plane.
+  scene.Renderer->SetPass(nullptr);
+  const auto forward = scene.Centre();
+  scene.Renderer->SetPass(scene.Pipeline);
+  scene.Actor->GetProperty()->SetInterpolationToGouraud();
+  probe->Channels = 0;
+  const double expected = open[0] * std::pow(0.5, 1.0 / 2.2);
+  std::cout << "PBR plane: VTK " << forward[0] << ", open " << open[0] << ", ambient 0.5 "
+            << occluded[0] << " (expected " << expected << "), strength 0 " << kept[0]
+            << std::endl;
+  return open[0] > 100 && std::abs(open[0] - forward[0]) <= 1 &&
+    std::abs(occluded[0] - expected) <= 1.5 && std::abs(kept[0] - open[0]) <= 1;
+}
+
 int TestHooks()
 {
   // Albedo 0.8 under a headlight facing the plane: 204 grey.
@@ -479,6 +512,7 @@ int TestHooks()
   scene.Pipeline->GetCompositePass()->SetOcclusionDiffuseStrength(0.0);
   FX_CHECK(expect(204, "ambient 0.5, strength 0"), "strength 0 keeps diffuse light");
   scene.Pipeline->GetCompositePass()->SetOcclusionDiffuseStrength(1.0);
+  FX_CHECK(CheckPrelitOcclusion(scene, a), "PBR colours are occluded in linear light");
   a->Code[vtkFXEffectPass::Ambient] = "";
   a->Code[vtkFXEffectPass::LightVisibility] = "lightVisibility = lightIndex == 0 ? 0.25 : 1.0;";
   FX_CHECK(expect(51, "light 0 at 0.25"), "per-light visibility");

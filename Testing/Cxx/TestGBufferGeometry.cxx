@@ -37,6 +37,7 @@ struct Case
   double NearRatio; // near/far clipping ratio (0: VTK's automatic range)
   bool Plane;       // a plane z = const instead of the sphere
   bool Unlit;       // lighting off: no view-space position in VTK's shader
+  bool Pbr = false; // VTK's PBR model: its colour kept, its normal flagged
 };
 
 // Ray through the pixel centre in world coordinates (double precision).
@@ -93,6 +94,10 @@ int RunCase(vtkRenderWindow* window, const Case& c)
     planeMapper->SetInputConnection(plane->GetOutputPort());
     actor->SetMapper(planeMapper);
     actor->GetProperty()->SetLighting(!c.Unlit);
+    if (c.Pbr)
+    {
+      actor->GetProperty()->SetInterpolationToPBR();
+    }
   }
   else
   {
@@ -170,7 +175,11 @@ int RunCase(vtkRenderWindow* window, const Case& c)
           view->MultiplyPoint(up, upVC);
           const double angle = vtkFXTest::Angle(n, upVC);
           worstAngle = std::max(worstAngle, angle);
-          FX_CHECK(angle <= 2e-3, c.Name << ": plane normal off by " << angle);
+          // (a pre-lit code keeps 8 to 9 bits after the point in x:
+          // within 0.004 rad, see vtkFXNormalCoding.glsl)
+          FX_CHECK(angle <= (c.Pbr ? 4e-3 : 2e-3), c.Name << ": plane normal off by " << angle);
+          FX_CHECK((normal[2 * i] > 2.0f) == c.Pbr && normal[2 * i + 1] <= 2.0f,
+            c.Name << ": the normal is flagged pre-lit exactly for PBR");
         }
         ++checked;
         continue;
@@ -329,6 +338,10 @@ int TestGBufferGeometry(int, char*[])
     { "unlit plane", false, 1.0, 0.0, 0.0, true, true },
     { "unlit plane, near/far 1e-8", false, 1.0, 0.0, 1e-8, true, true },
     { "unlit parallel plane", true, 1.0, 0.0, 0.0, true, true },
+    // PBR: VTK's colour is kept, and its normal stored for the effects
+    // (before, the unlit sentinel: no occlusion, no feature lines from it).
+    { "PBR plane", false, 1.0, 0.0, 0.0, true, false, true },
+    { "PBR parallel plane far from origin 1e6", true, 1.0, 1e6, 0.0, true, false, true },
   };
   // One window for all cases: each window is an X connection.
   auto window = vtkFXTest::MakeWindow(160, 120);

@@ -340,9 +340,10 @@ std::vector<char> NearCreases(vtkRenderer* renderer, int width, int height,
 // Fandisk pixels at least 3 px from the background with line coverage
 // above 0.2 (lines are 0.83 px wide here), with creases on or off; with
 // `lines`, which pixels those are, and with `nearCreases`, the pixels near
-// the surface's creases (NearCreases).
-int InteriorLinePixels(vtkRenderWindow* window, bool creases, int& interior, int& object,
-  std::vector<char>* lines = nullptr, std::vector<char>* nearCreases = nullptr)
+// the surface's creases (NearCreases). `pbr`: the fandisk in VTK's PBR
+// model, whose colour the composite keeps.
+int InteriorLinePixels(vtkRenderWindow* window, bool creases, bool pbr, int& interior,
+  int& object, std::vector<char>* lines = nullptr, std::vector<char>* nearCreases = nullptr)
 {
   const int width = 400, height = 300;
   window->SetSize(width, height);
@@ -351,6 +352,10 @@ int InteriorLinePixels(vtkRenderWindow* window, bool creases, int& interior, int
   vtkNew<vtkPolyDataNormals> normals; // splitting at 30 degrees, VTK's default
   normals->SetInputConnection(reader->GetOutputPort());
   auto actor = LitSurface(normals->GetOutputPort());
+  if (pbr)
+  {
+    actor->GetProperty()->SetInterpolationToPBR();
+  }
   vtkFXToonPass* toon = MakeScene(window, actor, false);
   vtkRenderer* renderer = window->GetRenderers()->GetFirstRenderer();
   renderer->ResetCamera();
@@ -396,17 +401,23 @@ int InteriorLinePixels(vtkRenderWindow* window, bool creases, int& interior, int
   }
   if (nearCreases)
   {
+    // (the normals of a frame with lines: without, a scene of PBR props
+    // alone has no effect that reads them)
+    window->Render();
     *nearCreases = NearCreases(renderer, width, height, background);
   }
   return EXIT_SUCCESS;
 }
 
-int CheckFandiskCreases(vtkRenderWindow* window)
+// Also in VTK's PBR model: its fragments carry their normals (before, the
+// unlit sentinel: the creases added no line, and the silhouettes were
+// found from depths alone).
+int CheckFandiskCreases(vtkRenderWindow* window, bool pbr)
 {
   int withCreases = 0, withoutCreases = 0, object = 0;
   std::vector<char> creaseLines, otherLines, nearCreases;
-  InteriorLinePixels(window, true, withCreases, object, &creaseLines, &nearCreases);
-  InteriorLinePixels(window, false, withoutCreases, object, &otherLines);
+  InteriorLinePixels(window, true, pbr, withCreases, object, &creaseLines, &nearCreases);
+  InteriorLinePixels(window, false, pbr, withoutCreases, object, &otherLines);
   // The lines creases add lie on the surface's creases.
   int added = 0, addedNearCreases = 0;
   const long nearArea = std::count(nearCreases.begin(), nearCreases.end(), 1);
@@ -416,7 +427,8 @@ int CheckFandiskCreases(vtkRenderWindow* window)
     added += isAdded ? 1 : 0;
     addedNearCreases += isAdded && nearCreases[i] ? 1 : 0;
   }
-  std::cout << "fandisk: " << object << " interior pixels, " << withCreases
+  std::cout << "fandisk" << (pbr ? " (PBR)" : "") << ": " << object << " interior pixels, "
+            << withCreases
             << " on lines with creases, " << withoutCreases << " without; of the " << added
             << " the creases add, " << addedNearCreases << " within 2.5 px of a crease (a zone of "
             << nearArea << " pixels, " << 100.0 * nearArea / std::max(object, 1)
@@ -1129,7 +1141,8 @@ int TestToon(int, char*[])
   FX_CHECK(CheckSphereLines(window, 600, width2) == EXIT_SUCCESS, "lines at 800x600");
   FX_CHECK(std::fabs(width2 / width1 - 2.0) < 0.2,
     "lines at twice the size are " << width2 / width1 << " times as wide");
-  FX_CHECK(CheckFandiskCreases(window) == EXIT_SUCCESS, "fandisk creases");
+  FX_CHECK(CheckFandiskCreases(window, false) == EXIT_SUCCESS, "fandisk creases");
+  FX_CHECK(CheckFandiskCreases(window, true) == EXIT_SUCCESS, "PBR fandisk creases");
   FX_CHECK(CheckTileCulling(window) == EXIT_SUCCESS, "tile culling");
   FX_CHECK(CheckScaleInvariance(window) == EXIT_SUCCESS, "scale invariance");
   FX_CHECK(CheckUnlitBackdrop(window) == EXIT_SUCCESS, "unlit backdrop");

@@ -393,12 +393,13 @@ inline std::vector<float> Download(vtkTextureObject* texture, int components)
   return values;
 }
 
-// Octahedral decoding, the CPU twin of fxDecodeNormal in vtkFXNormalCoding.glsl.
+// Octahedral decoding, the CPU twin of fxDecodeNormal in vtkFXNormalCoding.glsl
+// (a pre-lit fragment's code has x moved up by 4).
 inline void DecodeNormal(float ex, float ey, double n[3])
 {
-  n[0] = ex;
+  n[0] = ex > 2.0f ? ex - 4.0 : ex;
   n[1] = ey;
-  n[2] = 1.0 - std::fabs(ex) - std::fabs(ey);
+  n[2] = 1.0 - std::fabs(n[0]) - std::fabs(ey);
   if (n[2] < 0.0)
   {
     const double x = n[0], y = n[1];
