@@ -13,8 +13,9 @@
  * weight of the tap's depth difference from the pixel's tangent plane
  * (DepthSigma, a fraction of the depth, so the result does not depend on
  * the scene's scale; in parallel projection a fraction of the distance at
- * which the view angle spans the view, so that it does not depend on the
- * camera's distance either) and the normal agreement (NormalPower),
+ * which a 30-degree view angle spans the view, so that it depends on
+ * neither the camera's distance nor its view angle) and the normal
+ * agreement (NormalPower),
  * then, for reduced-resolution input, a joint-bilateral upsample (4 taps).
  *
  * Inputs that carry their own guide are read in one fetch per tap and need

@@ -1253,13 +1253,14 @@ void vtkFXRenderUtilities::SetFrustumRayUniforms(vtkShaderProgram* program, vtkR
   }
   if (program->IsUniformUsed("fxParallelDepth"))
   {
-    // (parallel or not by the matrix VTK draws with: an explicit one decides)
-    const double halfAngle =
-      vtkMath::RadiansFromDegrees(0.5 * renderer->GetActiveCamera()->GetViewAngle());
+    // (parallel or not by the matrix VTK draws with: an explicit one decides;
+    // at VTK's default view angle, 30 degrees, whatever the camera's, which
+    // a parallel image does not depend on)
+    const double tanHalfAngle = std::tan(vtkMath::RadiansFromDegrees(15.0));
     double halfHeight = 0.0;
     program->SetUniformf("fxParallelDepth",
       ComputeParallelHalfHeight(renderer, halfHeight)
-        ? static_cast<float>(halfHeight / std::max(std::tan(halfAngle), 1e-6))
+        ? static_cast<float>(halfHeight / tanHalfAngle)
         : 0.0f);
   }
 }

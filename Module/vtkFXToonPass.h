@@ -17,8 +17,9 @@
  * - a silhouette where one is background and the other is not, or where
  *   either pixel's view-space position lies off the other's tangent plane by
  *   more than SilhouetteThreshold times the nearer depth (in parallel
- *   projection, times the distance at which the view angle spans the
- *   parallel view, so that moving the camera back changes nothing): a test
+ *   projection, times the distance at which a 30-degree view angle, VTK's
+ *   default, spans the parallel view, so that neither moving the camera
+ *   back nor its view angle changes anything): a test
  *   relative to depth, so it does not depend on the scene's scale, and exact for
  *   planes at any angle, so a plane seen at a grazing angle is not taken
  *   for an edge;
@@ -128,7 +129,7 @@ public:
   /**
    * Smallest gap between a pixel's position and its neighbour's tangent
    * plane that makes a silhouette, as a fraction of the nearer depth (in
-   * parallel projection of ParallelScale / tan(ViewAngle / 2)) (1e-5..10,
+   * parallel projection of ParallelScale / tan(15 degrees)) (1e-5..10,
    * default 0.02).
    */
   vtkFXSetClampMacro(SilhouetteThreshold, double, 1e-5, 10.0);

@@ -288,22 +288,34 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
   vec3 rayOrigin, rayDirection;
   fxTexelRay(texel, rayOrigin, rayDirection);
   vec3 view = normalize(-rayDirection); // towards the eye, any projection
-  // Texels per world unit at this depth, along x. R in texels, at most the
-  // image's diagonal (steps past it would all land outside the image; the
-  // bound also keeps a surface at the eye finite). A fixed bound of 512
-  // texels shrank R in images over about 2000 pixels wide: scene:corner at
-  // 6400 x 4800 lost the wall's occlusion and showed rings at 512 texels,
-  // 35 levels off the 400 x 300 image in 20-pixel cells; TestSSAOScale.
-  float worldPerNdc = length(fxRayOrigin[1] + depth * fxRayDirection[1]);
-  float fullRadiusTexels = fxRadius / worldPerNdc * 0.5 * float(fxGBufferSize.x);
-  float radiusTexels = clamp(fullRadiusTexels, 1.0, length(vec2(fxGBufferSize)));
+  // R in texels at this depth along each image axis: pixels need not be
+  // square (an off-axis screen, an explicit projection of another aspect;
+  // with R taken along x alone, pixels twice as wide as high read a
+  // crease 0.11 off its closed form on average, TestSSAO), so a slice's
+  // direction (view space) takes each axis's own count. The longer at
+  // most the image's diagonal (steps past it would all land outside the
+  // image; the bound also keeps a surface at the eye finite). A fixed
+  // bound of 512 texels shrank R in images over about 2000 pixels wide:
+  // scene:corner at 6400 x 4800 lost the wall's occlusion and showed rings
+  // at 512 texels, 35 levels off the 400 x 300 image in 20-pixel cells;
+  // TestSSAOScale.
+  // (world units per texel kept normal floats, so that the axes' ratio
+  // stays finite where R in texels overflows)
+  vec2 worldPerTexel = max(2.0 / vec2(fxGBufferSize) *
+      vec2(length(fxRayOrigin[1] + depth * fxRayDirection[1]),
+        length(fxRayOrigin[2] + depth * fxRayDirection[2])),
+    vec2(1e-37));
+  float finest = min(worldPerTexel.x, worldPerTexel.y);
+  float longest = fxRadius / finest; // R in texels along the finer axis
+  float bounded = clamp(longest, 1.0, length(vec2(fxGBufferSize)));
+  vec2 radiusTexels = bounded * (finest / worldPerTexel); // equal on square pixels
   // The steps' reach as a fraction of R: 1, or less where the image's
   // diagonal bounds them. Offsets are measured in units of that reach
   // (for R far beyond the image, in units of R they fell below 1e-15,
   // where the squares' floor bent every elevation: an open plane seen at
   // 30 degrees read 0.62 under R = 1e20, TestSSAO), and distances to R
   // through its square.
-  float reach = radiusTexels < fullRadiusTexels ? radiusTexels / fullRadiusTexels : 1.0;
+  float reach = bounded < longest ? bounded / longest : 1.0;
   float reachSquared = reach * reach;
   // Horizons fade out over the last part of R: XeGTAO's 61.5% for the
   // near-weighted falloff; for visibility within R (FX_FALLOFF 0) a step at
@@ -397,7 +409,7 @@ fxOcclusionValue fxHorizonOcclusion(ivec2 texel, vec3 p, vec3 n, float depth, ve
       // the steps' lengths round, and a step shorter than half a grid
       // texel lands on the pixel and is skipped (at half resolution,
       // occluders within about 2 pixels count from the next step on).
-      vec2 gridOffset = direction.xy * (s * s * radiusTexels / float(fxStep));
+      vec2 gridOffset = direction.xy * radiusTexels * (s * s / float(fxStep));
       for (int side = 0; side < 2; ++side)
       {
         ivec2 q = texel + fxStep * ivec2(round(side == 0 ? gridOffset : -gridOffset));

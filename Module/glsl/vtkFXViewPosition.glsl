@@ -8,7 +8,9 @@
 uniform vec3 fxRayOrigin[3];
 uniform vec3 fxRayDirection[3];
 // 0 in perspective projection; in parallel projection, the distance at
-// which the camera's view angle spans the parallel view.
+// which VTK's default view angle (30 degrees) spans the parallel view: the
+// camera's own angle changes nothing in a parallel image, so it must not
+// change the tolerances either.
 uniform float fxParallelDepth;
 
 // The depth that scales a tolerance relative to depth at a surface at depth

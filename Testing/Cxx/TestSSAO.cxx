@@ -514,6 +514,46 @@ int TestSSAO(int, char*[])
         EXIT_SUCCESS, "");
   }
 
+  // 2d. Pixels that are not square (an off-axis screen, or an explicit
+  // projection whose aspect is not the viewport's), here each twice as wide
+  // as high: the horizon's steps still reach R in world units along both
+  // image axes, and the crease (its distance from the wall runs up the
+  // image) follows its closed form as in 2 (the preset's 16 fetches at
+  // half resolution, blurred).
+  {
+    Setup s = MakeSetup(window);
+    CreaseOcclusion(s, vtkFXSSAOPass::Horizon, vtkFXSSAOPass::Binary, radius);
+    vtkCamera* camera = s.Renderer->GetActiveCamera();
+    vtkNew<vtkMatrix4x4> wide;
+    wide->DeepCopy(
+      camera->GetProjectionTransformMatrix(s.Renderer->GetTiledAspectRatio(), -1, 1));
+    for (int j = 0; j < 4; ++j)
+    {
+      wide->SetElement(0, j, 0.5 * wide->GetElement(0, j));
+    }
+    camera->SetExplicitProjectionTransformMatrix(wide);
+    camera->UseExplicitProjectionTransformMatrixOn();
+    window->Render();
+    const auto ao = OcclusionAtPixels(s.Pipeline->GetOcclusionBlurPass()->GetOutputTexture());
+    const auto world = WorldPositions(s.Renderer, s.Pipeline->GetGBufferPass());
+    double sumError = 0.0;
+    int n = 0;
+    for (size_t i = 0; i < ao.size() && i < world.size(); ++i)
+    {
+      const auto& p = world[i];
+      if (p[3] > 0.0 && std::fabs(p[1]) < 1e-4 && std::fabs(p[0]) < 1.2 &&
+        p[2] >= 0.06 * radius && p[2] < radius)
+      {
+        sumError += std::fabs(ao[i] - CreaseOcclusionAt(p[2], radius, vtkFXSSAOPass::Binary));
+        ++n;
+      }
+    }
+    const double meanError = n ? sumError / n : 1.0;
+    std::cout << "binary horizon crease, pixels twice as wide as high: " << n
+              << " floor pixels, mean |SSAO - A(h)| " << meanError << std::endl;
+    FX_CHECK(n >= 100 && meanError <= 0.04, "non-square pixels: the crease off its closed form");
+  }
+
   // 2c. An occlusion pass that wrote nothing this frame (moved to the
   // Composite stage, where it does not run): the composite reads no
   // occlusion, not whatever texture unit 0 holds: the image is the one
