@@ -11,8 +11,14 @@
  * VTK also leaves unfiltered. VTK filters before its volume step; here
  * volumes and post-process effects (glow, feature lines) are filtered too.
  * Reads and writes the current framebuffer in the renderer's viewport.
+ * A multisampled framebuffer (VTK's default window has 8 samples) is
+ * first resolved into a single-sampled copy, which the filter reads: it
+ * copies its input with glCopyTexSubImage2D, which OpenGL refuses from a
+ * multisampled framebuffer (VTK 9.1's own FXAA then shows a black image).
  * Cost: VTK's: a copy of the viewport into an RGBA8 texture (4 bytes per
- * pixel, kept while FXAA runs) and one full-screen pass.
+ * pixel, kept while FXAA runs) and one full-screen pass; in a
+ * multisampled framebuffer a resolving blit into an RGBA8 copy (4 bytes
+ * per pixel up to the viewport's far corner) first.
  */
 #ifndef vtkFXAntiAliasingPass_h
 #define vtkFXAntiAliasingPass_h
@@ -22,6 +28,10 @@
 #include "vtkSmartPointer.h" // for the filter
 
 class vtkOpenGLFXAAFilter;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkRenderer;
+class vtkTextureObject;
 
 class VTKFX_EXPORT vtkFXAntiAliasingPass : public vtkRenderPass
 {
@@ -37,7 +47,14 @@ protected:
   ~vtkFXAntiAliasingPass() override;
 
 private:
+  // Resolves the multisampled draw framebuffer's viewport into Resolved
+  // and binds that for reading; false (nothing bound) where the draw
+  // framebuffer is not multisampled or the copy cannot be made.
+  bool ResolveForReading(vtkRenderer* renderer, vtkOpenGLRenderWindow* window);
+
   vtkSmartPointer<vtkOpenGLFXAAFilter> Filter;
+  vtkSmartPointer<vtkTextureObject> Resolved;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> ResolveFrameBuffer;
 
   vtkFXAntiAliasingPass(const vtkFXAntiAliasingPass&) = delete;
   void operator=(const vtkFXAntiAliasingPass&) = delete;

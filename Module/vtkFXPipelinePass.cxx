@@ -9,6 +9,7 @@
 #include "vtkFXForwardOpaquePass.h"
 #include "vtkFXGBufferPass.h"
 #include "vtkFXHDRTargetPass.h"
+#include "vtkFXOpenGL.h"
 #include "vtkFXRenderUtilities.h"
 #include "vtkFXSelectionPass.h"
 #include "vtkFXTimedSequencePass.h"
@@ -293,6 +294,9 @@ vtkFXSceneInfo vtkFXPipelinePass::AnalyzeScene(const vtkRenderState* s) const
   scene.PeelsVolumes =
     s->GetRenderer()->GetUseDepthPeeling() && s->GetRenderer()->GetUseDepthPeelingForVolumes();
   scene.UsesFXAA = s->GetRenderer()->GetUseFXAA();
+  GLint sampleBuffers = 0;
+  glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
+  scene.Multisampled = sampleBuffers != 0;
   scene.RemovesHiddenLines = s->GetRenderer()->GetUseHiddenLineRemoval() &&
     vtkHiddenLineRemovalPass::WireframePropsExist(
       scene.OpaqueProps.data(), static_cast<int>(scene.OpaqueProps.size()));
@@ -674,11 +678,14 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
     this->HDRTargetPass->ReleaseGraphicsResources(window);
   }
   this->HDRTargetRan = postProcess;
-  if (this->AntiAliasingRan && !scene.UsesFXAA)
+  // (in a multisampled framebuffer FXAA stands in for the samples the
+  // G-buffer does not have: MultisampleFXAA)
+  const bool fxaa = scene.UsesFXAA || (this->MultisampleFXAA && deferred && scene.Multisampled);
+  if (this->AntiAliasingRan && !fxaa)
   {
     this->AntiAliasingPass->ReleaseGraphicsResources(window);
   }
-  this->AntiAliasingRan = scene.UsesFXAA;
+  this->AntiAliasingRan = fxaa;
 
   this->AddEffectPasses(this->Sequence, order, E::LightSpace);
   vtkFXCompositePass* composite = this->CompositePass;
@@ -766,7 +773,7 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
     this->HDRTargetPass->SetGBuffer(deferred ? this->GBufferPass.Get() : nullptr);
     this->Sequence->AddPass("hdr-target", this->HDRTargetPass);
   }
-  if (scene.UsesFXAA)
+  if (fxaa)
   {
     this->Sequence->AddPass("fxaa", this->AntiAliasingPass);
   }
@@ -1195,6 +1202,7 @@ void vtkFXPipelinePass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DebugChannel: " << this->DebugChannel << "\n";
+  os << indent << "MultisampleFXAA: " << this->MultisampleFXAA << "\n";
   os << indent << "AmbientOcclusion: " << this->AmbientOcclusion << "\n";
   os << indent << "DirectionalOcclusion: " << this->DirectionalOcclusion << "\n";
   os << indent << "AmbientOcclusionQuality: " << this->AmbientOcclusionQuality << "\n";

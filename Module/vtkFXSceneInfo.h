@@ -58,6 +58,7 @@ struct vtkFXSceneInfo
   // translucent step, not in the volume step.
   bool PeelsVolumes = false;
   bool UsesFXAA = false; // the renderer's UseFXAA (vtkFXAntiAliasingPass)
+  bool Multisampled = false; // the framebuffer the renderer draws into has samples
   // The renderer's UseHiddenLineRemoval, with a wireframe prop to apply it to
   bool RemovesHiddenLines = false;
 };
