@@ -546,8 +546,9 @@ std::vector<float> WorldShadingNormals(const Method& m)
   vtkMatrix4x4* view = m.Renderer->GetActiveCamera()->GetViewTransformMatrix();
   for (size_t i = 0; 2 * i + 1 < codes.size(); ++i)
   {
-    // vtkFXNormalCoding.glsl's octahedral decoding (x > 2: no normal).
-    double e[2] = { codes[2 * i], codes[2 * i + 1] };
+    // vtkFXNormalCoding.glsl's octahedral decoding (y > 2: no normal;
+    // x > 1.5: a pre-lit fragment's, moved up by 3).
+    double e[2] = { codes[2 * i] > 1.5f ? codes[2 * i] - 3.0 : codes[2 * i], codes[2 * i + 1] };
     if (!(std::fabs(e[0]) <= 1.0 && std::fabs(e[1]) <= 1.0))
     {
       continue;

@@ -61,9 +61,8 @@ bool vtkFXAntiAliasingPass::ResolveForReading(vtkRenderer* renderer, vtkOpenGLRe
   const int corner[2] = { origin[0] + size[0], origin[1] + size[1] };
   vtkFXRenderUtilities::EnsureTexture(
     this->Resolved, window, corner[0], corner[1], vtkFXRenderUtilities::RGBA8);
-  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
-  {
-  }
+  // (what earlier steps left is not the blit's refusal)
+  vtkFXRenderUtilities::ClearPendingErrors(this, "vtkFX's FXAA resolve", this->WarnedEarlierError);
   {
     vtkFXRenderUtilities::RenderTargetScope target(window, this->ResolveFrameBuffer, this->Resolved);
     if (!target.IsComplete())

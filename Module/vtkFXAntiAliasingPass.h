@@ -4,14 +4,16 @@
  *
  * VTK's own filter (vtkOpenGLFXAAFilter, configured by the renderer's
  * vtkFXAAOptions when it has them), as vtkOpenGLRenderer runs it in its
- * own frame. vtkFXPipelinePass runs this pass, while the renderer's
- * UseFXAA is on, on the displayable image: after its lit steps and the
+ * own frame. vtkFXPipelinePass runs this pass while the renderer's
+ * UseFXAA is on, and in a multisampled framebuffer's frames with a
+ * G-buffer (vtkFXPipelinePass::MultisampleFXAA), on the displayable
+ * image: after its lit steps and the
  * HDR target's write-back (the filter copies the framebuffer into an
  * 8-bit texture, which would clamp HDR values), before the overlay, which
  * VTK also leaves unfiltered. VTK filters before its volume step; here
  * volumes and post-process effects (glow, feature lines) are filtered too.
  * Reads and writes the current framebuffer in the renderer's viewport.
- * A multisampled framebuffer (VTK's default window has 8 samples) is
+ * A multisampled framebuffer (VTK's default window asks for 8 samples) is
  * first resolved into a single-sampled copy, which the filter reads: it
  * copies its input with glCopyTexSubImage2D, which OpenGL refuses from a
  * multisampled framebuffer (VTK 9.1's own FXAA then shows a black image).
@@ -55,6 +57,7 @@ private:
   vtkSmartPointer<vtkOpenGLFXAAFilter> Filter;
   vtkSmartPointer<vtkTextureObject> Resolved;
   vtkSmartPointer<vtkOpenGLFramebufferObject> ResolveFrameBuffer;
+  bool WarnedEarlierError = false; // a GL error pending before the resolve (said once)
 
   vtkFXAntiAliasingPass(const vtkFXAntiAliasingPass&) = delete;
   void operator=(const vtkFXAntiAliasingPass&) = delete;

@@ -738,23 +738,8 @@ bool vtkFXCompositePass::BlitDepth(vtkOpenGLRenderer* ren)
   state->vtkglDisable(GL_SCISSOR_TEST); // (a blit obeys the scissor)
   state->PushReadFramebufferBinding();
   this->DepthReadFrameBuffer->Bind(GL_READ_FRAMEBUFFER);
-  // What earlier steps left is not this blit's refusal; read here, it
-  // would reach no later check, so it is reported (once).
-  GLenum earlier = glGetError();
-  if (earlier != GL_NO_ERROR && !this->WarnedEarlierError)
-  {
-    // (formatted apart: VTK's message stream prints std::hex as a number)
-    std::ostringstream code;
-    code << "0x" << std::hex << earlier;
-    vtkWarningMacro("An OpenGL error (" << code.str()
-                                        << ") was pending before vtkFX's depth copy: a step "
-                                           "before it (VTK's or an effect's) failed.");
-    this->WarnedEarlierError = true;
-  }
-  for (int i = 0; i < 16 && earlier != GL_NO_ERROR; ++i)
-  {
-    earlier = glGetError();
-  }
+  // (what earlier steps left is not this blit's refusal)
+  vtkFXRenderUtilities::ClearPendingErrors(this, "vtkFX's depth copy", this->WarnedEarlierError);
   glBlitFramebuffer(0, 0, width, height, viewport[0], viewport[1], viewport[0] + width,
     viewport[1] + height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
   const bool copied = glGetError() == GL_NO_ERROR;

@@ -698,7 +698,10 @@ std::string vtkFXGBufferPass::ChannelWritesGLSL(
         code << "vec4(" << linearDepth << ", 0.0, 0.0, 1.0);\n";
         break;
       case Albedo:
-        code << (lit ? "vec4(fxDiffuse, fxColor.a);\n" : "fxColor;\n");
+        // (pre-lit: VTK's colour and the prop's own emission, as an unlit
+        // prop carries its colour: the composite adds nothing to it)
+        code << (lit ? "vec4(fxDiffuse, fxColor.a);\n"
+                     : prelit ? "vec4(fxColor.rgb + fxEmissive, fxColor.a);\n" : "fxColor;\n");
         break;
       case Specular:
         // The power (VTK's 0..128) as sqrt(power / 128) in 8 bits: small

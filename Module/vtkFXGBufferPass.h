@@ -21,7 +21,7 @@
  *                        tangents), tilted by the prop's bump (SetBump);
  *                        unlit fragments and uncovered pixels carry a
  *                        sentinel outside [-1,1]; pre-lit ones their
- *                        normal's code with x moved up by 4
+ *                        normal's code with x moved up by 3
  *                        (vtkFXNormalCoding.glsl: fxIsPrelit).
  * - LinearDepth  R32F    -z in view coordinates (world units), 0 = no surface.
  * - Specular     RGBA8   specular colour x intensity; alpha = sqrt(power / 128).

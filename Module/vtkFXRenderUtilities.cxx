@@ -478,6 +478,25 @@ bool vtkFXRenderUtilities::IsOpenGLSupported(const char* name)
   return supported;
 }
 
+void vtkFXRenderUtilities::ClearPendingErrors(vtkObject* caller, const char* step, bool& warned)
+{
+  GLenum earlier = glGetError();
+  if (earlier != GL_NO_ERROR && !warned)
+  {
+    // (formatted apart: VTK's message stream prints std::hex as a number)
+    std::ostringstream code;
+    code << "0x" << std::hex << earlier;
+    vtkWarningWithObjectMacro(caller, "An OpenGL error ("
+        << code.str() << ") was pending before " << step
+        << ": a step before it (VTK's or an effect's) failed.");
+    warned = true;
+  }
+  for (int i = 0; i < 16 && earlier != GL_NO_ERROR; ++i)
+  {
+    earlier = glGetError();
+  }
+}
+
 vtkFXRenderUtilities::RenderTargetScope::RenderTargetScope(vtkOpenGLRenderWindow* window,
   vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,
   const std::vector<vtkTextureObject*>& targets)

@@ -91,6 +91,14 @@ public:
   static bool IsOpenGLSupported(const char* name);
 
   /**
+   * Clears the OpenGL errors pending before `caller`'s `step` (so that the
+   * step can read its own), saying once, while `warned` is false, that an
+   * earlier step (VTK's or an effect's) failed: read there, that error
+   * would reach no later check.
+   */
+  static void ClearPendingErrors(vtkObject* caller, const char* step, bool& warned);
+
+  /**
    * Whether every number of a light that VTK's light uniforms carry is
    * finite, also as a float: diffuse colour x intensity, position and focal
    * point (as transformed); for a positional light its attenuation, and for

@@ -95,7 +95,8 @@ vec3 fxSanitize(vec3 c)
 // A pre-lit (PBR) colour, sRGB as VTK writes it (its linear light raised
 // to 1 / 2.2), occluded in linear light as the diffuse light is, by
 // fxOcclusionDiffuseStrength: VTK's PBR colour is one sum of its
-// environment (image-based) light, its lights and its emission.
+// environment (image-based) light, its lights and its emission (and the
+// G-buffer added the prop's EMISSIVE_COLOR to it).
 vec3 fxOccludedPrelit(vec3 prelit, vec3 visibility)
 {
   vec3 factor = clamp(mix(vec3(1.0), visibility, fxOcclusionDiffuseStrength), 0.0, 1.0);

@@ -21,7 +21,7 @@ vec2 fxEncodeNormal(vec3 n)
 
 vec3 fxDecodeNormal(vec2 e)
 {
-  e.x = e.x > 2.0 ? e.x - 4.0 : e.x; // (a pre-lit fragment's, see below)
+  e.x = e.x > 1.5 ? e.x - 3.0 : e.x; // (a pre-lit fragment's, see below)
   vec3 v = vec3(e.xy, 1.0 - abs(e.x) - abs(e.y));
   if (v.z < 0.0)
   {
@@ -40,18 +40,19 @@ bool fxIsUnlit(vec2 e)
 // Fragments that VTK lights with a model the composite does not reproduce
 // (PBR) keep VTK's colour, but carry their normal for the effects that read
 // one (occlusion, feature lines, the blur's planes): its code with x moved
-// up by 4, out of the octahedral square ([-1, 1]^2), which fxDecodeNormal
-// undoes. (In 16-bit floats x then keeps 8 to 9 bits after the point: the
-// normal within 0.004 rad, against 1e-3 for the others, for geometry only,
-// never for lighting.)
+// up by 3, out of the octahedral square ([-1, 1]^2), into [2, 4], which
+// fxDecodeNormal undoes. (In 16-bit floats x then keeps 9 bits after the
+// point: the code is off by up to 0.0025 rad, the octahedral map's
+// stretch included, against 0.00085 without the move (0.0049 moved up by
+// 4); for geometry only, never for lighting.)
 vec2 fxEncodePrelitNormal(vec3 n)
 {
-  return fxEncodeNormal(n) + vec2(4.0, 0.0);
+  return fxEncodeNormal(n) + vec2(3.0, 0.0);
 }
 
 bool fxIsPrelit(vec2 e)
 {
-  return e.x > 2.0 && e.y <= 2.0;
+  return e.x > 1.5 && e.y <= 2.0;
 }
 
 // Two values in [0, 1] in one 32-bit float, 12 bits each: an integer below

@@ -805,6 +805,28 @@ int TestDirectionalOcclusion(int, char*[])
     FX_CHECK(worst <= 0.03 + 0.01, "the floor receives the wall's light times 1 - A(h)");
     FX_CHECK(far <= 1e-3, "no bleeding beyond R from the wall");
 
+    // A PBR wall bounces nothing: the G-buffer holds VTK's lit colour for
+    // it, not its albedo (lit again, the wall's colour bounced squared into
+    // the light: 0.139 on the floor).
+    vtkProperty* wall = s.Renderer->GetActors()->GetLastActor()->GetProperty();
+    wall->SetInterpolationToPBR();
+    window->Render();
+    const auto pbrBleed =
+      OcclusionAtPixels(s.Pipeline->GetEffect("do-bleed-blur")->GetOutputTexture(), 0);
+    // (from 0.1 R on: nearer, a texel of the reduced resolution may hold
+    // the wall, which receives the floor's light)
+    double pbrLargest = 0.0;
+    for (size_t i = 0; i < world.size() && i < pbrBleed.size(); ++i)
+    {
+      if (OnFloorNearWall(world[i]) && world[i][2] >= 0.1 * Radius)
+      {
+        pbrLargest = std::max(pbrLargest, static_cast<double>(pbrBleed[i]));
+      }
+    }
+    wall->SetInterpolationToGouraud();
+    std::cout << "bleeding off a PBR wall: largest on the floor " << pbrLargest << std::endl;
+    FX_CHECK(pbrLargest <= 1e-3, "a PBR wall bounces no light");
+
     // No light bleeds across a silhouette: a white plate 1 unit above the
     // floor and 1.2 to 1.8 from the wall (nothing within R of its top
     // side) hides part of the lit band. Its pixels, which bounce nothing,

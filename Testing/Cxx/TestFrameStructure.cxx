@@ -937,6 +937,22 @@ int TestEmission()
   FX_CHECK(std::abs(sane[0] - 51) <= 1 && std::abs(sane[1] - 51) <= 1 &&
       std::abs(sane[2] - 51) <= 1,
     "NaN, infinite and negative emission add nothing");
+
+  // A PBR prop's emission adds to VTK's colour as a lit prop's does to its
+  // light (before, the glow had it and the surface did not).
+  scene.Actor->GetProperty()->SetInterpolationToPBR();
+  scene.Actor->GetPropertyKeys()->Remove(GB::EMISSIVE_COLOR());
+  const auto plainPbr = scene.Centre();
+  const double red[3] = { 0.4, 0.0, 0.0 };
+  scene.Actor->GetPropertyKeys()->Set(GB::EMISSIVE_COLOR(), red, 3);
+  const auto emittingPbr = scene.Centre();
+  scene.Actor->GetProperty()->SetInterpolationToGouraud();
+  std::cout << "PBR plane: " << plainPbr[0] << "," << plainPbr[1] << "," << plainPbr[2]
+            << "; emitting 0.4 red: " << emittingPbr[0] << "," << emittingPbr[1] << ","
+            << emittingPbr[2] << std::endl;
+  FX_CHECK(std::abs(emittingPbr[0] - std::min(255, plainPbr[0] + 102)) <= 1 &&
+      std::abs(emittingPbr[1] - plainPbr[1]) <= 1 && std::abs(emittingPbr[2] - plainPbr[2]) <= 1,
+    "a PBR prop's emission adds to its colour");
   return EXIT_SUCCESS;
 }
 }

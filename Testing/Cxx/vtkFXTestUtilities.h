@@ -394,10 +394,10 @@ inline std::vector<float> Download(vtkTextureObject* texture, int components)
 }
 
 // Octahedral decoding, the CPU twin of fxDecodeNormal in vtkFXNormalCoding.glsl
-// (a pre-lit fragment's code has x moved up by 4).
+// (a pre-lit fragment's code has x moved up by 3).
 inline void DecodeNormal(float ex, float ey, double n[3])
 {
-  n[0] = ex > 2.0f ? ex - 4.0 : ex;
+  n[0] = ex > 1.5f ? ex - 3.0 : ex;
   n[1] = ey;
   n[2] = 1.0 - std::fabs(n[0]) - std::fabs(ey);
   if (n[2] < 0.0)
