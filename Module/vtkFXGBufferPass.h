@@ -12,7 +12,10 @@
  * - Albedo       RGBA8   VTK's diffuse colour after scalar colouring and
  *                        texturing; alpha = opacity. Unlit fragments, and
  *                        PBR ones (pre-lit: the composite keeps VTK's
- *                        colour), store their final colour here.
+ *                        colour), store their final colour here (a PBR
+ *                        prop's EMISSIVE_COLOR goes to the emission
+ *                        channel where one is allocated, so that occlusion
+ *                        leaves it alone, and is added here otherwise).
  * - Normal       RG16F   view-space shading normal, octahedral encoding
  *                        (Cigolle et al. 2014, "A Survey of Efficient
  *                        Representations for Independent Unit Vectors"): the

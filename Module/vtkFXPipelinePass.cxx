@@ -714,13 +714,14 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
     // The composite lights at the renderer's complexity wherever a normal
     // channel exists, also one only an effect or the debug view reads:
     // then it needs the depth positional lights read, lit props or not
-    // (without it, it drew no opaque prop at all); the material channels
-    // no unlit pixel reads stay out.
+    // (without it, it drew no opaque prop at all), and the emission of
+    // pre-lit (PBR) props, which it adds after their occlusion; the
+    // material channels no unlit pixel reads stay out.
     using GB = vtkFXGBufferPass;
     if (!scene.AnyLitProp && (channels & GB::ChannelBit(GB::Normal)))
     {
       channels |= composite->GetRequiredChannels(scene.LightingComplexity) &
-        GB::ChannelBit(GB::LinearDepth);
+        (GB::ChannelBit(GB::LinearDepth) | GB::ChannelBit(GB::Emission));
     }
     this->GBufferPass->SetRequiredChannels(channels);
     this->GBufferPass->SetHDREmission(scene.AnyEmissionAboveOne);

@@ -95,8 +95,9 @@ vec3 fxSanitize(vec3 c)
 // A pre-lit (PBR) colour, sRGB as VTK writes it (its linear light raised
 // to 1 / 2.2), occluded in linear light as the diffuse light is, by
 // fxOcclusionDiffuseStrength: VTK's PBR colour is one sum of its
-// environment (image-based) light, its lights and its emission (and the
-// G-buffer added the prop's EMISSIVE_COLOR to it).
+// environment (image-based) light, its lights and its emission (the
+// prop's EMISSIVE_COLOR comes after, unoccluded, from the emission
+// channel).
 vec3 fxOccludedPrelit(vec3 prelit, vec3 visibility)
 {
   vec3 factor = clamp(mix(vec3(1.0), visibility, fxOcclusionDiffuseStrength), 0.0, 1.0);
@@ -190,16 +191,17 @@ void main()
       ambientColor *= ambientVisibility;
       diffuseLight *= mix(vec3(1.0), ambientVisibility, fxOcclusionDiffuseStrength);
       color = ambientColor + diffuseLight * diffuseColor + specularLight * specularColor;
-#if FX_HAS_EMISSION
-      // Emission of lit props (vtkFXGBufferPass::EMISSIVE_COLOR); unlit ones
-      // already carry theirs in the albedo.
-      color += texture(fxEmission, texCoord).rgb;
-#endif
     }
     else
     {
       color = fxOccludedPrelit(albedo.rgb, ambientVisibility);
     }
+#if FX_HAS_EMISSION
+    // Emission of lit and pre-lit props (vtkFXGBufferPass::EMISSIVE_COLOR),
+    // light the surface gives off, which no occlusion darkens; unlit ones
+    // already carry theirs in the albedo.
+    color += texture(fxEmission, texCoord).rgb;
+#endif
   }
 #endif
   //VTK::FXEffects::Color

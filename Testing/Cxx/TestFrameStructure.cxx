@@ -946,13 +946,31 @@ int TestEmission()
   const double red[3] = { 0.4, 0.0, 0.0 };
   scene.Actor->GetPropertyKeys()->Set(GB::EMISSIVE_COLOR(), red, 3);
   const auto emittingPbr = scene.Centre();
-  scene.Actor->GetProperty()->SetInterpolationToGouraud();
   std::cout << "PBR plane: " << plainPbr[0] << "," << plainPbr[1] << "," << plainPbr[2]
             << "; emitting 0.4 red: " << emittingPbr[0] << "," << emittingPbr[1] << ","
             << emittingPbr[2] << std::endl;
   FX_CHECK(std::abs(emittingPbr[0] - std::min(255, plainPbr[0] + 102)) <= 1 &&
       std::abs(emittingPbr[1] - plainPbr[1]) <= 1 && std::abs(emittingPbr[2] - plainPbr[2]) <= 1,
     "a PBR prop's emission adds to its colour");
+  // Occlusion darkens the light a PBR surface reflects, VTK's colour, by
+  // v^(1 / 2.2) (see CheckPrelitOcclusion), not the light it gives off:
+  // under an ambient visibility of 0.5 its emission still adds 102 (before,
+  // the emission was part of the occluded colour: 0.7297 x (colour + 102)).
+  vtkNew<HookProbe> occluder;
+  occluder->Channels = GB::ChannelBit(GB::Normal);
+  occluder->Code[vtkFXEffectPass::Ambient] = "ambientVisibility *= 0.5;";
+  scene.Pipeline->AddEffect("occluder", occluder);
+  const auto occludedPbr = scene.Centre();
+  scene.Pipeline->RemoveEffect("occluder");
+  scene.Actor->GetProperty()->SetInterpolationToGouraud();
+  const double factor = std::pow(0.5, 1.0 / 2.2);
+  const double expectedRed = std::min(255.0, plainPbr[0] * factor + 102);
+  std::cout << "emitting PBR plane under ambient 0.5: " << occludedPbr[0] << ","
+            << occludedPbr[1] << "," << occludedPbr[2] << " (expected red " << expectedRed
+            << ", green " << plainPbr[1] * factor << ")" << std::endl;
+  FX_CHECK(std::abs(occludedPbr[0] - expectedRed) <= 1.5 &&
+      std::abs(occludedPbr[1] - plainPbr[1] * factor) <= 1.5,
+    "occlusion leaves a PBR prop's emission alone");
   return EXIT_SUCCESS;
 }
 }
