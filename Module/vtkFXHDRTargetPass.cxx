@@ -51,9 +51,7 @@ bool vtkFXHDRTargetPass::CopyIn(
   // Colour and depth blit separately: a refused depth blit must not cost
   // the colour.
   this->FrameBuffer->Bind(GL_DRAW_FRAMEBUFFER);
-  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
-  {
-  }
+  vtkFXRenderUtilities::ClearPendingErrors(this, "vtkFX's HDR target copy", this->WarnedEarlierError);
   glBlitFramebuffer(
     x, y, x + width, y + height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   const bool colorCopied = glGetError() == GL_NO_ERROR;
@@ -84,9 +82,8 @@ bool vtkFXHDRTargetPass::BlitDepthBack(vtkOpenGLState* state, const int viewport
 {
   // (the formats match, GetReadDepthFormat; a multisampled framebuffer
   // refuses a single-sampled source)
-  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
-  {
-  }
+  vtkFXRenderUtilities::ClearPendingErrors(
+    this, "vtkFX's HDR target depth write-back", this->WarnedEarlierError);
   state->PushReadFramebufferBinding();
   this->FrameBuffer->Bind(GL_READ_FRAMEBUFFER);
   glBlitFramebuffer(0, 0, viewport[2], viewport[3], viewport[0], viewport[1],

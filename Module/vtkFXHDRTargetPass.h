@@ -37,7 +37,9 @@
  * renderer whose viewport is offset in the window draws them in place.
  *
  * Limitation: the depth of the layers below is kept only when the window's
- * depth buffer can be copied (a warning says when it cannot).
+ * depth buffer can be copied (a warning says when it cannot). An OpenGL
+ * error left pending before its copies (by the application or an earlier
+ * step) is reported once as a warning, not cleared silently.
  */
 #ifndef vtkFXHDRTargetPass_h
 #define vtkFXHDRTargetPass_h
@@ -115,6 +117,7 @@ protected:
   bool WarnedDepthFormat = false;
   bool WarnedColorCopy = false;
   bool WarnedIncomplete = false;
+  bool WarnedEarlierError = false; // (an OpenGL error pending before a copy: once)
   bool BlitsDepth = true; // the framebuffer took the write-back's depth blit (see WriteBack)
   vtkSmartPointer<vtkTextureObject> Color;
   vtkSmartPointer<vtkTextureObject> Depth;

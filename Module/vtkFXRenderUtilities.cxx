@@ -278,12 +278,13 @@ int vtkFXRenderUtilities::GetReadDepthFormat(vtkOpenGLRenderWindow* window)
   glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
   const GLenum attachment = readFramebuffer ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
   const GLenum stencilAttachment = readFramebuffer ? GL_STENCIL_ATTACHMENT : GL_STENCIL;
-  const auto holds = [](GLenum point) {
+  const auto holdsIn = [](GLenum framebuffer, GLenum point) {
     GLint object = GL_NONE;
     glGetFramebufferAttachmentParameteriv(
-      GL_READ_FRAMEBUFFER, point, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &object);
+      framebuffer, point, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &object);
     return object != GL_NONE;
   };
+  const auto holds = [&holdsIn](GLenum point) { return holdsIn(GL_READ_FRAMEBUFFER, point); };
   GLint bits = 0, type = GL_NONE, stencil = 0;
   if (holds(attachment))
   {
@@ -315,10 +316,18 @@ int vtkFXRenderUtilities::GetReadDepthFormat(vtkOpenGLRenderWindow* window)
   }
   // Not one to copy: the one VTK 9.1's translucent pass allocates for this
   // window (vtkOrderIndependentTranslucentPass), which copies the target's
-  // depth into it.
-  return window->GetStencilCapable() ? Depth24Stencil8
-    : window->GetDepthBufferSize() == 32 ? Depth32
-                                          : Depth24;
+  // depth into it. (GetDepthBufferSize asks the bound draw framebuffer's
+  // depth attachment for its size, a GL error where it has none, as in a
+  // caller's colour-only framebuffer: 24 bits then.)
+  if (window->GetStencilCapable())
+  {
+    return Depth24Stencil8;
+  }
+  GLint drawFramebuffer = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
+  const bool drawHoldsDepth =
+    holdsIn(GL_DRAW_FRAMEBUFFER, drawFramebuffer ? GL_DEPTH_ATTACHMENT : GL_DEPTH);
+  return drawHoldsDepth && window->GetDepthBufferSize() == 32 ? Depth32 : Depth24;
 }
 
 void vtkFXRenderUtilities::FitFramebuffer(vtkSmartPointer<vtkOpenGLFramebufferObject>& framebuffer,

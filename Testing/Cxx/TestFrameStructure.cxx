@@ -1029,6 +1029,23 @@ int TestHDRRobustness()
             << int(tiny[2]) << std::endl;
   FX_CHECK(tiny.size() == 3 && std::abs(tiny[0] - 102) <= 1, "1x1: 204 halved");
   scene.Window->SetSize(64, 48);
+  // An OpenGL error left pending before the frame (by the application, or
+  // a step before the target): the target's copy-in says so, once, and
+  // draws the same frame (before, it cleared such errors silently).
+  const auto clean = scene.Centre();
+  vtkFXTest::EventCounter warnings(scene.Pipeline->GetHDRTargetPass(), vtkCommand::WarningEvent);
+  std::vector<int> pending;
+  for (int frame = 0; frame < 2; ++frame)
+  {
+    scene.Window->MakeCurrent();
+    glEnable(0x1234); // (not a capability: GL_INVALID_ENUM)
+    pending = scene.Centre();
+  }
+  std::cout << "a GL error pending before two frames: " << warnings.Count << " warning ("
+            << warnings.Last << "), centre " << pending[0] << " (" << clean[0] << " without)"
+            << std::endl;
+  FX_CHECK(warnings.Count == 1 && pending == clean,
+    "a pending GL error is reported once and changes nothing");
   probe->WriteNaN = true;
   probe->ReleaseGraphicsResources(scene.Window); // rebuild its shader
   const auto c = scene.Centre();
@@ -1043,6 +1060,9 @@ int TestHDRRobustness()
   framebuffer->SetContext(window);
   vtkNew<vtkFXHDRTargetPass> hdr;
   hdr->SetDelegatePass(probe);
+  // (a colour-only framebuffer: asking VTK the depth size of one was a GL
+  // error, which the copy-in then reported as pending)
+  vtkFXTest::EventCounter hdrWarnings(hdr, vtkCommand::WarningEvent);
   window->GetState()->PushFramebufferBindings();
   framebuffer->Bind();
   framebuffer->AddColorAttachment(0, target);
@@ -1058,6 +1078,7 @@ int TestHDRRobustness()
     hdr->Render(&state);
   }
   window->GetState()->PopFramebufferBindings();
+  FX_CHECK(hdrWarnings.Count == 0, "no warning into a colour-only framebuffer: " << hdrWarnings.Last);
   const auto values = vtkFXTest::Download(target, 4);
   FX_CHECK(values.size() == 8 * 8 * 4, "read back");
   for (float v : values)
