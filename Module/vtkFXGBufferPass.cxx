@@ -698,13 +698,12 @@ std::string vtkFXGBufferPass::ChannelWritesGLSL(
         code << "vec4(" << linearDepth << ", 0.0, 0.0, 1.0);\n";
         break;
       case Albedo:
-        // (pre-lit: VTK's colour; the prop's own emission goes to the
-        // emission channel, which the composite adds after the occlusion,
-        // or here where there is none)
+        // (pre-lit: VTK's colour and the prop's own emission, as an unlit
+        // prop carries its colour: whatever the composite does with the
+        // pixel, the emission is in it; the occlusion takes it out again
+        // where it reads the emission channel, vtkFXCompositeFS)
         code << (lit ? "vec4(fxDiffuse, fxColor.a);\n"
-            : prelit && !(this->AllocatedChannels & ChannelBit(Emission))
-            ? "vec4(fxColor.rgb + fxEmissive, fxColor.a);\n"
-            : "fxColor;\n");
+                     : prelit ? "vec4(fxColor.rgb + fxEmissive, fxColor.a);\n" : "fxColor;\n");
         break;
       case Specular:
         // The power (VTK's 0..128) as sqrt(power / 128) in 8 bits: small

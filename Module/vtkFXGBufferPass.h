@@ -13,9 +13,9 @@
  *                        texturing; alpha = opacity. Unlit fragments, and
  *                        PBR ones (pre-lit: the composite keeps VTK's
  *                        colour), store their final colour here (a PBR
- *                        prop's EMISSIVE_COLOR goes to the emission
- *                        channel where one is allocated, so that occlusion
- *                        leaves it alone, and is added here otherwise).
+ *                        prop's EMISSIVE_COLOR added, which the composite
+ *                        keeps out of the occlusion where the emission
+ *                        channel holds it too).
  * - Normal       RG16F   view-space shading normal, octahedral encoding
  *                        (Cigolle et al. 2014, "A Survey of Efficient
  *                        Representations for Independent Unit Vectors"): the

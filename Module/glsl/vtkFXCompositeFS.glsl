@@ -96,8 +96,8 @@ vec3 fxSanitize(vec3 c)
 // to 1 / 2.2), occluded in linear light as the diffuse light is, by
 // fxOcclusionDiffuseStrength: VTK's PBR colour is one sum of its
 // environment (image-based) light, its lights and its emission (the
-// prop's EMISSIVE_COLOR comes after, unoccluded, from the emission
-// channel).
+// prop's EMISSIVE_COLOR is taken out first where the emission channel
+// holds it, and added back unoccluded).
 vec3 fxOccludedPrelit(vec3 prelit, vec3 visibility)
 {
   vec3 factor = clamp(mix(vec3(1.0), visibility, fxOcclusionDiffuseStrength), 0.0, 1.0);
@@ -191,17 +191,26 @@ void main()
       ambientColor *= ambientVisibility;
       diffuseLight *= mix(vec3(1.0), ambientVisibility, fxOcclusionDiffuseStrength);
       color = ambientColor + diffuseLight * diffuseColor + specularLight * specularColor;
+#if FX_HAS_EMISSION
+      // Emission of lit props (vtkFXGBufferPass::EMISSIVE_COLOR); unlit ones
+      // already carry theirs in the albedo.
+      color += texture(fxEmission, texCoord).rgb;
+#endif
     }
     else
     {
-      color = fxOccludedPrelit(albedo.rgb, ambientVisibility);
-    }
 #if FX_HAS_EMISSION
-    // Emission of lit and pre-lit props (vtkFXGBufferPass::EMISSIVE_COLOR),
-    // light the surface gives off, which no occlusion darkens; unlit ones
-    // already carry theirs in the albedo.
-    color += texture(fxEmission, texCoord).rgb;
+      // The G-buffer added the prop's emission to VTK's colour: light the
+      // surface gives off, which no occlusion darkens, so only the rest is
+      // occluded. (Where colour and emission summed above the albedo's 1,
+      // the rest reads less than VTK's colour: unoccluded, the sum is
+      // still exact.)
+      vec3 emission = texture(fxEmission, texCoord).rgb;
+      color = fxOccludedPrelit(max(albedo.rgb - emission, 0.0), ambientVisibility) + emission;
+#else
+      color = fxOccludedPrelit(albedo.rgb, ambientVisibility);
 #endif
+    }
   }
 #endif
   //VTK::FXEffects::Color

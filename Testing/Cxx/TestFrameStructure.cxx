@@ -961,6 +961,14 @@ int TestEmission()
   occluder->Code[vtkFXEffectPass::Ambient] = "ambientVisibility *= 0.5;";
   scene.Pipeline->AddEffect("occluder", occluder);
   const auto occludedPbr = scene.Centre();
+  // An effect that reads the emission channel alone (as bloom does): no
+  // normal, the composite passes the colour through, emission included.
+  occluder->Channels = GB::ChannelBit(GB::Emission);
+  occluder->Code[vtkFXEffectPass::Ambient] = "";
+  const auto emissionOnly = scene.Centre();
+  std::cout << "emitting PBR plane, emission channel without normals: " << emissionOnly[0]
+            << "," << emissionOnly[1] << "," << emissionOnly[2] << std::endl;
+  FX_CHECK(emissionOnly == emittingPbr, "the emission stays without a normal channel");
   scene.Pipeline->RemoveEffect("occluder");
   scene.Actor->GetProperty()->SetInterpolationToGouraud();
   const double factor = std::pow(0.5, 1.0 / 2.2);
