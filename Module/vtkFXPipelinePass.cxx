@@ -715,7 +715,7 @@ void vtkFXPipelinePass::ScheduleDeferredFrame(const vtkFXSceneInfo& scene, vtkWi
     // channel exists, also one only an effect or the debug view reads:
     // then it needs the depth positional lights read, lit props or not
     // (without it, it drew no opaque prop at all), and the emission of
-    // pre-lit (PBR) props, which it adds after their occlusion; the
+    // pre-lit (PBR) props, which it keeps out of their occlusion; the
     // material channels no unlit pixel reads stay out.
     using GB = vtkFXGBufferPass;
     if (!scene.AnyLitProp && (channels & GB::ChannelBit(GB::Normal)))

@@ -41,6 +41,8 @@
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
+#include "vtkStringOutputWindow.h"
+#include "vtkOutputWindow.h"
 #include "vtkRendererCollection.h"
 #include "vtkShaderProgram.h"
 #include "vtkSphereSource.h"
@@ -1039,9 +1041,15 @@ int TestHDRRobustness()
   scene.Window->SetSize(64, 48);
   // An OpenGL error left pending before the frame (by the application, or
   // a step before the target): the target's copy-in says so, once, and
-  // draws the same frame (before, it cleared such errors silently).
+  // draws the same frame (before, it cleared such errors silently). A VTK
+  // built to check GL errors itself (ParaView's) reports it first, in
+  // vtkOpenGLRenderWindow::Start, and nothing is left pending for the
+  // target.
   const auto clean = scene.Centre();
   vtkFXTest::EventCounter warnings(scene.Pipeline->GetHDRTargetPass(), vtkCommand::WarningEvent);
+  vtkSmartPointer<vtkOutputWindow> previousOutput = vtkOutputWindow::GetInstance();
+  vtkNew<vtkStringOutputWindow> output;
+  vtkOutputWindow::SetInstance(output);
   std::vector<int> pending;
   for (int frame = 0; frame < 2; ++frame)
   {
@@ -1049,10 +1057,12 @@ int TestHDRRobustness()
     glEnable(0x1234); // (not a capability: GL_INVALID_ENUM)
     pending = scene.Centre();
   }
+  vtkOutputWindow::SetInstance(previousOutput);
+  const bool vtkReported = Contains(output->GetOutput(), "OpenGL errors detected");
   std::cout << "a GL error pending before two frames: " << warnings.Count << " warning ("
             << warnings.Last << "), centre " << pending[0] << " (" << clean[0] << " without)"
-            << std::endl;
-  FX_CHECK(warnings.Count == 1 && pending == clean,
+            << (vtkReported ? "; VTK's own checks reported it first" : "") << std::endl;
+  FX_CHECK((warnings.Count == 1 || (warnings.Count == 0 && vtkReported)) && pending == clean,
     "a pending GL error is reported once and changes nothing");
   probe->WriteNaN = true;
   probe->ReleaseGraphicsResources(scene.Window); // rebuild its shader
