@@ -186,26 +186,29 @@ void main()
       //VTK::FXLight::Impl
     }
     //VTK::FXEffects::Ambient
+#if FX_HAS_EMISSION
+    // Emission of lit and pre-lit props (vtkFXGBufferPass::EMISSIVE_COLOR):
+    // light the surface gives off, which no occlusion darkens; unlit ones
+    // already carry theirs in the albedo. (Read once for both branches: a
+    // software rasteriser runs both.)
+    vec3 emission = texture(fxEmission, texCoord).rgb;
+#endif
     if (lit)
     {
       ambientColor *= ambientVisibility;
       diffuseLight *= mix(vec3(1.0), ambientVisibility, fxOcclusionDiffuseStrength);
       color = ambientColor + diffuseLight * diffuseColor + specularLight * specularColor;
 #if FX_HAS_EMISSION
-      // Emission of lit props (vtkFXGBufferPass::EMISSIVE_COLOR); unlit ones
-      // already carry theirs in the albedo.
-      color += texture(fxEmission, texCoord).rgb;
+      color += emission;
 #endif
     }
     else
     {
 #if FX_HAS_EMISSION
-      // The G-buffer added the prop's emission to VTK's colour: light the
-      // surface gives off, which no occlusion darkens, so only the rest is
-      // occluded. (Where colour and emission summed above the albedo's 1,
-      // the rest reads less than VTK's colour: unoccluded, the sum is
-      // still exact.)
-      vec3 emission = texture(fxEmission, texCoord).rgb;
+      // The G-buffer added the prop's emission to VTK's colour, so only the
+      // rest is occluded. (Where colour and emission summed above the
+      // albedo's 1, the rest reads less than VTK's colour: unoccluded, the
+      // sum is still exact.)
       color = fxOccludedPrelit(max(albedo.rgb - emission, 0.0), ambientVisibility) + emission;
 #else
       color = fxOccludedPrelit(albedo.rgb, ambientVisibility);
